@@ -1,0 +1,180 @@
+/// @file model.hpp  SceneDef → Model: symbols with units, bodies, kinematics by differentiation,
+/// kinetic and potential energy, effects, states. Pure GiNaC; never sees YAML.
+#pragma once
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "kinergy/scene/scene.hpp"
+#include "kinergy/units/units.hpp"
+
+namespace kinergy::model {
+
+using GiNaC::ex;
+using units::Dimension;
+
+struct Parameter {
+  std::string name;
+  SourcePos pos;
+  ex sym;                  ///< possymbol when its value is positive (or it has none), else realsymbol
+  Dimension dim;
+  std::optional<ex> value; ///< exact SI value
+  bool unknown = false;    ///< "unknown UNIT": solved for
+};
+
+struct Coordinate {
+  std::string name;
+  SourcePos pos;
+  GiNaC::realsymbol q, qd;  ///< q and q_dot (generic, not bound to a state)
+  Dimension dim;
+};
+
+struct Body {
+  std::string name;
+  SourcePos pos;
+  ex mass, inertia;            ///< m and centroidal Ī
+  ex x, y, angle;              ///< mass centre and body angle in coordinates (and t)
+  std::map<std::string, std::pair<ex, ex>> points;  ///< body axes through G
+};
+
+/// A place that moves with the model: a body point, a body's mass centre, a fixed point, or
+/// the material point of a body that is at a given world place (`at`).
+struct PointRef {
+  std::string text;
+  int body = -1;          ///< -1: fixed point
+  bool world_place = false;  ///< body material point at world place (wx, wy)
+  ex lx = 0, ly = 0;      ///< body-local offset from G
+  ex wx = 0, wy = 0;      ///< fixed point / world place
+};
+
+struct Effect {
+  std::string name, kind;
+  SourcePos pos;
+  // gravity
+  ex g = 0, dir_x = 0, dir_y = -1;
+  // spring (a, b, k, free) / torsion_spring (body, body2, k, free)
+  PointRef a, b;
+  ex k = 0, free = 0;
+  int body = -1, body2 = -1;
+  // couple (M) / force (F at a) / friction (mu, normal at a) / friction_couple (M) / power (P)
+  ex M = 0, Fx = 0, Fy = 0, mu = 0, normal = 0, P = 0;
+  std::optional<int> direction;  ///< friction: +1 / −1 sign of the motion, if declared
+};
+
+struct State {
+  std::string name;
+  SourcePos pos;
+  std::map<std::string, std::pair<GiNaC::realsymbol, GiNaC::realsymbol>> sym;  ///< q → (q@S, q_dot@S)
+  GiNaC::realsymbol t;                   ///< t@S
+  GiNaC::exmap given;                    ///< state symbol → value (parameters)
+  std::vector<std::pair<ex, SourcePos>> where;  ///< bound conditions (== 0)
+};
+
+struct Analysis {
+  std::string kind;
+  SourcePos pos;
+  int from = -1, to = -1;
+};
+
+/// How to pick between roots for a named result.
+struct RootSpec {
+  enum class Kind { None, Positive, Negative, Interval } kind = Kind::None;
+  ex lo, hi;
+};
+
+struct Find {
+  std::string name;
+  SourcePos pos;
+  ex value;               ///< bound to states (state symbols, parameters)
+  RootSpec root;
+  Dimension dim;
+  std::optional<units::Unit> unit;
+};
+
+struct Expect {
+  std::string name;
+  SourcePos pos;
+  std::optional<ex> form;
+  SourcePos form_pos;
+  std::optional<units::Quantity> value;
+  SourcePos value_pos;
+};
+
+/// Dimension mismatch: the two terms and their dimensions.
+struct DimensionError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Model {
+public:
+  /// @throws SceneError naming file, line, key and fix.
+  static Model build(const scene::SceneDef& def);
+
+  std::string file, title, description;
+  std::vector<Parameter> params;
+  std::vector<Coordinate> coords;
+  std::map<std::string, std::pair<ex, ex>> fixed_points;
+  std::vector<Body> bodies;
+  std::vector<std::pair<ex, SourcePos>> constraints;  ///< generic, == 0
+  std::vector<Effect> effects;
+  std::vector<State> states;
+  std::vector<Analysis> analyses;
+  std::vector<Find> finds;
+  std::vector<Expect> expects;
+  GiNaC::realsymbol t{"t"};
+
+  // --- kinematics (generic: coordinates, rates, t) ---
+  std::pair<ex, ex> position(const PointRef& p) const;
+  std::pair<ex, ex> velocity(const PointRef& p) const;
+  ex omega(int body) const;
+  /// d/dt of a generic expression of q and t: Σ ∂e/∂q q̇ + ∂e/∂t.
+  ex rate(const ex& e) const;
+
+  // --- energies (generic, simplified) ---
+  ex kinetic_energy() const;
+  ex kinetic_energy(int body) const;
+  /// M(q) = Σ Jᵀ m J + Jωᵀ Ī Jω, entries simplified.
+  GiNaC::matrix mass_matrix() const;
+  ex potential_energy() const;
+  ex potential_energy(const Effect& e) const;  ///< 0 for effects without a potential
+  bool conservative(const Effect& e) const;
+  /// Generalized force Q_i of effect e along coordinate i (non-conservative part included;
+  /// conservative effects give −∂V/∂q_i). Friction needs velocities and is not covered here.
+  ex generalized_force(const Effect& e, std::size_t i) const;
+  /// Power of an effect, Σ Q_i q̇_i (friction: −μN|v|).
+  ex power(const Effect& e) const;
+  /// Angular momentum of all bodies about point P: Σ Ī ω + (r_G − r_P) × m v̄.
+  ex angular_momentum(const PointRef& p) const;
+
+  // --- states ---
+  int state_index(const std::string& name) const;  ///< −1 when none
+  ex bind(const ex& e, int state) const;           ///< generic → state symbols
+  GiNaC::exmap parameter_values() const;           ///< parameter symbol → exact value
+  /// Values for numeric decisions (root choice, directions, zero tests): the parameters' values,
+  /// and for a parameter given without a value (taken as positive) a fixed sample value.
+  GiNaC::exmap numeric_environment() const;
+  const Parameter* parameter(const std::string& n) const;
+  /// Every symbol of the model with its dimension (parameters, q, q̇, t, state symbols).
+  const std::map<ex, Dimension, GiNaC::ex_is_less>& dimensions() const { return dims_; }
+  /// Dimension of an expression. @throws DimensionError naming the two mismatched terms.
+  Dimension dimension(const ex& e) const;
+
+  PointRef point(const std::string& text) const;  ///< @throws InputError
+  int body_index(const std::string& name) const;
+  int effect_index(const std::string& name) const;
+
+  /// Expression context for find/expect/where texts (`T`, `speed(P)`, `X@S`, …).
+  ex parse(const std::string& text, const SourcePos& pos, bool allow_states = true) const;
+
+private:
+  std::map<ex, Dimension, GiNaC::ex_is_less> dims_;
+  std::map<std::string, ex> names_;  ///< parameter, coordinate, rate names → symbol
+  void add_symbol(const ex& s, const Dimension& d) { dims_[s] = d; }
+  friend class Builder;
+  friend class SceneContext;
+};
+
+}  // namespace kinergy::model

@@ -1,0 +1,17 @@
+/// @file simplify.hpp  Trigonometric simplification without normal() on big trig expressions.
+#pragma once
+#include <ginac/ginac.h>
+
+namespace kinergy::model {
+
+/// Expand and remove sin²+cos² pairs: cos(a)^n → cos(a)^(n mod 2)·(1 − sin(a)²)^(n div 2),
+/// and the same with sin and cos swapped; returns the shorter result.
+GiNaC::ex trig_simplify(const GiNaC::ex& e);
+
+/// Collect a quadratic form in `rates` and trig-simplify each coefficient.
+GiNaC::ex collect_simplify(const GiNaC::ex& e, const GiNaC::lst& rates);
+
+/// Number of nodes in an expression tree (a size measure).
+std::size_t ex_size(const GiNaC::ex& e);
+
+}  // namespace kinergy::model

@@ -1,0 +1,20 @@
+/// @file evaluate.hpp  Numbers from closed forms: exact values in, decimal text out.
+#pragma once
+#include <optional>
+#include <string>
+
+#include <ginac/ginac.h>
+
+namespace kinergy::numerics {
+
+/// Evaluate e with `values` substituted, using `digits` decimal working digits.
+/// @returns nothing when e is not a real number (symbols left, complex, undefined).
+std::optional<GiNaC::numeric> evaluate(const GiNaC::ex& e, const GiNaC::exmap& values, int digits);
+
+/// v rounded to n significant digits, as text: "3.50178525897863", "-0.00125", "1.5e-12".
+std::string format(const GiNaC::numeric& v, int n);
+
+/// v rounded to n significant digits (exact decimal).
+GiNaC::numeric round_sig(const GiNaC::numeric& v, int n);
+
+}  // namespace kinergy::numerics

@@ -1,0 +1,70 @@
+/// @file principles.hpp  Principles of the chapter turned into scalar equations between states.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "kinergy/model/model.hpp"
+
+namespace kinergy::principles {
+
+using GiNaC::ex;
+
+/// One scalar equation `lhs = rhs`, with the principle it comes from.
+struct Equation {
+  ex lhs, rhs;
+  std::string principle;  ///< "work-energy", "constraint", "condition", …
+  std::string label;      ///< readable: "work–energy, states 1 → 2"
+  SourcePos pos;
+  ex residual() const { return lhs - rhs; }
+};
+
+/// The work of one non-conservative effect between two states, in state symbols.
+struct Work {
+  std::string effect;
+  ex U;
+  std::string how;  ///< "U = M (φ₂ − φ₁)", …
+};
+
+/// What is known numerically at each state before solving: given values and what the
+/// constraints give from them (for directions of motion). Parameters at their values.
+class Knowledge {
+public:
+  explicit Knowledge(const model::Model& m);
+  /// Numeric value of a state-bound expression, if everything in it is known.
+  std::optional<GiNaC::numeric> value(const ex& e) const;
+  const GiNaC::exmap& values() const { return known_; }
+  /// Record a value found by an earlier analysis.
+  void set(const ex& sym, const GiNaC::numeric& v) { known_[sym] = v; }
+private:
+  GiNaC::exmap known_;
+};
+
+/// Energy terms of one side.
+struct EnergyTerms {
+  ex T, V;
+};
+
+/// The energy analysis: T₁ + V₁ + Σ U₁→₂ = T₂ + V₂.
+struct EnergyBalance {
+  EnergyTerms at_from, at_to;
+  std::vector<Work> works;
+  Equation equation;
+  bool conservative = true;  ///< no non-conservative effect did work
+};
+
+/// @throws SceneError when a work cannot be taken (path unknown, time-dependent couple …).
+EnergyBalance energy(const model::Model& m, const model::Analysis& a, const Knowledge& k);
+
+/// Work of effect `e` between states s1 → s2 (state symbols).
+Work work(const model::Model& m, const model::Effect& e, int s1, int s2, const Knowledge& k);
+
+/// Constraint equations at a state (positions and velocities) and its `where` conditions.
+std::vector<Equation> state_equations(const model::Model& m, int state);
+
+/// Antiderivative of f in s, when one of the elementary rules applies.
+std::optional<ex> antiderivative(const ex& f, const GiNaC::symbol& s);
+
+}  // namespace kinergy::principles

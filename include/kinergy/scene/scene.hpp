@@ -1,0 +1,118 @@
+/// @file scene.hpp  Scene text → SceneDef: plain structs with source positions (no GiNaC).
+#pragma once
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kinergy/common/error.hpp"
+
+namespace kinergy::scene {
+
+/// A YAML value with the place it was written: a scalar, a list or a map (keys in order).
+struct Node {
+  enum class Kind { Null, Scalar, List, Map };
+  Kind kind = Kind::Null;
+  std::string scalar;
+  std::vector<Node> items;
+  std::vector<std::pair<Node, Node>> entries;  ///< map: (key, value), in file order
+  SourcePos pos;
+
+  bool is_scalar() const { return kind == Kind::Scalar; }
+  bool is_list() const { return kind == Kind::List; }
+  bool is_map() const { return kind == Kind::Map; }
+  const Node* get(const std::string& key) const;  ///< map entry or nullptr
+  std::string kind_name() const;                  ///< "a text", "a list", "a map", "empty"
+};
+
+/// A scalar text and where it stands.
+struct Text {
+  std::string s;
+  SourcePos pos;
+};
+
+struct ParameterDef { std::string name; SourcePos pos; Text value; };
+struct PointDef { std::string name; SourcePos pos; Text x, y; };
+struct CoordinateDef { std::string name; SourcePos pos; Text unit; };
+
+struct InertiaDef {
+  std::string kind;  ///< slender_rod, disk, cylinder, ring, hoop, plate, sphere, spherical_shell, gyration, centroidal, particle
+  std::vector<Text> args;
+  SourcePos pos;
+};
+
+struct BodyDef {
+  std::string name;
+  SourcePos pos;
+  Text mass;
+  InertiaDef inertia;
+  Text x, y;                     ///< mass-centre position
+  std::optional<Text> angle;
+  std::vector<PointDef> points;  ///< in body axes through G
+};
+
+/// An effect: its name, its kind and the rest of its map (checked by the model per kind).
+struct EffectDef {
+  std::string name;
+  std::string kind;
+  SourcePos pos;
+  Node arg;      ///< the value of the kind key (e.g. the body, the point pair), Null when name = kind
+  Node options;  ///< the whole map
+};
+
+struct StateDef {
+  std::string name;
+  SourcePos pos;
+  std::vector<std::pair<std::string, Text>> values;  ///< q, q_dot, t → expression
+  SourcePos key_pos(const std::string& key) const;
+  std::vector<Text> where;
+};
+
+struct AnalysisDef {
+  std::string kind;  ///< energy, …
+  SourcePos pos;
+  Node options;
+};
+
+struct FindDef {
+  std::string name;
+  SourcePos pos;
+  Text value;
+  std::optional<Node> root;  ///< positive | negative | {in: [lo, hi]}
+  std::optional<Text> unit;
+};
+
+struct ExpectDef {
+  std::string name;
+  SourcePos pos;
+  std::optional<Text> form;
+  std::optional<Text> value;
+};
+
+struct SceneDef {
+  std::string file;
+  std::string title, description;
+  std::vector<ParameterDef> parameters;
+  std::vector<PointDef> points;
+  std::vector<CoordinateDef> coordinates;
+  std::vector<BodyDef> bodies;
+  std::vector<Text> constraints;
+  std::vector<EffectDef> effects;
+  std::vector<StateDef> states;
+  std::vector<AnalysisDef> analyses;
+  std::vector<FindDef> finds;
+  std::vector<ExpectDef> expects;
+};
+
+/// Effect kinds a scene may name.
+const std::vector<std::string>& effect_kinds();
+
+/// Read a scene file. @throws SceneError (file:line:col) on any malformed input.
+SceneDef load_file(const std::string& path);
+/// Read scene text; `file` names it in errors.
+SceneDef load_string(const std::string& text, const std::string& file = "<scene>");
+
+/// The closest of `options` to `word` by edit distance, or "" when none is near.
+std::string closest(const std::string& word, const std::vector<std::string>& options);
+
+}  // namespace kinergy::scene

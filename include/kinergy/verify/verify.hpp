@@ -1,0 +1,22 @@
+/// @file verify.hpp  Check claimed closed forms and textbook numbers against a solution.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "kinergy/problem.hpp"
+
+namespace kinergy::verify {
+
+struct Check {
+  std::string name;     ///< the result's name
+  std::string what;     ///< "form" or "value"
+  enum class Status { Proved, Checked, Fails } status = Status::Fails;
+  std::string detail;   ///< "proved", "checked at 24 points, worst relative difference 1e-48", "FAILS: …"
+  SourcePos pos;
+  bool ok() const { return status != Status::Fails; }
+};
+
+/// Every `expect` claim of the scene, checked.
+std::vector<Check> verify(const Solution& s);
+
+}  // namespace kinergy::verify

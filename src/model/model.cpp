@@ -1,0 +1,1094 @@
+#include "kinergy/model/model.hpp"
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/expr/parser.hpp"
+#include "kinergy/model/simplify.hpp"
+
+namespace kinergy::model {
+
+using namespace GiNaC;
+using scene::Node;
+using scene::Text;
+
+static std::string str(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
+// ---------------------------------------------------------------- dimensions
+
+Dimension Model::dimension(const ex& e) const {
+  if (is_a<numeric>(e) || is_a<constant>(e)) return {};
+  if (is_a<symbol>(e)) {
+    auto it = dims_.find(e);
+    if (it == dims_.end()) throw DimensionError("'" + str(e) + "' has no known dimension");
+    return it->second;
+  }
+  if (is_a<add>(e)) {
+    Dimension d0 = dimension(e.op(0));
+    for (std::size_t i = 1; i < e.nops(); ++i) {
+      Dimension di = dimension(e.op(i));
+      if (di != d0)
+        throw DimensionError("'" + str(e.op(0)) + "' has dimension " + d0.str() + " but '" +
+                             str(e.op(i)) + "' has " + di.str());
+    }
+    return d0;
+  }
+  if (is_a<mul>(e)) {
+    Dimension d;
+    for (std::size_t i = 0; i < e.nops(); ++i) d = d * dimension(e.op(i));
+    return d;
+  }
+  if (is_a<GiNaC::power>(e)) {
+    Dimension b = dimension(e.op(0));
+    Dimension x = dimension(e.op(1));
+    if (!x.dimensionless())
+      throw DimensionError("the exponent '" + str(e.op(1)) + "' has dimension " + x.str() +
+                           "; an exponent must be a pure number");
+    if (b.dimensionless()) return {};
+    if (!is_a<numeric>(e.op(1)) || !ex_to<numeric>(e.op(1)).is_rational())
+      throw DimensionError("'" + str(e.op(0)) + "' (" + b.str() +
+                           ") is raised to a non-numeric power '" + str(e.op(1)) + "'");
+    return b.pow(ex_to<numeric>(e.op(1)));
+  }
+  if (is_a<function>(e)) {
+    std::string n = ex_to<function>(e).get_name();
+    if (n == "abs") return dimension(e.op(0));
+    if (n == "atan2") {
+      Dimension a = dimension(e.op(0)), b = dimension(e.op(1));
+      if (a != b)
+        throw DimensionError("atan2 arguments '" + str(e.op(0)) + "' (" + a.str() + ") and '" +
+                             str(e.op(1)) + "' (" + b.str() + ") differ in dimension");
+      return {};
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      Dimension a = dimension(e.op(i));
+      if (!a.dimensionless())
+        throw DimensionError(n + "('" + str(e.op(i)) + "') takes a pure number or an angle, but '" +
+                             str(e.op(i)) + "' has dimension " + a.str());
+    }
+    return {};
+  }
+  if (is_a<integral>(e)) return dimension(e.op(3)) * dimension(e.op(0));
+  throw DimensionError("cannot tell the dimension of '" + str(e) + "'");
+}
+
+// ---------------------------------------------------------------- kinematics
+
+ex Model::rate(const ex& e) const {
+  // d/dt e(q, t) = Σ ∂e/∂q_i q̇_i + ∂e/∂t
+  ex r = e.diff(t);
+  for (auto& c : coords) r += e.diff(c.q) * c.qd;
+  return r;
+}
+
+std::pair<ex, ex> Model::position(const PointRef& p) const {
+  if (p.body < 0 || p.world_place) return {p.wx, p.wy};
+  const Body& b = bodies[p.body];
+  // r_P = r_G + R(φ) p_local,  R(φ) = [[cos φ, −sin φ], [sin φ, cos φ]]
+  ex c = cos(b.angle), s = sin(b.angle);
+  return {b.x + c * p.lx - s * p.ly, b.y + s * p.lx + c * p.ly};
+}
+
+ex Model::omega(int body) const { return rate(bodies[body].angle); }
+
+std::pair<ex, ex> Model::velocity(const PointRef& p) const {
+  if (p.body < 0) return {0, 0};
+  if (p.world_place) {
+    // material point of the body at world place w:  v = v̄ + ω k × (w − r_G)
+    const Body& b = bodies[p.body];
+    ex w = omega(p.body);
+    return {rate(b.x) - w * (p.wy - b.y), rate(b.y) + w * (p.wx - b.x)};
+  }
+  auto [x, y] = position(p);
+  return {rate(x), rate(y)};
+}
+
+static lst rate_list(const std::vector<Coordinate>& coords) {
+  lst l;
+  for (auto& c : coords) l.append(c.qd);
+  return l;
+}
+
+ex Model::kinetic_energy(int i) const {
+  // T = ½ m v̄² + ½ Ī ω²
+  const Body& b = bodies[i];
+  ex vx = rate(b.x), vy = rate(b.y), w = omega(i);
+  ex T = b.mass * (vx * vx + vy * vy) / 2 + b.inertia * w * w / 2;
+  return collect_simplify(T, rate_list(coords));
+}
+
+ex Model::kinetic_energy() const {
+  ex T = 0;
+  for (std::size_t i = 0; i < bodies.size(); ++i) T += kinetic_energy(static_cast<int>(i));
+  return collect_simplify(T, rate_list(coords));
+}
+
+matrix Model::mass_matrix() const {
+  // M(q) = Σ_bodies  m Jᵀ J + Ī Jωᵀ Jω,   J = ∂r_G/∂q,  Jω = ∂φ/∂q
+  std::size_t n = coords.size();
+  matrix M(n, n);
+  for (auto& b : bodies)
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) {
+        const symbol& qi = coords[i].q;
+        const symbol& qj = coords[j].q;
+        M(i, j) += b.mass * (b.x.diff(qi) * b.x.diff(qj) + b.y.diff(qi) * b.y.diff(qj)) +
+                   b.inertia * b.angle.diff(qi) * b.angle.diff(qj);
+      }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) M(i, j) = trig_simplify(M(i, j));
+  return M;
+}
+
+bool Model::conservative(const Effect& e) const {
+  return e.kind == "gravity" || e.kind == "spring" || e.kind == "torsion_spring" || e.kind == "pin";
+}
+
+ex Model::potential_energy(const Effect& e) const {
+  if (e.kind == "gravity") {
+    // V = Σ m g h,  h = −(ĝ · r_G)  (height against the direction of gravity)
+    ex V = 0;
+    for (auto& b : bodies) V += -b.mass * e.g * (e.dir_x * b.x + e.dir_y * b.y);
+    return V.expand();
+  }
+  if (e.kind == "spring") {
+    // V = ½ k (|r_A − r_B| − L₀)²
+    auto [xa, ya] = position(e.a);
+    auto [xb, yb] = position(e.b);
+    ex d2 = trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2));
+    if (e.free.is_zero()) return e.k * d2 / 2;
+    return e.k * pow(sqrt(d2) - e.free, 2) / 2;
+  }
+  if (e.kind == "torsion_spring") {
+    // V = ½ k (φ − φ₀)²,  φ the body's angle (or relative to a second body)
+    ex phi = bodies[e.body].angle - (e.body2 >= 0 ? bodies[e.body2].angle : ex(0));
+    return e.k * pow(phi - e.free, 2) / 2;
+  }
+  return 0;
+}
+
+ex Model::potential_energy() const {
+  ex V = 0;
+  for (auto& e : effects) V += potential_energy(e);
+  return V;
+}
+
+static std::pair<ex, ex> dpos(const Model& m, const PointRef& p, const symbol& q) {
+  // ∂r_P/∂q; for a material point at a world place: ∂r_G/∂q + ∂φ/∂q k × (w − r_G)
+  if (p.body < 0) return {0, 0};
+  if (p.world_place) {
+    const Body& b = m.bodies[p.body];
+    ex dphi = b.angle.diff(q);
+    return {b.x.diff(q) - dphi * (p.wy - b.y), b.y.diff(q) + dphi * (p.wx - b.x)};
+  }
+  auto [x, y] = m.position(p);
+  return {x.diff(q), y.diff(q)};
+}
+
+ex Model::generalized_force(const Effect& e, std::size_t i) const {
+  const symbol& q = coords[i].q;
+  if (conservative(e)) return -potential_energy(e).diff(q);  // Q_i = −∂V/∂q_i
+  if (e.kind == "couple") return e.M * bodies[e.body].angle.diff(q);  // Q_i = M ∂φ/∂q_i
+  if (e.kind == "force") {
+    auto [dx, dy] = dpos(*this, e.a, q);  // Q_i = F · ∂r_P/∂q_i
+    return e.Fx * dx + e.Fy * dy;
+  }
+  return 0;
+}
+
+ex Model::power(const Effect& e) const {
+  if (e.kind == "friction") {
+    // P = −μ N |v_P|
+    auto [vx, vy] = velocity(e.a);
+    return -e.mu * e.normal * sqrt(trig_simplify(vx * vx + vy * vy));
+  }
+  if (e.kind == "friction_couple") return -e.M * abs(omega(e.body));  // P = −M |ω|
+  if (e.kind == "power") return e.P;
+  if (e.kind == "couple") return e.M * omega(e.body);                // P = M ω
+  if (e.kind == "force") {
+    auto [vx, vy] = velocity(e.a);                                     // P = F · v
+    return e.Fx * vx + e.Fy * vy;
+  }
+  ex P = 0;  // conservative: P = −dV/dt
+  if (conservative(e)) P = -rate(potential_energy(e));
+  return collect_simplify(P, rate_list(coords));
+}
+
+ex Model::angular_momentum(const PointRef& p) const {
+  // H_P = Σ Ī ω + (r_G − r_P) × m v̄
+  auto [px, py] = position(p);
+  ex H = 0;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const Body& b = bodies[i];
+    ex vx = rate(b.x), vy = rate(b.y);
+    H += b.inertia * omega(static_cast<int>(i)) + b.mass * ((b.x - px) * vy - (b.y - py) * vx);
+  }
+  return collect_simplify(H, rate_list(coords));
+}
+
+int Model::state_index(const std::string& n) const {
+  for (std::size_t i = 0; i < states.size(); ++i)
+    if (states[i].name == n) return static_cast<int>(i);
+  return -1;
+}
+
+ex Model::bind(const ex& e, int s) const {
+  const State& st = states[s];
+  exmap m;
+  for (auto& c : coords) {
+    auto& [q, qd] = st.sym.at(c.name);
+    m[c.q] = q;
+    m[c.qd] = qd;
+  }
+  m[t] = st.t;
+  return e.subs(m);
+}
+
+exmap Model::parameter_values() const {
+  exmap m;
+  for (auto& p : params)
+    if (p.value) m[p.sym] = *p.value;
+  return m;
+}
+
+exmap Model::numeric_environment() const {
+  exmap m;
+  int i = 0;
+  for (auto& p : params) {
+    if (p.value) m[p.sym] = *p.value;
+    else if (!p.unknown) m[p.sym] = numeric(1) + numeric(37 * (++i) % 97, 97);  // in (1, 2)
+  }
+  return m;
+}
+
+const Parameter* Model::parameter(const std::string& n) const {
+  for (auto& p : params)
+    if (p.name == n) return &p;
+  return nullptr;
+}
+
+int Model::body_index(const std::string& n) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].name == n) return static_cast<int>(i);
+  return -1;
+}
+
+int Model::effect_index(const std::string& n) const {
+  for (std::size_t i = 0; i < effects.size(); ++i)
+    if (effects[i].name == n) return static_cast<int>(i);
+  return -1;
+}
+
+PointRef Model::point(const std::string& text) const {
+  PointRef p;
+  p.text = text;
+  auto dot = text.find('.');
+  if (dot == std::string::npos) {
+    auto f = fixed_points.find(text);
+    if (f != fixed_points.end()) {
+      p.wx = f->second.first;
+      p.wy = f->second.second;
+      return p;
+    }
+    int b = body_index(text);
+    if (b >= 0) {
+      p.body = b;
+      return p;
+    }
+    std::vector<std::string> names;
+    for (auto& [k, v] : fixed_points) names.push_back(k);
+    for (auto& b2 : bodies) names.push_back(b2.name);
+    std::string near = scene::closest(text, names);
+    throw InputError("'" + text + "' is neither a fixed point nor a body",
+                     near.empty() ? "name a point under 'points', a body, or body.point"
+                                  : "did you mean '" + near + "'?");
+  }
+  std::string bn = text.substr(0, dot), pn = text.substr(dot + 1);
+  int b = body_index(bn);
+  if (b < 0) {
+    std::vector<std::string> names;
+    for (auto& b2 : bodies) names.push_back(b2.name);
+    std::string near = scene::closest(bn, names);
+    throw InputError("no body named '" + bn + "'",
+                     near.empty() ? "define it under 'bodies'" : "did you mean '" + near + "'?");
+  }
+  auto it = bodies[b].points.find(pn);
+  if (it == bodies[b].points.end()) {
+    std::vector<std::string> names;
+    for (auto& [k, v] : bodies[b].points) names.push_back(k);
+    std::string near = scene::closest(pn, names);
+    throw InputError("body '" + bn + "' has no point '" + pn + "'",
+                     near.empty() ? "add it under " + bn + ".points, e.g. " + pn + ": [l/2, 0]"
+                                  : "did you mean '" + bn + "." + near + "'?");
+  }
+  p.body = b;
+  p.lx = it->second.first;
+  p.ly = it->second.second;
+  return p;
+}
+
+// ---------------------------------------------------------------- expression context
+
+/// Names a scene expression may use, by where it stands.
+class SceneContext : public expr::Context {
+public:
+  enum Level { ParamsOnly, Geometry, Quantities };
+  SceneContext(const Model& m, Level lv, bool states) : m_(m), level_(lv), states_(states) {}
+
+  ex name(const std::string& id) override {
+    if (id.find('.') != std::string::npos)
+      throw InputError("'" + id + "' is a point, not a number",
+                       "use x(" + id + "), y(" + id + "), speed(" + id + ") …");
+    auto it = m_.names_.find(id);
+    if (it != m_.names_.end()) {
+      bool is_param = false;
+      for (auto& p : m_.params) is_param = is_param || p.name == id;
+      if (!is_param && level_ == ParamsOnly)
+        throw InputError("'" + id + "' is a coordinate or rate; only parameters may stand here",
+                         "write this in parameters only");
+      bool is_rate = id.size() > 4 && id.compare(id.size() - 4, 4, "_dot") == 0;
+      if (is_rate && level_ == Geometry)
+        throw InputError("a rate '" + id + "' cannot stand in geometry",
+                         "write positions in coordinates; velocities follow by differentiation");
+      return it->second;
+    }
+    if (id == "t") {
+      if (level_ == ParamsOnly)
+        throw InputError("time 't' cannot stand here", "write this in parameters only");
+      return m_.t;
+    }
+    if (level_ == Quantities) {
+      if (id == "T") return m_.kinetic_energy();
+      if (id == "V") return m_.potential_energy();
+    }
+    std::vector<std::string> names;
+    for (auto& [k, v] : m_.names_) names.push_back(k);
+    std::string near = scene::closest(id, names);
+    throw InputError("unknown name '" + id + "'",
+                     near.empty() ? "define it under parameters or coordinates"
+                                  : "did you mean '" + near + "'?");
+  }
+
+  ex quantity(const std::string& f, const std::vector<std::string>& args) override {
+    if (level_ != Quantities)
+      throw InputError("'" + f + "(…)' is not a function here",
+                       "use sin, cos, tan, asin, acos, atan, atan2, sqrt, exp, log, abs");
+    auto one = [&](const char* what) -> const std::string& {
+      if (args.size() != 1)
+        throw InputError(f + " takes one argument, not " + std::to_string(args.size()),
+                         std::string("write ") + f + "(" + what + ")");
+      return args[0];
+    };
+    auto body = [&](const std::string& n) {
+      int b = m_.body_index(n);
+      if (b < 0) {
+        std::vector<std::string> names;
+        for (auto& x : m_.bodies) names.push_back(x.name);
+        std::string near = scene::closest(n, names);
+        throw InputError("no body named '" + n + "'",
+                         near.empty() ? "name a body of the scene" : "did you mean '" + near + "'?");
+      }
+      return b;
+    };
+    if (f == "T") {
+      if (args.empty()) return m_.kinetic_energy();
+      return m_.kinetic_energy(body(one("body")));
+    }
+    if (f == "V") {
+      if (args.empty()) return m_.potential_energy();
+      int e = m_.effect_index(one("effect"));
+      if (e < 0) throw InputError("no effect named '" + args[0] + "'", "name an effect of the scene");
+      return m_.potential_energy(m_.effects[e]);
+    }
+    if (f == "omega") return m_.omega(body(one("body")));
+    if (f == "x" || f == "y" || f == "vx" || f == "vy" || f == "speed") {
+      PointRef p = m_.point(one("P"));
+      if (f == "x") return m_.position(p).first;
+      if (f == "y") return m_.position(p).second;
+      auto [vx, vy] = m_.velocity(p);
+      if (f == "vx") return vx;
+      if (f == "vy") return vy;
+      return sqrt(trig_simplify(vx * vx + vy * vy));
+    }
+    if (f == "power") {
+      int e = m_.effect_index(one("effect"));
+      if (e < 0) throw InputError("no effect named '" + args[0] + "'", "name an effect of the scene");
+      return m_.power(m_.effects[e]);
+    }
+    if (f == "H") return m_.angular_momentum(m_.point(one("P")));
+    throw InputError("unknown function '" + f + "'",
+                     "use T, V, T(body), omega(body), x(P), y(P), vx(P), vy(P), speed(P), "
+                     "power(effect), H(P) or a math function");
+  }
+
+  ex at_state(const ex& e, const std::string& s) override {
+    if (!states_)
+      throw InputError("'@" + s + "' binds to a state, which cannot be done here",
+                       "remove '@" + s + "'");
+    int i = m_.state_index(s);
+    if (i < 0) {
+      std::vector<std::string> names;
+      for (auto& st : m_.states) names.push_back(st.name);
+      std::string near = scene::closest(s, names);
+      throw InputError("no state named '" + s + "'",
+                       near.empty() ? "define it under 'states'" : "did you mean '@" + near + "'?");
+    }
+    return m_.bind(e, i);
+  }
+
+private:
+  const Model& m_;
+  Level level_;
+  bool states_;
+};
+
+ex Model::parse(const std::string& text, const SourcePos& pos, bool allow_states) const {
+  SceneContext ctx(*this, SceneContext::Quantities, allow_states);
+  try {
+    return expr::parse(text, ctx);
+  } catch (const InputError& e) {
+    rethrow_at(pos, e);
+  }
+}
+
+// ---------------------------------------------------------------- builder
+
+class Builder {
+public:
+  explicit Builder(const scene::SceneDef& d) : d_(d) {}
+
+  Model run() {
+    m_.file = d_.file;
+    m_.title = d_.title;
+    m_.description = d_.description;
+    parameters();
+    coordinates();
+    fixed_points();
+    bodies();
+    constraints();
+    effects();
+    states();
+    analyses();
+    finds();
+    expects();
+    return std::move(m_);
+  }
+
+private:
+  const scene::SceneDef& d_;
+  Model m_;
+  std::set<std::string> taken_;
+
+  void reserve(const std::string& n, const SourcePos& pos, const std::string& what) {
+    static const std::set<std::string> reserved = {"t", "pi", "T", "V"};
+    if (reserved.count(n) || expr::is_math_function(n))
+      throw SceneError(pos, "'" + n + "' is a reserved name and cannot name a " + what,
+                       "choose another name, e.g. '" + n + "_1'");
+    if (!taken_.insert(n).second)
+      throw SceneError(pos, "the name '" + n + "' is used twice",
+                       "give each parameter, coordinate and rate its own name");
+  }
+
+  ex parse(const Text& t, SceneContext::Level lv, bool states = false) {
+    SceneContext ctx(m_, lv, states);
+    try {
+      return expr::parse(t.s, ctx);
+    } catch (const InputError& e) {
+      rethrow_at(t.pos, e);
+    }
+  }
+
+  Dimension dim(const ex& e, const SourcePos& pos, const std::string& key) {
+    try {
+      return m_.dimension(e);
+    } catch (const DimensionError& err) {
+      throw SceneError(pos, std::string("inconsistent units in '") + key + "': " + err.what(),
+                       "make every term of a sum the same kind of quantity");
+    }
+  }
+
+  void expect_dim(const ex& e, const Dimension& want, const SourcePos& pos, const std::string& key,
+                  const std::string& fix) {
+    Dimension got = dim(e, pos, key);
+    if (!e.is_zero() && got != want)
+      throw SceneError(pos, "'" + key + "' has dimension " + got.str() + " but must be " +
+                                (want.dimensionless() ? std::string("a pure number") : want.str()),
+                       fix);
+  }
+
+  ex checked(const Text& t, SceneContext::Level lv, const Dimension& want, const std::string& key,
+             const std::string& fix) {
+    ex e = parse(t, lv);
+    expect_dim(e, want, t.pos, key, fix);
+    return e;
+  }
+
+  /// Numeric value with the parameters' values, if all are known.
+  std::optional<numeric> value_of(const ex& e) {
+    ex v = e.subs(m_.parameter_values()).evalf();
+    if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) return ex_to<numeric>(v);
+    return std::nullopt;
+  }
+
+  void positive(const ex& e, const SourcePos& pos, const std::string& what, bool allow_zero = false) {
+    auto v = value_of(e);
+    if (v && (allow_zero ? v->is_negative() : !v->is_positive()))
+      throw SceneError(pos, what + " must be " + (allow_zero ? "zero or positive" : "positive") +
+                                ", but it is " + str(*v),
+                       "give it a " + std::string(allow_zero ? "non-negative" : "positive") + " value");
+  }
+
+  void parameters() {
+    for (auto& p : d_.parameters) {
+      reserve(p.name, p.pos, "parameter");
+      units::Quantity q;
+      try {
+        q = units::parse_quantity(p.value.s);
+      } catch (const InputError& e) {
+        rethrow_at(p.value.pos, e);
+      }
+      Parameter par;
+      par.name = p.name;
+      par.pos = p.pos;
+      par.dim = q.unit.dim;
+      par.unknown = q.unknown;
+      if (q.has_number) par.value = q.si;
+      bool pos = !q.unknown && (!q.has_number || q.number.is_positive());
+      if (pos) par.sym = possymbol(p.name);
+      else par.sym = realsymbol(p.name);
+      m_.add_symbol(par.sym, par.dim);
+      m_.names_[p.name] = par.sym;
+      m_.params.push_back(par);
+    }
+  }
+
+  void coordinates() {
+    for (auto& c : d_.coordinates) {
+      reserve(c.name, c.pos, "coordinate");
+      reserve(c.name + "_dot", c.pos, "rate");
+      units::Unit u;
+      try {
+        u = units::parse_unit(c.unit.s);
+      } catch (const InputError& e) {
+        rethrow_at(c.unit.pos, e);
+      }
+      if (!u.dim.dimensionless() && u.dim != Dimension::length())
+        throw SceneError(c.unit.pos, "coordinate '" + c.name + "' has unit '" + c.unit.s +
+                                         "'; a coordinate is a length or an angle",
+                         "write 'm' (or ft, in …) or 'rad'");
+      Coordinate co{c.name, c.pos, realsymbol(c.name), realsymbol(c.name + "_dot"), u.dim};
+      m_.add_symbol(co.q, co.dim);
+      m_.add_symbol(co.qd, co.dim / Dimension::time());
+      m_.names_[c.name] = co.q;
+      m_.names_[c.name + "_dot"] = co.qd;
+      m_.coords.push_back(co);
+    }
+    m_.add_symbol(m_.t, Dimension::time());
+  }
+
+  void fixed_points() {
+    for (auto& p : d_.points) {
+      ex x = checked(p.x, SceneContext::ParamsOnly, Dimension::length(), p.name + "[0]",
+                     "a point's coordinates are lengths");
+      ex y = checked(p.y, SceneContext::ParamsOnly, Dimension::length(), p.name + "[1]",
+                     "a point's coordinates are lengths");
+      if (m_.fixed_points.count(p.name))
+        throw SceneError(p.pos, "point '" + p.name + "' is defined twice", "rename one of them");
+      m_.fixed_points[p.name] = {x, y};
+    }
+  }
+
+  void bodies() {
+    const Dimension L = Dimension::length(), M = Dimension::mass();
+    for (auto& bd : d_.bodies) {
+      if (m_.fixed_points.count(bd.name))
+        throw SceneError(bd.pos, "'" + bd.name + "' names both a point and a body", "rename one");
+      Body b;
+      b.name = bd.name;
+      b.pos = bd.pos;
+      b.mass = checked(bd.mass, SceneContext::ParamsOnly, M, "mass", "a mass is in kg, g or slug");
+      positive(b.mass, bd.mass.pos, "the mass of '" + bd.name + "'");
+      // Ī from the shape: rod m L²/12, disk m r²/2, ring m r², plate m(a²+b²)/12,
+      // sphere 2 m r²/5, spherical shell 2 m r²/3, gyration m k²
+      const auto& in = bd.inertia;
+      std::vector<ex> a;
+      for (auto& t : in.args) {
+        Dimension want = in.kind == "centroidal" ? M * L * L : L;
+        ex e = checked(t, SceneContext::ParamsOnly, want, in.kind,
+                       in.kind == "centroidal" ? "Ī is in kg·m^2" : "a size is a length");
+        positive(e, t.pos, "the size '" + t.s + "' of " + in.kind);
+        a.push_back(e);
+      }
+      const std::string& k = in.kind;
+      if (k == "particle") b.inertia = 0;
+      else if (k == "slender_rod") b.inertia = b.mass * pow(a[0], 2) / 12;
+      else if (k == "disk" || k == "cylinder") b.inertia = b.mass * pow(a[0], 2) / 2;
+      else if (k == "ring" || k == "hoop") b.inertia = b.mass * pow(a[0], 2);
+      else if (k == "plate") b.inertia = b.mass * (pow(a[0], 2) + pow(a[1], 2)) / 12;
+      else if (k == "sphere") b.inertia = 2 * b.mass * pow(a[0], 2) / 5;
+      else if (k == "spherical_shell") b.inertia = 2 * b.mass * pow(a[0], 2) / 3;
+      else if (k == "gyration") b.inertia = b.mass * pow(a[0], 2);
+      else b.inertia = a[0];  // centroidal
+      b.x = checked(bd.x, SceneContext::Geometry, L, "position[0]", "positions are lengths");
+      b.y = checked(bd.y, SceneContext::Geometry, L, "position[1]", "positions are lengths");
+      b.angle = bd.angle ? checked(*bd.angle, SceneContext::Geometry, Dimension{}, "angle",
+                                   "an angle is a pure number (rad)")
+                         : ex(0);
+      for (auto& p : bd.points) {
+        ex px = checked(p.x, SceneContext::ParamsOnly, L, p.name + "[0]",
+                        "body points are lengths in body axes (parameters only)");
+        ex py = checked(p.y, SceneContext::ParamsOnly, L, p.name + "[1]",
+                        "body points are lengths in body axes (parameters only)");
+        b.points[p.name] = {px, py};
+      }
+      if (m_.body_index(bd.name) >= 0)
+        throw SceneError(bd.pos, "body '" + bd.name + "' is defined twice", "rename one");
+      m_.bodies.push_back(b);
+    }
+    if (m_.bodies.empty() && !d_.analyses.empty())
+      throw SceneError({d_.file, 1, 1}, "the scene has no bodies", "add a 'bodies:' section");
+  }
+
+  void constraints() {
+    for (auto& c : d_.constraints) {
+      SceneContext ctx(m_, SceneContext::Geometry, false);
+      ex e;
+      try {
+        e = expr::parse_equation(c.s, ctx);
+      } catch (const InputError& err) {
+        rethrow_at(c.pos, err);
+      }
+      dim(e, c.pos, "constraint");
+      if (e.is_zero())
+        throw SceneError(c.pos, "the constraint '" + c.s + "' says nothing (0 = 0)",
+                         "write a relation between coordinates, e.g. x + r*phi = 0");
+      bool has_q = false;
+      for (auto& co : m_.coords) has_q = has_q || e.has(co.q);
+      if (!has_q)
+        throw SceneError(c.pos, "the constraint '" + c.s + "' has no coordinate",
+                         "a constraint relates coordinates, e.g. x + r*phi = 0");
+      m_.constraints.push_back({e, c.pos});
+    }
+  }
+
+  // --- effects ---
+  const Node& option(const scene::EffectDef& e, const std::string& key, const std::string& example) {
+    const Node* n = e.options.get(key);
+    if (!n)
+      throw SceneError(e.pos, "effect '" + e.name + "' (" + e.kind + ") has no '" + key + "'",
+                       "add '" + key + ": " + example + "'");
+    return *n;
+  }
+  Text text_of(const Node& n, const std::string& key, const std::string& example) {
+    if (!n.is_scalar())
+      throw SceneError(n.pos, "'" + key + "' must be a single value, not " + n.kind_name(),
+                       "write e.g. '" + key + ": " + example + "'");
+    return {n.scalar, n.pos};
+  }
+  void only(const scene::EffectDef& e, std::vector<std::string> keys) {
+    keys.push_back(e.kind);
+    for (auto& [k, v] : e.options.entries)
+      if (std::find(keys.begin(), keys.end(), k.scalar) == keys.end()) {
+        std::string list;
+        for (auto& s : keys) list += (list.empty() ? "" : ", ") + s;
+        std::string near = scene::closest(k.scalar, keys);
+        throw SceneError(k.pos, "unknown key '" + k.scalar + "' in " + e.kind + " effect '" + e.name + "'",
+                         near.empty() ? "use: " + list : "did you mean '" + near + "'?");
+      }
+  }
+  PointRef point_ref(const Node& n, const std::string& key) {
+    if (!n.is_scalar())
+      throw SceneError(n.pos, "'" + key + "' must name a point, not " + n.kind_name(),
+                       "write body.point, a body, or a fixed point");
+    try {
+      return m_.point(n.scalar);
+    } catch (const InputError& err) {
+      rethrow_at(n.pos, err);
+    }
+  }
+  int body_ref(const Node& n, const std::string& key) {
+    if (!n.is_scalar())
+      throw SceneError(n.pos, "'" + key + "' must name a body, not " + n.kind_name(), "write the body's name");
+    int b = m_.body_index(n.scalar);
+    if (b < 0) {
+      std::vector<std::string> names;
+      for (auto& x : m_.bodies) names.push_back(x.name);
+      std::string near = scene::closest(n.scalar, names);
+      throw SceneError(n.pos, "no body named '" + n.scalar + "'",
+                       near.empty() ? "name a body of the scene" : "did you mean '" + near + "'?");
+    }
+    return b;
+  }
+  std::pair<ex, ex> vec(const Node& n, const std::string& key, const Dimension& d, SceneContext::Level lv,
+                        const std::string& fix) {
+    if (!n.is_list() || n.items.size() != 2)
+      throw SceneError(n.pos, "'" + key + "' must be a list [x, y]", "write e.g. " + key + ": [0, -P]");
+    ex x = checked(text_of(n.items[0], key, "0"), lv, d, key + "[0]", fix);
+    ex y = checked(text_of(n.items[1], key, "0"), lv, d, key + "[1]", fix);
+    return {x, y};
+  }
+
+  void effects() {
+    const Dimension M = Dimension::mass(), L = Dimension::length(), T = Dimension::time();
+    const Dimension F = M * L / (T * T), E = F * L;
+    for (auto& ed : d_.effects) {
+      Effect e;
+      e.name = ed.name;
+      e.kind = ed.kind;
+      e.pos = ed.pos;
+      const std::string& k = ed.kind;
+      if (k == "gravity") {
+        only(ed, {"g", "direction"});
+        Node gnode = ed.arg.kind == Node::Kind::Scalar ? ed.arg : option(ed, "g", "g");
+        if (ed.arg.kind == Node::Kind::Scalar && ed.options.get("g"))
+          throw SceneError(ed.options.get("g")->pos, "gravity is given twice", "give 'g' once");
+        e.g = checked(text_of(gnode, "g", "g"), SceneContext::ParamsOnly, L / (T * T), "g",
+                      "g is an acceleration, e.g. 9.81 m/s^2");
+        positive(e.g, gnode.pos, "g");
+        if (auto* d = ed.options.get("direction")) {
+          auto [dx, dy] = vec(*d, "direction", Dimension{}, SceneContext::ParamsOnly,
+                              "a direction is a pair of pure numbers");
+          ex n2 = dx * dx + dy * dy;
+          if (n2.is_zero()) throw SceneError(d->pos, "the direction of gravity is zero", "write e.g. [0, -1]");
+          e.dir_x = dx / sqrt(n2);
+          e.dir_y = dy / sqrt(n2);
+        }
+      } else if (k == "spring") {
+        only(ed, {"k", "free_length"});
+        if (!ed.arg.is_list() || ed.arg.items.size() != 2)
+          throw SceneError(ed.arg.pos, "a spring joins two points", "write 'spring: [A, bar.B]'");
+        e.a = point_ref(ed.arg.items[0], "spring");
+        e.b = point_ref(ed.arg.items[1], "spring");
+        e.k = checked(text_of(option(ed, "k", "k"), "k", "k"), SceneContext::ParamsOnly, F / L, "k",
+                      "a spring constant is in N/m (or lb/ft)");
+        positive(e.k, option(ed, "k", "k").pos, "the spring constant");
+        if (auto* f = ed.options.get("free_length")) {
+          e.free = checked(text_of(*f, "free_length", "L0"), SceneContext::ParamsOnly, L, "free_length",
+                           "a free length is a length");
+          positive(e.free, f->pos, "the free length", true);
+        }
+      } else if (k == "torsion_spring") {
+        only(ed, {"k", "free_angle"});
+        if (ed.arg.is_list()) {
+          if (ed.arg.items.size() != 2)
+            throw SceneError(ed.arg.pos, "a torsion spring acts on one body or between two", "write 'torsion_spring: [a, b]'");
+          e.body = body_ref(ed.arg.items[0], "torsion_spring");
+          e.body2 = body_ref(ed.arg.items[1], "torsion_spring");
+        } else {
+          e.body = body_ref(ed.arg, "torsion_spring");
+        }
+        e.k = checked(text_of(option(ed, "k", "k_t"), "k", "k_t"), SceneContext::ParamsOnly, E, "k",
+                      "a torsional constant is in N·m/rad");
+        positive(e.k, option(ed, "k", "k").pos, "the torsional constant");
+        if (auto* f = ed.options.get("free_angle"))
+          e.free = checked(text_of(*f, "free_angle", "0"), SceneContext::ParamsOnly, Dimension{},
+                           "free_angle", "an angle is a pure number (rad)");
+      } else if (k == "couple" || k == "friction_couple") {
+        only(ed, {"M"});
+        e.body = body_ref(ed.arg, k);
+        e.M = checked(text_of(option(ed, "M", "M0"), "M", "M0"),
+                      k == "couple" ? SceneContext::Geometry : SceneContext::ParamsOnly, E, "M",
+                      "a couple is in N·m (or lb·ft)");
+        if (k == "friction_couple") positive(e.M, option(ed, "M", "M").pos, "a friction couple", true);
+      } else if (k == "force" || k == "friction") {
+        if (k == "force") only(ed, {"F", "at"});
+        else only(ed, {"mu", "normal", "at", "direction"});
+        if (auto* at = ed.options.get("at")) {
+          e.a.body = body_ref(ed.arg, k);
+          e.a.world_place = true;
+          e.a.text = ed.arg.scalar + " at " + "place";
+          auto [wx, wy] = vec(*at, "at", L, SceneContext::Geometry, "a place is a pair of lengths");
+          e.a.wx = wx;
+          e.a.wy = wy;
+        } else {
+          e.a = point_ref(ed.arg, k);
+          if (e.a.body < 0)
+            throw SceneError(ed.arg.pos, "a " + k + " acts on a body, but '" + ed.arg.scalar + "' is a fixed point",
+                             "name body.point or a body (its mass centre)");
+        }
+        if (k == "force") {
+          auto [fx, fy] = vec(option(ed, "F", "[0, -P]"), "F", F, SceneContext::Geometry, "a force is in N (or lb)");
+          e.Fx = fx;
+          e.Fy = fy;
+        } else {
+          e.mu = checked(text_of(option(ed, "mu", "mu_k"), "mu", "mu_k"), SceneContext::ParamsOnly,
+                         Dimension{}, "mu", "a friction coefficient is a pure number");
+          positive(e.mu, option(ed, "mu", "mu").pos, "the friction coefficient", true);
+          e.normal = checked(text_of(option(ed, "normal", "m*g"), "normal", "m*g"),
+                             SceneContext::ParamsOnly, F, "normal", "a normal force is in N (or lb)");
+          positive(e.normal, option(ed, "normal", "N").pos, "the normal force", true);
+          if (auto* d = ed.options.get("direction")) {
+            if (!d->is_scalar() || (d->scalar != "positive" && d->scalar != "negative"))
+              throw SceneError(d->pos, "'direction' must be positive or negative",
+                               "write 'direction: positive' (the coordinate increases while sliding)");
+            e.direction = d->scalar == "positive" ? 1 : -1;
+          }
+        }
+      } else if (k == "power") {
+        only(ed, {"P"});
+        e.body = body_ref(ed.arg, k);
+        e.P = checked(text_of(option(ed, "P", "P0"), "P", "P0"), SceneContext::ParamsOnly, E / T, "P",
+                      "a power is in W (or hp)");
+      } else if (k == "pin") {
+        only(ed, {});
+        if (!ed.arg.is_list() || ed.arg.items.size() != 2)
+          throw SceneError(ed.arg.pos, "a pin joins two points", "write 'pin: [O, bar.O]'");
+        e.a = point_ref(ed.arg.items[0], "pin");
+        e.b = point_ref(ed.arg.items[1], "pin");
+        check_pin(e, ed.arg.pos);
+      }
+      if (m_.effect_index(e.name) >= 0)
+        throw SceneError(ed.pos, "effect '" + e.name + "' is defined twice", "rename one");
+      m_.effects.push_back(e);
+    }
+  }
+
+  // A pin declares that two points coincide for every value of the coordinates.
+  void check_pin(const Effect& e, const SourcePos& pos) {
+    auto [xa, ya] = m_.position(e.a);
+    auto [xb, yb] = m_.position(e.b);
+    ex dx = trig_simplify(xa - xb), dy = trig_simplify(ya - yb);
+    if (dx.is_zero() && dy.is_zero()) return;
+    exmap vals = m_.parameter_values();
+    std::mt19937 rng(12345);
+    std::uniform_real_distribution<double> u(-3, 3);
+    for (int trial = 0; trial < 5; ++trial) {
+      exmap m = vals;
+      for (auto& c : m_.coords) m[c.q] = numeric(u(rng));
+      m[m_.t] = numeric(u(rng) + 3);
+      ex gx = dx.subs(m).evalf(), gy = dy.subs(m).evalf();
+      if (!is_a<numeric>(gx) || !is_a<numeric>(gy)) return;  // symbolic parameters: trust it
+      double d = std::hypot(ex_to<numeric>(gx).to_double(), ex_to<numeric>(gy).to_double());
+      if (d > 1e-9)
+        throw SceneError(pos, "pin '" + e.name + "': " + e.a.text + " and " + e.b.text +
+                                  " do not coincide (apart by " + std::to_string(d) + " m at some position)",
+                         "fix the body's position/angle or the point so the pinned points stay together");
+    }
+  }
+
+  void states() {
+    for (auto& sd : d_.states) {
+      State s;
+      s.name = sd.name;
+      s.pos = sd.pos;
+      for (auto& c : m_.coords) {
+        realsymbol q(c.name + "@" + sd.name), qd(c.name + "_dot@" + sd.name);
+        m_.add_symbol(q, c.dim);
+        m_.add_symbol(qd, c.dim / Dimension::time());
+        s.sym.emplace(c.name, std::make_pair(q, qd));
+      }
+      s.t = realsymbol("t@" + sd.name);
+      m_.add_symbol(s.t, Dimension::time());
+      if (m_.state_index(sd.name) >= 0)
+        throw SceneError(sd.pos, "state '" + sd.name + "' is defined twice", "rename one");
+      m_.states.push_back(s);
+    }
+    for (std::size_t si = 0; si < d_.states.size(); ++si) {
+      auto& sd = d_.states[si];
+      State& s = m_.states[si];
+      for (auto& [key, val] : sd.values) {
+        ex sym;
+        Dimension want;
+        for (auto& c : m_.coords) {
+          if (key == c.name) { sym = s.sym.at(c.name).first; want = c.dim; }
+          if (key == c.name + "_dot") { sym = s.sym.at(c.name).second; want = c.dim / Dimension::time(); }
+        }
+        if (key == "t") { sym = s.t; want = Dimension::time(); }
+        if (sym.is_zero()) {
+          std::vector<std::string> names = {"t", "where"};
+          for (auto& c : m_.coords) { names.push_back(c.name); names.push_back(c.name + "_dot"); }
+          std::string near = scene::closest(key, names);
+          throw SceneError(sd.key_pos(key), "state '" + sd.name + "' gives '" + key + "', which is not a coordinate, rate or t",
+                           near.empty() ? "give coordinates (theta), rates (theta_dot), t or where" : "did you mean '" + near + "'?");
+        }
+        ex v;
+        // "NUMBER UNIT" is a quantity; anything else an expression of parameters
+        bool done = false;
+        try {
+          units::Quantity q = units::parse_quantity(val.s);
+          if (q.has_number && !q.unit.text.empty()) {
+            v = q.si;
+            if (q.unit.dim != want)
+              throw SceneError(val.pos, "'" + key + "' is given in " + q.unit.text + " (" + q.unit.dim.str() +
+                                            ") but must be " + (want.dimensionless() ? "an angle or pure number" : want.str()),
+                               "give it in a unit of " + units::si_name(want));
+            done = true;
+          }
+        } catch (const InputError&) {
+        }
+        if (!done) v = checked(val, SceneContext::ParamsOnly, want, key, "give it in " + units::si_name(want) +
+                                                                         " (a parameter with that unit, or NUMBER UNIT)");
+        s.given[sym] = v;
+      }
+      for (auto& w : sd.where) {
+        SceneContext ctx(m_, SceneContext::Quantities, false);
+        ex e;
+        try {
+          e = expr::parse_equation(w.s, ctx);
+        } catch (const InputError& err) {
+          rethrow_at(w.pos, err);
+        }
+        dim(e, w.pos, "where");
+        s.where.push_back({m_.bind(e, static_cast<int>(si)), w.pos});
+      }
+    }
+  }
+
+  int state_ref(const Node& opts, const std::string& key, const SourcePos& pos, const std::string& kind) {
+    const Node* n = opts.get(key);
+    if (!n)
+      throw SceneError(pos, kind + " analysis has no '" + key + "'", "write '" + kind + ": {from: 1, to: 2}'");
+    if (!n->is_scalar()) throw SceneError(n->pos, "'" + key + "' must name a state", "write '" + key + ": 1'");
+    int i = m_.state_index(n->scalar);
+    if (i < 0) {
+      std::vector<std::string> names;
+      for (auto& st : m_.states) names.push_back(st.name);
+      std::string near = scene::closest(n->scalar, names);
+      throw SceneError(n->pos, "no state named '" + n->scalar + "'",
+                       near.empty() ? "define it under 'states'" : "did you mean '" + near + "'?");
+    }
+    return i;
+  }
+
+  void analyses() {
+    static const std::vector<std::string> kinds = {"energy"};
+    for (auto& ad : d_.analyses) {
+      if (std::find(kinds.begin(), kinds.end(), ad.kind) == kinds.end()) {
+        std::string near = scene::closest(ad.kind, kinds);
+        throw SceneError(ad.pos, "unknown analysis '" + ad.kind + "'",
+                         near.empty() ? "use: energy" : "did you mean '" + near + "'?");
+      }
+      if (!ad.options.is_map())
+        throw SceneError(ad.pos, "'" + ad.kind + "' needs its states", "write '" + ad.kind + ": {from: 1, to: 2}'");
+      for (auto& [k, v] : ad.options.entries)
+        if (k.scalar != "from" && k.scalar != "to")
+          throw SceneError(k.pos, "unknown key '" + k.scalar + "' in " + ad.kind + " analysis", "use 'from' and 'to'");
+      Analysis a;
+      a.kind = ad.kind;
+      a.pos = ad.pos;
+      a.from = state_ref(ad.options, "from", ad.pos, ad.kind);
+      a.to = state_ref(ad.options, "to", ad.pos, ad.kind);
+      if (a.from == a.to)
+        throw SceneError(ad.options.get("to")->pos, "'from' and 'to' are the same state", "name two different states");
+      m_.analyses.push_back(a);
+    }
+  }
+
+  bool has_generic(const ex& e) {
+    for (auto& c : m_.coords)
+      if (e.has(c.q) || e.has(c.qd)) return true;
+    return e.has(m_.t);
+  }
+
+  ex bound_expr(const Text& t, const std::string& key) {
+    ex e = m_.parse(t.s, t.pos, true);
+    if (has_generic(e))
+      throw SceneError(t.pos, "'" + key + "' depends on the motion but names no state",
+                       "bind it to a state with @, e.g. theta_dot@2 or (T + V)@1");
+    return e;
+  }
+
+  RootSpec root_spec(const Node& n) {
+    RootSpec r;
+    if (n.is_scalar() && n.scalar == "positive") r.kind = RootSpec::Kind::Positive;
+    else if (n.is_scalar() && n.scalar == "negative") r.kind = RootSpec::Kind::Negative;
+    else if (n.is_map() && n.get("in") && n.entries.size() == 1 && n.get("in")->is_list() &&
+             n.get("in")->items.size() == 2) {
+      r.kind = RootSpec::Kind::Interval;
+      auto& it = n.get("in")->items;
+      auto bound = [&](const Node& b) {
+        if (!b.is_scalar()) throw SceneError(b.pos, "a root bound must be a value", "write e.g. {in: [0, 2 m]}");
+        try {
+          units::Quantity q = units::parse_quantity(b.scalar);
+          if (q.has_number) return ex(q.si);
+        } catch (const InputError&) {
+        }
+        return parse(Text{b.scalar, b.pos}, SceneContext::ParamsOnly);
+      };
+      r.lo = bound(it[0]);
+      r.hi = bound(it[1]);
+    } else {
+      throw SceneError(n.pos, "'root' must be positive, negative or {in: [lo, hi]}",
+                       "write 'root: positive'");
+    }
+    return r;
+  }
+
+  void finds() {
+    for (auto& fd : d_.finds) {
+      Find f;
+      f.name = fd.name;
+      f.pos = fd.pos;
+      f.value = bound_expr(fd.value, fd.name);
+      f.dim = dim(f.value, fd.value.pos, fd.name);
+      if (fd.root) f.root = root_spec(*fd.root);
+      if (fd.unit) {
+        units::Unit u;
+        try {
+          u = units::parse_unit(fd.unit->s);
+        } catch (const InputError& e) {
+          rethrow_at(fd.unit->pos, e);
+        }
+        if (u.dim != f.dim)
+          throw SceneError(fd.unit->pos, "find '" + fd.name + "' has dimension " + f.dim.str() +
+                                             " but its unit '" + fd.unit->s + "' is " + u.dim.str(),
+                           "use a unit of " + units::si_name(f.dim));
+        f.unit = u;
+      }
+      m_.finds.push_back(f);
+    }
+  }
+
+  void expects() {
+    for (auto& xd : d_.expects) {
+      auto it = std::find_if(m_.finds.begin(), m_.finds.end(), [&](const Find& f) { return f.name == xd.name; });
+      if (it == m_.finds.end()) {
+        std::vector<std::string> names;
+        for (auto& f : m_.finds) names.push_back(f.name);
+        std::string near = scene::closest(xd.name, names);
+        throw SceneError(xd.pos, "expect '" + xd.name + "' names no result under find",
+                         near.empty() ? "add '" + xd.name + "' under find" : "did you mean '" + near + "'?");
+      }
+      Expect x;
+      x.name = xd.name;
+      x.pos = xd.pos;
+      if (xd.form) {
+        x.form = bound_expr(*xd.form, "form");
+        x.form_pos = xd.form->pos;
+        Dimension d = dim(*x.form, xd.form->pos, "form");
+        if (d != it->dim && !x.form->is_zero())
+          throw SceneError(xd.form->pos, "the claimed form has dimension " + d.str() + " but '" + xd.name +
+                                             "' has " + it->dim.str(),
+                           "check the claimed formula");
+      }
+      if (xd.value) {
+        units::Quantity q;
+        try {
+          q = units::parse_quantity(xd.value->s);
+        } catch (const InputError& e) {
+          rethrow_at(xd.value->pos, e);
+        }
+        if (!q.has_number)
+          throw SceneError(xd.value->pos, "the claimed value has no number", "write e.g. 'value: 3.50 rad/s'");
+        if (q.unit.dim != it->dim)
+          throw SceneError(xd.value->pos, "the claimed value is in " + (q.unit.text.empty() ? std::string("no unit") : q.unit.text) +
+                                              " (" + q.unit.dim.str() + ") but '" + xd.name + "' has " + it->dim.str(),
+                           "give the value in a unit of " + units::si_name(it->dim));
+        x.value = q;
+        x.value_pos = xd.value->pos;
+      }
+      m_.expects.push_back(x);
+    }
+  }
+};
+
+Model Model::build(const scene::SceneDef& def) { return Builder(def).run(); }
+
+}  // namespace kinergy::model

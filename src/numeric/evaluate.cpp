@@ -1,0 +1,93 @@
+#include "kinergy/numeric/evaluate.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <cln/cln.h>
+
+namespace kinergy::numerics {
+
+using namespace GiNaC;
+
+std::optional<GiNaC::numeric> evaluate(const ex& e, const exmap& values, int digits) {
+  long saved = Digits;
+  Digits = digits;
+  std::optional<GiNaC::numeric> out;
+  try {
+    ex v = e.subs(values).evalf();
+    if (is_a<GiNaC::numeric>(v) && ex_to<GiNaC::numeric>(v).is_real()) out = ex_to<GiNaC::numeric>(v);
+  } catch (const std::exception&) {
+    out.reset();  // division by zero, domain errors: no number
+  }
+  Digits = saved;
+  return out;
+}
+
+namespace {
+
+// Decimal digits and exponent of v: v = ±0.d1d2d3… × 10^exp10.
+struct Decimal {
+  bool neg = false;
+  std::string digits;
+  long exp10 = 0;
+};
+
+Decimal decompose(const GiNaC::numeric& v, int n) {
+  Decimal d;
+  d.neg = v.is_negative();
+  cln::cl_R a = cln::abs(cln::the<cln::cl_R>(v.to_cl_N()));
+  if (cln::zerop(a)) {
+    d.digits = "0";
+    return d;
+  }
+  // a = 0.d1…dn × 10^e:  r = round(a / 10^(e − n)) must have exactly n digits
+  long saved = Digits;
+  Digits = 30;
+  GiNaC::numeric l = GiNaC::log(GiNaC::ex_to<GiNaC::numeric>(GiNaC::numeric(a).evalf())) / GiNaC::log(GiNaC::ex_to<GiNaC::numeric>(GiNaC::numeric(10).evalf()));
+  Digits = saved;
+  long e = static_cast<long>(std::floor(l.to_double())) + 1;
+  const cln::cl_I lo = cln::expt_pos(cln::cl_I(10), n - 1), hi = cln::expt_pos(cln::cl_I(10), n);
+  cln::cl_I r;
+  for (int guard = 0; guard < 8; ++guard) {
+    cln::cl_R scaled = a / cln::expt(cln::cl_RA(10), cln::cl_I(e - n));
+    r = cln::floor1(scaled + cln::cl_RA(1) / 2);
+    if (r >= hi) ++e;
+    else if (r < lo) --e;
+    else break;
+  }
+  if (r >= hi) r = cln::floor1(r, 10);  // rounding carried into a new digit (9.99… → 10.0…)
+  std::ostringstream os;
+  cln::fprintdecimal(os, r);
+  d.digits = os.str();
+  d.exp10 = e;
+  return d;
+}
+
+}  // namespace
+
+GiNaC::numeric round_sig(const GiNaC::numeric& v, int n) {
+  Decimal d = decompose(v, n);
+  if (d.digits == "0") return 0;
+  GiNaC::numeric r(d.digits.c_str());
+  r = r * GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(d.exp10 - n));
+  return d.neg ? -r : r;
+}
+
+std::string format(const GiNaC::numeric& v, int n) {
+  Decimal d = decompose(v, n);
+  if (d.digits == "0") return "0";
+  std::string s = d.digits;
+  while (s.size() > 1 && s.back() == '0') s.pop_back();  // trailing zeros carry no information here
+  long e = d.exp10;  // value = 0.s × 10^e
+  std::string out;
+  if (e > -5 && e <= 16) {
+    if (e <= 0) out = "0." + std::string(static_cast<std::size_t>(-e), '0') + s;
+    else if (static_cast<long>(s.size()) <= e) out = s + std::string(static_cast<std::size_t>(e) - s.size(), '0');
+    else out = s.substr(0, static_cast<std::size_t>(e)) + "." + s.substr(static_cast<std::size_t>(e));
+  } else {
+    out = s.substr(0, 1) + (s.size() > 1 ? "." + s.substr(1) : "") + "e" + std::to_string(e - 1);
+  }
+  return (d.neg ? "-" : "") + out;
+}
+
+}  // namespace kinergy::numerics

@@ -1,0 +1,81 @@
+#include "kinergy/common/error.hpp"
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/principles/principles.hpp"
+
+namespace kinergy::principles {
+
+using namespace GiNaC;
+using model::Model;
+
+Knowledge::Knowledge(const Model& m) {
+  exmap env = m.numeric_environment();
+  auto num = [&](const ex& e) -> std::optional<numeric> {
+    ex v = e.subs(known_).subs(env).evalf();
+    if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) return ex_to<numeric>(v);
+    return std::nullopt;
+  };
+  for (auto& s : m.states)
+    for (auto& [sym, val] : s.given)
+      if (auto v = num(val)) known_[sym] = *v;
+  // what constraints give at each state from the given values (one unknown, linear)
+  for (int pass = 0; pass < 4; ++pass)
+    for (std::size_t si = 0; si < m.states.size(); ++si)
+      for (auto& [c, pos] : m.constraints)
+        for (const ex& eq : {m.bind(c, static_cast<int>(si)), m.bind(m.rate(c), static_cast<int>(si))}) {
+          ex r = eq.subs(known_).subs(env);
+          std::vector<ex> unknown;
+          for (auto& [name, qs] : m.states[si].sym) {
+            if (r.has(qs.first)) unknown.push_back(qs.first);
+            if (r.has(qs.second)) unknown.push_back(qs.second);
+          }
+          if (unknown.size() != 1) continue;
+          ex a = r.diff(ex_to<symbol>(unknown[0]));
+          if (a.has(unknown[0]) || a.is_zero()) continue;
+          if (auto v = num(-r.subs(unknown[0] == 0) / a)) known_[unknown[0]] = *v;
+        }
+}
+
+std::optional<numeric> Knowledge::value(const ex& e) const {
+  ex v = e.subs(known_).evalf();
+  if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) return ex_to<numeric>(v);
+  return std::nullopt;
+}
+
+EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& k) {
+  EnergyBalance b;
+  ex T = m.kinetic_energy(), V = m.potential_energy();
+  b.at_from = {m.bind(T, a.from), m.bind(V, a.from)};
+  b.at_to = {m.bind(T, a.to), m.bind(V, a.to)};
+  ex U = 0;
+  for (auto& e : m.effects) {
+    if (m.conservative(e)) continue;
+    Work w = work(m, e, a.from, a.to, k);
+    if (w.U.is_zero()) continue;
+    U += w.U;
+    b.works.push_back(w);
+  }
+  b.conservative = b.works.empty();
+  // T₁ + V₁ + U₁→₂ = T₂ + V₂
+  const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;
+  b.equation.lhs = b.at_from.T + b.at_from.V + U;
+  b.equation.rhs = b.at_to.T + b.at_to.V;
+  b.equation.principle = b.conservative ? "conservation of energy" : "work-energy";
+  b.equation.label = b.equation.principle + ", states " + S1 + " -> " + S2;
+  b.equation.pos = a.pos;
+  return b;
+}
+
+std::vector<Equation> state_equations(const Model& m, int s) {
+  std::vector<Equation> out;
+  const std::string S = m.states[s].name;
+  for (auto& [c, pos] : m.constraints) {
+    out.push_back({m.bind(c, s), 0, "constraint", "constraint at state " + S, pos});
+    // the constraint holds at every instant, so its rate vanishes: Σ ∂c/∂q q̇ = 0
+    ex r = model::trig_simplify(m.rate(c));
+    if (!r.is_zero()) out.push_back({m.bind(r, s), 0, "constraint", "constraint rate at state " + S, pos});
+  }
+  for (auto& [w, pos] : m.states[s].where) out.push_back({w, 0, "condition", "condition at state " + S, pos});
+  return out;
+}
+
+}  // namespace kinergy::principles

@@ -1,0 +1,263 @@
+#include <random>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/principles/principles.hpp"
+
+namespace kinergy::principles {
+
+using namespace GiNaC;
+using model::Effect;
+using model::Model;
+
+// ---------------------------------------------------------------- antiderivatives
+
+static std::optional<ex> linear_coeff(const ex& arg, const symbol& s) {
+  // arg = a s + b with a free of s
+  ex d = arg.diff(s);
+  if (d.is_zero() || d.has(s)) return std::nullopt;
+  return d;
+}
+
+std::optional<ex> antiderivative(const ex& f, const symbol& s) {
+  if (!f.has(s)) return f * s;  // ∫ c ds = c s
+  if (is_a<add>(f)) {
+    ex r = 0;
+    for (std::size_t i = 0; i < f.nops(); ++i) {
+      auto a = antiderivative(f.op(i), s);
+      if (!a) return std::nullopt;
+      r += *a;
+    }
+    return r;
+  }
+  if (is_a<mul>(f)) {
+    ex c = 1, g = 1;
+    int dependent = 0;
+    for (std::size_t i = 0; i < f.nops(); ++i) {
+      if (f.op(i).has(s)) {
+        g *= f.op(i);
+        ++dependent;
+      } else {
+        c *= f.op(i);
+      }
+    }
+    if (dependent == 1) {
+      auto a = antiderivative(g, s);
+      if (a) return c * *a;
+      return std::nullopt;
+    }
+    // a product of several factors in s: try its expansion (polynomials, sums)
+    ex x = f.expand();
+    if (!x.is_equal(f) && is_a<add>(x)) return antiderivative(x, s);
+    return std::nullopt;
+  }
+  if (is_a<power>(f)) {
+    const ex& b = f.op(0);
+    const ex& n = f.op(1);
+    if (n.has(s)) return std::nullopt;
+    auto a = linear_coeff(b, s);
+    if (a) {
+      // ∫ (a s + b)^n ds = (a s + b)^(n+1) / ((n+1) a);  n = −1: log(a s + b)/a
+      if (n.is_equal(-1)) return log(b) / *a;
+      return pow(b, n + 1) / ((n + 1) * *a);
+    }
+    if (is_a<numeric>(n) && ex_to<numeric>(n).is_pos_integer()) {
+      ex x = f.expand();
+      if (!x.is_equal(f)) return antiderivative(x, s);
+    }
+    return std::nullopt;
+  }
+  if (is_a<function>(f) && f.nops() == 1) {
+    auto a = linear_coeff(f.op(0), s);
+    if (!a) return std::nullopt;
+    const ex& u = f.op(0);
+    // ∫ sin(a s + b) ds = −cos(a s + b)/a,  ∫ cos = sin/a,  ∫ exp = exp/a, ∫ sinh = cosh/a, ∫ cosh = sinh/a
+    if (is_ex_the_function(f, sin)) return -cos(u) / *a;
+    if (is_ex_the_function(f, cos)) return sin(u) / *a;
+    if (is_ex_the_function(f, exp)) return exp(u) / *a;
+    if (is_ex_the_function(f, sinh)) return cosh(u) / *a;
+    if (is_ex_the_function(f, cosh)) return sinh(u) / *a;
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+// ---------------------------------------------------------------- paths
+
+namespace {
+
+/// One degree of freedom: the free coordinate s and the others as functions of it, from
+/// constraints linear in a coordinate (later-declared coordinates are eliminated first).
+struct Path {
+  std::size_t s = 0;
+  exmap q_of_s;
+};
+
+std::optional<Path> one_dof_path(const Model& m) {
+  std::size_t n = m.coords.size();
+  if (n == 0 || n - std::min(n, m.constraints.size()) != 1 || m.constraints.size() >= n)
+    return std::nullopt;
+  exmap sub;
+  std::vector<bool> gone(n, false);
+  for (auto& [c, pos] : m.constraints) {
+    ex r = c.subs(sub);
+    bool done = false;
+    for (std::size_t j = n; j-- > 0 && !done;) {
+      if (gone[j]) continue;
+      const symbol& q = m.coords[j].q;
+      ex a = r.diff(q);
+      if (a.is_zero() || a.has(q)) continue;
+      bool free = true;
+      for (auto& co : m.coords) free = free && !a.has(co.q);
+      if (!free) continue;
+      ex val = (-r.subs(q == 0) / a).expand();
+      for (auto& [k, v] : sub) v = v.subs(q == val);
+      sub[q] = val;
+      gone[j] = true;
+      done = true;
+    }
+    if (!done) return std::nullopt;
+  }
+  Path p;
+  for (std::size_t j = 0; j < n; ++j)
+    if (!gone[j]) p.s = j;
+  p.q_of_s = sub;
+  return p;
+}
+
+/// Φ with dΦ = Σ Q_i dq_i when that form is exact (checked), else nothing.
+std::optional<ex> potential(const Model& m, const std::vector<ex>& Q) {
+  std::size_t n = Q.size();
+  exmap env = m.numeric_environment();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      // exact ⇔ ∂Q_i/∂q_j = ∂Q_j/∂q_i
+      ex d = model::trig_simplify(Q[i].diff(m.coords[j].q) - Q[j].diff(m.coords[i].q));
+      if (d.is_zero()) continue;
+      for (int k = 0; k < 3; ++k) {
+        exmap at = env;
+        for (auto& c : m.coords) at[c.q] = numeric(u(rng));
+        ex v = d.subs(at).evalf();
+        if (!is_a<numeric>(v) || std::abs(ex_to<numeric>(v).to_double()) > 1e-12) return std::nullopt;
+      }
+    }
+  ex phi = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    ex r = model::trig_simplify(Q[i] - phi.diff(m.coords[i].q));
+    auto a = antiderivative(r, m.coords[i].q);
+    if (!a) return std::nullopt;
+    phi += *a;
+  }
+  return phi;
+}
+
+int motion_sign(const Model& m, const Effect& e, const Path& p, int s1, int s2, const Knowledge& k) {
+  if (e.direction) return *e.direction;
+  const auto& c = m.coords[p.s];
+  ex q1 = m.states[s1].sym.at(c.name).first, q2 = m.states[s2].sym.at(c.name).first;
+  ex v1 = m.states[s1].sym.at(c.name).second, v2 = m.states[s2].sym.at(c.name).second;
+  for (const ex& probe : {ex(q2 - q1), v1, v2}) {
+    auto v = k.value(probe);
+    if (v && !v->is_zero()) return v->is_positive() ? 1 : -1;
+  }
+  throw SceneError(e.pos, "effect '" + e.name + "': the direction of the motion from state '" + m.states[s1].name +
+                              "' to '" + m.states[s2].name + "' is not known, so the sign of the friction work is not",
+                   "give '" + c.name + "' at both states, a nonzero '" + c.name + "_dot', or 'direction: positive|negative' (of " +
+                       c.name + ")");
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- work
+
+Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) {
+  Work w;
+  w.effect = e.name;
+  const std::string S1 = m.states[s1].name, S2 = m.states[s2].name;
+  if (e.kind == "power") {
+    // U = P (t₂ − t₁)
+    w.U = e.P * (m.states[s2].t - m.states[s1].t);
+    w.how = "U = P (t2 - t1)";
+    return w;
+  }
+  if (e.kind == "couple" || e.kind == "force") {
+    std::vector<ex> Q;
+    bool timed = false;
+    for (std::size_t i = 0; i < m.coords.size(); ++i) {
+      Q.push_back(m.generalized_force(e, i));
+      timed = timed || Q.back().has(m.t);
+    }
+    if (timed)
+      throw SceneError(e.pos, "effect '" + e.name + "' depends on time t, so its work needs the motion in time",
+                       "use an impulse-momentum analysis, or give the " + e.kind + " as a function of the coordinates");
+    if (auto phi = potential(m, Q)) {
+      // U = Φ(q₂) − Φ(q₁) when Σ Q_i dq_i = dΦ (constant forces and couples, gradient fields)
+      w.U = m.bind(*phi, s2) - m.bind(*phi, s1);
+      w.how = e.kind == "couple" ? "U = integral of M dphi" : "U = integral of F . dr";
+      return w;
+    }
+    auto p = one_dof_path(m);
+    if (!p)
+      throw SceneError(e.pos, "the work of '" + e.name + "' depends on the path, and the scene has more than one degree of freedom",
+                       "add constraints so one coordinate fixes the motion, or make the " + e.kind + " constant");
+    // U = ∫ Σ Q_j(q(s)) ∂q_j/∂s ds along the one-coordinate path
+    const symbol& s = m.coords[p->s].q;
+    ex Qs = 0;
+    for (std::size_t j = 0; j < m.coords.size(); ++j) {
+      ex qj = j == p->s ? ex(s) : m.coords[j].q.subs(p->q_of_s);
+      Qs += Q[j].subs(p->q_of_s) * qj.diff(s);
+    }
+    auto F = antiderivative(model::trig_simplify(Qs), s);
+    if (!F)
+      throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name,
+                       "write the " + e.kind + " in a form with an elementary antiderivative");
+    w.U = m.bind(*F, s2) - m.bind(*F, s1);
+    w.how = "U = integral along " + m.coords[p->s].name;
+    return w;
+  }
+  if (e.kind == "friction" || e.kind == "friction_couple") {
+    auto p = one_dof_path(m);
+    if (!p)
+      throw SceneError(e.pos, "the work of friction '" + e.name + "' depends on the path, and the scene has more than one degree of freedom",
+                       "add constraints so one coordinate fixes the motion");
+    const symbol& s = m.coords[p->s].q;
+    // distance slid ℓ(s) with dℓ/ds = |∂r_P/∂s| (or angle turned, |∂φ/∂s|)
+    ex dl;
+    ex c;
+    if (e.kind == "friction") {
+      ex vx, vy;
+      // ∂r_P/∂s along the path: velocity at q̇_s = 1, others following
+      model::Model const& mm = m;
+      auto [x, y] = mm.velocity(e.a);
+      exmap rates;
+      for (std::size_t j = 0; j < m.coords.size(); ++j) {
+        ex qj = j == p->s ? ex(s) : m.coords[j].q.subs(p->q_of_s);
+        rates[m.coords[j].qd] = qj.diff(s);
+      }
+      vx = x.subs(rates).subs(p->q_of_s);
+      vy = y.subs(rates).subs(p->q_of_s);
+      dl = sqrt(model::trig_simplify(vx * vx + vy * vy));
+      c = e.mu * e.normal;
+    } else {
+      ex phi = m.bodies[e.body].angle.subs(p->q_of_s);
+      dl = sqrt(model::trig_simplify(pow(phi.diff(s), 2)));
+      c = e.M;
+    }
+    auto L = antiderivative(dl, s);
+    if (!L)
+      throw SceneError(e.pos, "the distance slid under '" + e.name + "' has no closed form along " + m.coords[p->s].name,
+                       "describe the sliding point so its path is straight or circular");
+    int sigma = motion_sign(m, e, *p, s1, s2, k);
+    // U = −μN · σ (ℓ(s₂) − ℓ(s₁))   (friction against the motion, monotone between the states)
+    w.U = -c * sigma * (m.bind(*L, s2) - m.bind(*L, s1));
+    w.how = e.kind == "friction" ? "U = -mu N * distance" : "U = -M * angle turned";
+    return w;
+  }
+  w.U = 0;
+  w.how = "no work";
+  return w;
+}
+
+}  // namespace kinergy::principles

@@ -1,0 +1,275 @@
+#include "kinergy/problem.hpp"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+
+namespace kinergy {
+
+using namespace GiNaC;
+using model::Model;
+
+namespace {
+
+std::string str(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
+bool has_float(const ex& e) {
+  if (is_a<numeric>(e)) return !ex_to<numeric>(e).is_rational() && !ex_to<numeric>(e).is_crational();
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_float(e.op(i))) return true;
+  return false;
+}
+
+ex tidy(const ex& e) {
+  ex x = model::trig_simplify(e);
+  if (model::ex_size(x) < 400) {
+    ex n = normal(x);
+    if (model::ex_size(n) <= model::ex_size(x) + 4) x = n;
+  }
+  return x;
+}
+
+struct Selector {
+  const Model& m;
+  const exmap& env;
+
+  std::optional<numeric> find_value(const model::Find& f, const solve::Branch& b) const {
+    const exmap& given = given_all();
+    return numerics::evaluate(f.value.subs(given).subs(b.sol), env, 30);
+  }
+
+  const exmap& given_all() const {
+    static thread_local exmap g;
+    g.clear();
+    for (auto& s : m.states)
+      for (auto& [k, v] : s.given) g[k] = v;
+    return g;
+  }
+
+  bool meets(const model::RootSpec& r, const numeric& v) const {
+    using K = model::RootSpec::Kind;
+    if (r.kind == K::Positive) return v.is_positive();
+    if (r.kind == K::Negative) return v.is_negative();
+    if (r.kind == K::Interval) {
+      auto lo = numerics::evaluate(r.lo, env, 30), hi = numerics::evaluate(r.hi, env, 30);
+      return lo && hi && *lo <= v && v <= *hi;
+    }
+    return true;
+  }
+
+  // continuity: a rate keeps the sign of the motion between the states of each analysis
+  bool continuous(const solve::Branch& b) const {
+    exmap g = given_all();
+    auto val = [&](const ex& s) { return numerics::evaluate(s.subs(g).subs(b.sol), env, 30); };
+    for (auto& a : m.analyses)
+      for (auto& c : m.coords) {
+        auto& [q1, v1] = m.states[a.from].sym.at(c.name);
+        auto& [q2, v2] = m.states[a.to].sym.at(c.name);
+        auto d = val(q2 - q1), r1 = val(v1), r2 = val(v2);
+        auto sgn = [](const std::optional<numeric>& x) {
+          if (!x) return 0;
+          double v = x->to_double();
+          double tol = 1e-20;
+          return v > tol ? 1 : (v < -tol ? -1 : 0);
+        };
+        int sd = sgn(d), s1 = sgn(r1), s2 = sgn(r2);
+        if (sd != 0 && s2 != 0 && sd != s2) return false;
+        if (sd != 0 && s1 != 0 && sd != s1) return false;
+      }
+    return true;
+  }
+
+  solve::Branch pick(const std::vector<solve::Branch>& bs) const {
+    std::vector<solve::Branch> ok;
+    for (auto& b : bs) {
+      bool good = true;
+      for (auto& f : m.finds) {
+        if (f.root.kind == model::RootSpec::Kind::None) continue;
+        auto v = find_value(f, b);
+        if (v && !meets(f.root, *v)) good = false;
+      }
+      if (good) ok.push_back(b);
+    }
+    if (ok.empty()) {
+      for (auto& f : m.finds)
+        if (f.root.kind != model::RootSpec::Kind::None)
+          throw SceneError(f.pos, "no solution has '" + f.name + "' with the root asked for",
+                           "check 'root:' of '" + f.name + "' (the solutions are " + values(bs, f) + ")");
+      throw SceneError(m.finds.empty() ? m.analyses.front().pos : m.finds.front().pos, "no solution meets the root choices",
+                       "check the 'root:' options");
+    }
+    if (ok.size() > 1) {
+      std::vector<solve::Branch> cont;
+      for (auto& b : ok)
+        if (continuous(b)) cont.push_back(b);
+      if (!cont.empty()) ok = cont;
+    }
+    if (ok.size() > 1) {
+      for (auto& f : m.finds) {
+        auto v0 = find_value(f, ok[0]);
+        for (std::size_t i = 1; i < ok.size(); ++i) {
+          auto vi = find_value(f, ok[i]);
+          bool same = v0 && vi && abs(*v0 - *vi) <= abs(*v0) * numeric(1, 1000000000) + numeric(1, 100000000);
+          if (!same)
+            throw SceneError(f.pos, "'" + f.name + "' has more than one solution (" + values(ok, f) + ")",
+                             "choose one with 'root: positive', 'root: negative' or 'root: {in: [lo, hi]}'");
+        }
+      }
+    }
+    return ok.front();
+  }
+
+  std::string values(const std::vector<solve::Branch>& bs, const model::Find& f) const {
+    std::string s;
+    for (auto& b : bs) {
+      auto v = find_value(f, b);
+      s += (s.empty() ? "" : " or ") + (v ? numerics::format(*v, 6) : std::string("?"));
+    }
+    return s;
+  }
+};
+
+}  // namespace
+
+std::optional<numeric> Result::value(const exmap& env, int digits) const {
+  // raise the working precision until the requested digits stop changing
+  ex e = closed / unit_factor;
+  std::optional<numeric> prev;
+  for (int work = digits + 10; work <= 4 * digits + 200; work += digits + 20) {
+    auto v = numerics::evaluate(e, env, work);
+    if (!v) return std::nullopt;
+    if (prev && numerics::round_sig(*prev, digits) == numerics::round_sig(*v, digits)) return v;
+    prev = v;
+  }
+  return prev;
+}
+
+Solution solve_scene(const scene::SceneDef& def) {
+  Solution sol{Model::build(def), {}, {}, {}, {}};
+  Model& m = sol.model;
+  exmap env = m.numeric_environment();
+  principles::Knowledge know(m);
+
+  exmap given;
+  for (auto& s : m.states)
+    for (auto& [k, v] : s.given) given[k] = v;
+
+  std::vector<ex> unknowns;
+  for (auto& s : m.states) {
+    for (auto& c : m.coords)
+      for (const ex& x : {ex(s.sym.at(c.name).first), ex(s.sym.at(c.name).second)})
+        if (!given.count(x)) unknowns.push_back(x);
+    if (!given.count(s.t)) unknowns.push_back(s.t);
+  }
+  for (auto& p : m.params)
+    if (p.unknown) unknowns.push_back(p.sym);
+
+  exmap reference;  // a coordinate's value at another state, for numeric root searches
+  for (auto& a : m.analyses)
+    for (auto& c : m.coords) {
+      ex q1 = m.states[a.from].sym.at(c.name).first, q2 = m.states[a.to].sym.at(c.name).first;
+      if (given.count(q1)) reference[q2] = given[q1];
+    }
+
+  std::set<int> states_in;
+  auto add_state = [&](int s) {
+    if (!states_in.insert(s).second) return;
+    for (auto& e : principles::state_equations(m, s)) sol.equations.push_back(e);
+  };
+  auto check_units = [&](const principles::Equation& e) {
+    try {
+      m.dimension(e.residual());
+    } catch (const model::DimensionError& err) {
+      throw SceneError(e.pos, "inconsistent units in the " + e.label + ": " + err.what(),
+                       "check the units of the parameters in these terms");
+    }
+  };
+  auto run_solver = [&](const std::vector<principles::Equation>& eqs) {
+    solve::Problem p{eqs, unknowns, given, env, reference};
+    try {
+      return solve::solve(p);
+    } catch (const solve::SolveError& e) {
+      SourcePos pos = e.pos().line > 0 ? e.pos() : (m.analyses.empty() ? SourcePos{m.file, 1, 1} : m.analyses.front().pos);
+      throw SceneError(pos, e.what(), e.fix());
+    }
+  };
+
+  for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
+    const auto& a = m.analyses[ai];
+    add_state(a.from);
+    add_state(a.to);
+    if (a.kind == "energy") {
+      sol.balances.push_back(principles::energy(m, a, know));
+      sol.equations.push_back(sol.balances.back().equation);
+    }
+    if (ai + 1 < m.analyses.size()) {
+      // what this analysis determines is known to the next (a direction of motion, say)
+      try {
+        auto bs = run_solver(sol.equations);
+        Selector sel{m, env};
+        solve::Branch b = sel.pick(bs);
+        for (auto& [k, v] : b.sol)
+          if (auto x = numerics::evaluate(v, env, 30)) know.set(k, *x);
+      } catch (const SceneError&) {
+        // decided later, with every equation
+      }
+    }
+  }
+  // states that results name but no analysis uses still obey the constraints
+  for (auto& f : m.finds)
+    for (std::size_t s = 0; s < m.states.size(); ++s)
+      for (auto& [name, qs] : m.states[s].sym)
+        if (f.value.has(qs.first) || f.value.has(qs.second)) add_state(static_cast<int>(s));
+  for (auto& e : sol.equations) check_units(e);
+
+  std::vector<solve::Branch> branches = run_solver(sol.equations);
+  Selector sel{m, env};
+  sol.branch = branches.size() == 1 ? branches.front() : sel.pick(branches);
+
+  for (auto& f : m.finds) {
+    Result r;
+    r.name = f.name;
+    r.pos = f.pos;
+    r.dim = f.dim;
+    ex c = f.value.subs(given).subs(sol.branch.sol);
+    for (auto& u : unknowns)
+      if (c.has(u)) {
+        throw SceneError(f.pos, "'" + f.name + "' is not determined: " + str(u) + " is unknown (the analyses give " +
+                                    std::to_string(sol.equations.size()) + " equations for more unknowns)",
+                         "give " + str(u) + " at its state, or add an analysis or a 'where' condition that fixes it");
+      }
+    // a float in the result comes only from a numeric root: no closed form
+    r.closed_form = !has_float(c);
+    r.closed = tidy(c);
+    if (f.unit) {
+      r.unit = f.unit->text;
+      r.unit_factor = f.unit->factor;
+    } else {
+      r.unit = units::si_name(f.dim);
+    }
+    bool all_values = true;
+    for (auto& p : m.params)
+      if (r.closed.has(p.sym) && !p.value) all_values = false;
+    if (all_values) {
+      auto v = numerics::evaluate(r.closed, env, 30);
+      if (!v)
+        throw SceneError(f.pos, "'" + f.name + "' has no real value (" + str(r.closed) + ")",
+                         "check the states and parameters: this result is undefined or complex for them");
+      r.si = v;
+    }
+    sol.results.push_back(r);
+  }
+  return sol;
+}
+
+Solution solve_file(const std::string& path) { return solve_scene(scene::load_file(path)); }
+
+}  // namespace kinergy

@@ -1,0 +1,316 @@
+#include "kinergy/solve/solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+
+namespace kinergy::solve {
+
+using namespace GiNaC;
+using principles::Equation;
+
+namespace {
+
+std::string str(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
+constexpr int kWork = 40;  // working digits for decisions
+
+std::optional<numeric> num(const ex& e, const exmap& env) { return numerics::evaluate(e, env, kWork); }
+
+/// Tidy a closed form: rational normal form when it is small enough to stay cheap.
+ex tidy(const ex& e) {
+  ex x = model::trig_simplify(e);
+  if (model::ex_size(x) < 400) {
+    ex n = normal(x);
+    if (model::ex_size(n) <= model::ex_size(x) + 4) x = n;
+  }
+  return x;
+}
+
+/// Zero to working precision (relative to the size of its terms)?
+bool numerically_zero(const ex& e, const exmap& env, bool& known) {
+  known = false;
+  auto v = num(e, env);
+  if (!v) return false;
+  known = true;
+  double scale = 0;
+  ex x = e.expand();
+  if (is_a<add>(x)) {
+    for (std::size_t i = 0; i < x.nops(); ++i)
+      if (auto t = num(x.op(i), env)) scale = std::max(scale, std::abs(t->to_double()));
+  }
+  scale = std::max(scale, std::abs(v->to_double()));
+  if (scale == 0) return true;
+  return std::abs(v->to_double()) <= 1e-28 * scale;
+}
+
+struct State {
+  Branch b;
+  std::vector<Equation> eqs;
+};
+
+class Solver {
+public:
+  explicit Solver(const Problem& p) : p_(p) {}
+
+  std::vector<Branch> run() {
+    State s;
+    for (auto& e : p_.equations) {
+      Equation q = e;
+      q.lhs = q.lhs.subs(p_.given);
+      q.rhs = q.rhs.subs(p_.given);
+      s.eqs.push_back(q);
+    }
+    work_.push_back(s);
+    std::optional<SolveError> last;
+    while (!work_.empty()) {
+      State st = std::move(work_.back());
+      work_.pop_back();
+      try {
+        step(st);
+      } catch (const SolveError& e) {
+        last = e;
+      }
+      if (done_.size() + work_.size() > 32)
+        throw SolveError("too many solution branches", "add root choices to the results", {});
+    }
+    if (done_.empty()) {
+      if (last) throw *last;
+      throw SolveError("no solution", "check the states and analyses", {});
+    }
+    return done_;
+  }
+
+private:
+  const Problem& p_;
+  std::vector<State> work_;
+  std::vector<Branch> done_;
+
+  std::vector<ex> unknowns_in(const ex& e) const {
+    std::vector<ex> u;
+    for (auto& x : p_.unknowns)
+      if (e.has(x)) u.push_back(x);
+    return u;
+  }
+
+  bool free_of_unknowns(const ex& e) const {
+    for (auto& x : p_.unknowns)
+      if (e.has(x)) return false;
+    return true;
+  }
+
+  void assign(State& st, const ex& u, const ex& value, const std::string& how) {
+    ex v = value;
+    for (auto& [k, val] : st.b.sol) val = val.subs(u == v);
+    st.b.sol[u] = v;
+    for (auto& q : st.eqs) {
+      q.lhs = q.lhs.subs(u == v);
+      q.rhs = q.rhs.subs(u == v);
+    }
+    st.b.steps.push_back(str(u) + " from " + how);
+  }
+
+  // Drop satisfied equations; an equation without unknowns that does not hold kills the branch.
+  void prune(State& st) {
+    std::vector<Equation> keep;
+    for (auto& q : st.eqs) {
+      ex r = q.residual();
+      if (!free_of_unknowns(r)) {
+        keep.push_back(q);
+        continue;
+      }
+      if (model::trig_simplify(r).is_zero()) continue;
+      bool known = false;
+      if (numerically_zero(r, p_.env, known)) continue;
+      if (!known) continue;  // cannot tell (symbolic parameters): trust it
+      auto v = num(r, p_.env);
+      throw SolveError("the equations contradict each other: the " + q.label + " is off by " +
+                           numerics::format(*v, 6) + " (in SI units)",
+                       "check the values given at the states; one of them cannot hold with the others", q.pos);
+    }
+    st.eqs = keep;
+  }
+
+  void step(State st) {
+    for (;;) {
+      prune(st);
+      if (st.eqs.empty()) {
+        done_.push_back(st.b);
+        return;
+      }
+      if (linear_step(st)) continue;
+      single_unknown_step(st);
+      return;  // the branches it made are on the work list
+    }
+  }
+
+  // An equation linear in an unknown u with a coefficient free of unknowns: u = −b/a.
+  bool linear_step(State& st) {
+    int best = -1;
+    ex best_u, best_a, best_b;
+    std::size_t best_n = 0;
+    for (std::size_t i = 0; i < st.eqs.size(); ++i) {
+      ex r = st.eqs[i].residual();
+      auto us = unknowns_in(r);
+      for (auto& u : us) {
+        ex a = r.diff(ex_to<symbol>(u));
+        if (a.has(u) || !free_of_unknowns(a)) continue;
+        bool known = false;
+        if (a.is_zero() || numerically_zero(a, p_.env, known)) continue;
+        if (best < 0 || us.size() < best_n) {
+          best = static_cast<int>(i);
+          best_u = u;
+          best_a = a;
+          best_b = r.subs(u == 0);
+          best_n = us.size();
+        }
+        break;
+      }
+    }
+    if (best < 0) return false;
+    assign(st, best_u, tidy(-best_b / best_a), st.eqs[best].label + " (linear)");
+    return true;
+  }
+
+  void branch(const State& st, const ex& u, const std::vector<ex>& roots, const std::string& how,
+              bool numeric_root = false) {
+    for (auto& r : roots) {
+      State s = st;
+      assign(s, u, r, how);
+      if (numeric_root) s.b.numeric_only.insert(u);
+      work_.push_back(std::move(s));
+    }
+  }
+
+  void single_unknown_step(const State& st) {
+    // the equation with fewest unknowns; prefer one unknown
+    int best = -1;
+    std::size_t best_n = 0;
+    for (std::size_t i = 0; i < st.eqs.size(); ++i) {
+      auto n = unknowns_in(st.eqs[i].residual()).size();
+      if (best < 0 || n < best_n) {
+        best = static_cast<int>(i);
+        best_n = n;
+      }
+    }
+    const Equation& q = st.eqs[best];
+    ex r = q.residual();
+    auto us = unknowns_in(r);
+    if (us.size() != 1) {
+      std::string names;
+      for (auto& u : us) names += (names.empty() ? "" : ", ") + str(u);
+      throw SolveError("cannot solve the " + q.label + ": it is nonlinear in several unknowns (" + names + ")",
+                       "give more values at the states, or add an analysis that fixes one of them", q.pos);
+    }
+    const symbol& u = ex_to<symbol>(us[0]);
+    std::string how = q.label;
+    // quadratic: a u² + b u + c = 0
+    ex d2 = r.diff(u, 2);
+    if (!d2.has(u) && !d2.is_zero() && r.diff(u, 3).is_zero()) {
+      ex a = d2 / 2, b = r.diff(u).subs(u == 0), c = r.subs(u == 0);
+      bool known = false;
+      if (b.is_zero() || numerically_zero(b, p_.env, known)) {
+        ex sq = tidy(-c / a);  // u = ±√(−c/a)
+        auto v = num(sq, p_.env);
+        if (v && v->is_negative())
+          throw SolveError("the " + q.label + " has no real solution for " + str(u) + ": " + str(u) +
+                               "^2 would be " + numerics::format(*v, 6) + " (negative)",
+                           "the state cannot be reached with these values (the kinetic energy would be negative); check the states and parameters",
+                           q.pos);
+        ex root = sqrt(sq);
+        branch(st, u, {root, -root}, how + " (quadratic)");
+        return;
+      }
+      ex disc = tidy(b * b - 4 * a * c);
+      auto v = num(disc, p_.env);
+      if (v && v->is_negative())
+        throw SolveError("the " + q.label + " has no real solution for " + str(u),
+                         "the state cannot be reached with these values; check the states and parameters", q.pos);
+      branch(st, u, {tidy((-b + sqrt(disc)) / (2 * a)), tidy((-b - sqrt(disc)) / (2 * a))},
+             how + " (quadratic)");
+      return;
+    }
+    // trigonometric: polynomial of degree ≤ 2 in sin(u), cos(u) or tan(u) alone
+    symbol z("z");
+    for (int kind = 0; kind < 3; ++kind) {
+      ex f = kind == 0 ? sin(u) : kind == 1 ? cos(u) : tan(u);
+      ex w = r.subs(f == z);
+      if (w.has(u) || !w.is_polynomial(z) || w.degree(z) < 1 || w.degree(z) > 2) continue;
+      std::vector<ex> zs;
+      if (w.degree(z) == 1) {
+        zs.push_back(tidy(-w.subs(z == 0) / w.diff(z)));
+      } else {
+        ex a = w.diff(z, 2) / 2, b = w.diff(z).subs(z == 0), c = w.subs(z == 0);
+        ex disc = tidy(b * b - 4 * a * c);
+        auto v = num(disc, p_.env);
+        if (v && v->is_negative()) continue;
+        zs = {tidy((-b + sqrt(disc)) / (2 * a)), tidy((-b - sqrt(disc)) / (2 * a))};
+      }
+      std::vector<ex> roots;
+      for (auto& zz : zs) {
+        auto zv = num(zz, p_.env);
+        if (kind < 2 && zv && abs(*zv) > 1) continue;  // |sin|, |cos| ≤ 1
+        if (kind == 0) roots.insert(roots.end(), {asin(zz), Pi - asin(zz)});
+        else if (kind == 1) roots.insert(roots.end(), {acos(zz), -acos(zz)});
+        else roots.insert(roots.end(), {atan(zz), atan(zz) + Pi});
+      }
+      if (roots.empty())
+        throw SolveError("the " + q.label + " has no real solution for " + str(u),
+                         "the position cannot be reached with these values; check the states and parameters", q.pos);
+      branch(st, u, roots, how + " (trigonometric)");
+      return;
+    }
+    numeric_roots(st, q, u);
+  }
+
+  // No closed form: find the sign changes of the residual around a reference and refine.
+  void numeric_roots(const State& st, const Equation& q, const symbol& u) {
+    ex r = q.residual();
+    double ref = 0;
+    if (auto it = p_.reference.find(u); it != p_.reference.end())
+      if (auto v = num(it->second, p_.env)) ref = v->to_double();
+    double span = 10 * (1 + std::abs(ref));
+    const int n = 2000;
+    std::vector<ex> roots;
+    auto f = [&](double x) -> std::optional<double> {
+      auto v = numerics::evaluate(r, [&] { exmap m = p_.env; m[u] = numeric(x); return m; }(), 20);
+      if (!v) return std::nullopt;
+      return v->to_double();
+    };
+    double x0 = ref - span;
+    auto f0 = f(x0);
+    for (int i = 1; i <= n; ++i) {
+      double x1 = ref - span + 2 * span * i / n;
+      auto f1 = f(x1);
+      if (f0 && f1 && ((*f0 <= 0 && *f1 > 0) || (*f0 >= 0 && *f1 < 0))) {
+        ex rr = r.subs(p_.env);
+        long saved = Digits;
+        Digits = kWork;
+        ex root = fsolve(rr, u, numeric(x0), numeric(x1));
+        Digits = saved;
+        roots.push_back(root);
+      }
+      x0 = x1;
+      f0 = f1;
+      if (roots.size() > 8) break;
+    }
+    if (roots.empty())
+      throw SolveError("the " + q.label + " has no closed form for " + str(u) + " and no root was found near " +
+                           numerics::format(numeric(ref), 6),
+                       "give the unknown a range with root: {in: [lo, hi]} on the result", q.pos);
+    branch(st, u, roots, q.label + " (numeric root, no closed form)", true);
+  }
+};
+
+}  // namespace
+
+std::vector<Branch> solve(const Problem& p) { return Solver(p).run(); }
+
+}  // namespace kinergy::solve
