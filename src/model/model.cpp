@@ -164,7 +164,7 @@ ex Model::potential_energy(const Effect& e) const {
     auto [xb, yb] = position(e.b);
     ex d2 = trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2));
     if (e.free.is_zero()) return e.k * d2 / 2;
-    return e.k * pow(sqrt(d2) - e.free, 2) / 2;
+    return e.k * pow(spring_length(d2) - e.free, 2) / 2;
   }
   if (e.kind == "torsion_spring") {
     // V = ½ k (φ − φ₀)²,  φ the body's angle (or relative to a second body)
@@ -172,6 +172,42 @@ ex Model::potential_energy(const Effect& e) const {
     return e.k * pow(phi - e.free, 2) / 2;
   }
   return 0;
+}
+
+ex Model::spring_length(const ex& d2) const {
+  // |r_A − r_B| = √d². When d² is c·p² (a spring along a line), the length is ±√c·p with the
+  // sign p has at the first state that fixes it: a spring does not pass through zero length.
+  bool poly = true;
+  for (auto& c : coords) poly = poly && d2.is_polynomial(c.q);
+  if (poly) {
+    ex f;
+    try {
+      f = factor(d2.expand());
+    } catch (const std::exception&) {
+      return sqrt(d2);
+    }
+    ex c = 1, p;
+    exvector fs;
+    if (is_a<mul>(f))
+      for (std::size_t i = 0; i < f.nops(); ++i) fs.push_back(f.op(i));
+    else
+      fs.push_back(f);
+    for (auto& x : fs) {
+      if (is_a<GiNaC::power>(x) && x.op(1).is_equal(2) && p.is_zero()) p = x.op(0);
+      else c *= x;
+    }
+    bool c_free = true;
+    for (auto& co : coords) c_free = c_free && !c.has(co.q);
+    if (!p.is_zero() && c_free) {
+      exmap env = numeric_environment();
+      for (std::size_t s = 0; s < states.size(); ++s) {
+        ex v = bind(p, static_cast<int>(s)).subs(states[s].given).subs(env).evalf();
+        if (is_a<numeric>(v) && ex_to<numeric>(v).is_real() && !ex_to<numeric>(v).is_zero())
+          return sqrt(c) * (ex_to<numeric>(v).is_positive() ? p : -p);
+      }
+    }
+  }
+  return sqrt(d2);
 }
 
 ex Model::potential_energy() const {

@@ -123,6 +123,8 @@ private:
     for (auto& q : st.eqs) {
       ex r = q.residual();
       if (!free_of_unknowns(r)) {
+        // an equation that reduces to 0 = 0 once the solved unknowns are in says nothing more
+        if (model::ex_size(r) < 300 && normal(r).is_zero()) continue;
         keep.push_back(q);
         continue;
       }
@@ -175,7 +177,9 @@ private:
       }
     }
     if (best < 0) return false;
-    assign(st, best_u, tidy(-best_b / best_a), st.eqs[best].label + " (linear)");
+    std::string how = st.eqs[best].label + " (linear)";
+    st.eqs.erase(st.eqs.begin() + best);  // used up: it holds by construction
+    assign(st, best_u, tidy(-best_b / best_a), how);
     return true;
   }
 
@@ -293,9 +297,15 @@ private:
         ex rr = r.subs(p_.env);
         long saved = Digits;
         Digits = kWork;
-        ex root = fsolve(rr, u, numeric(x0), numeric(x1));
+        try {
+          ex root = fsolve(rr, u, numeric(x0), numeric(x1));
+          // keep it only if the residual really vanishes there (not a pole)
+          bool known = false;
+          if (numerically_zero(r.subs(u == root), p_.env, known) || !known) roots.push_back(root);
+        } catch (const std::exception&) {
+          // a pole, not a root: the residual jumps sign without passing zero
+        }
         Digits = saved;
-        roots.push_back(root);
       }
       x0 = x1;
       f0 = f1;

@@ -141,6 +141,8 @@ public:
   ex potential_energy() const;
   ex potential_energy(const Effect& e) const;  ///< 0 for effects without a potential
   bool conservative(const Effect& e) const;
+  /// Length of a spring from its squared length d² (see the .cpp for the sign rule).
+  ex spring_length(const ex& d2) const;
   /// Generalized force Q_i of effect e along coordinate i (non-conservative part included;
   /// conservative effects give −∂V/∂q_i). Friction needs velocities and is not covered here.
   ex generalized_force(const Effect& e, std::size_t i) const;
