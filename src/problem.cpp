@@ -248,7 +248,7 @@ Solution solve_scene(const scene::SceneDef& def) {
       }
     // a float in the result comes only from a numeric root: no closed form
     r.closed_form = !has_float(c);
-    r.closed = tidy(c);
+    r.closed = model::root_simplify(tidy(c));
     if (f.unit) {
       r.unit = f.unit->text;
       r.unit_factor = f.unit->factor;
@@ -256,8 +256,20 @@ Solution solve_scene(const scene::SceneDef& def) {
       r.unit = units::si_name(f.dim);
     }
     bool all_values = true;
+    const model::Parameter* missing = nullptr;
     for (auto& p : m.params)
-      if (r.closed.has(p.sym) && !p.value) all_values = false;
+      if (r.closed.has(p.sym) && !p.value) {
+        all_values = false;
+        if (!missing) missing = &p;
+      }
+    // a unit on the result, or a claimed number, asks for a number
+    bool number_asked = f.unit.has_value();
+    for (auto& x : m.expects) number_asked = number_asked || (x.name == f.name && x.value);
+    if (!all_values && number_asked)
+      throw SceneError(missing->pos, "parameter '" + missing->name + "' has no value, but a number is asked for '" +
+                                         f.name + "'",
+                       "give it a value with its unit, e.g. '" + missing->name + ": 2 " +
+                           (units::si_name(missing->dim).empty() ? std::string("m") : units::si_name(missing->dim)) + "'");
     if (all_values) {
       auto v = numerics::evaluate(r.closed, env, 30);
       if (!v)

@@ -8,12 +8,6 @@ namespace kinergy::emit {
 
 using namespace GiNaC;
 
-std::string plain(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
-
 static std::string value_text(const Solution& s, const Result& r, int digits) {
   if (!r.si) return "";
   auto v = r.value(s.model.numeric_environment(), digits);

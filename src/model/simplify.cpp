@@ -30,10 +30,89 @@ struct reduce_power : public map_function {
   }
 };
 
+// sin(x + nπ/2) and cos(x + nπ/2) with integer n: quarter-turn shifts, and odd/even symmetry.
+struct unshift : public map_function {
+  ex operator()(const ex& e) override {
+    ex m = e.map(*this);
+    bool is_sin = is_ex_the_function(m, sin), is_cos = is_ex_the_function(m, cos);
+    if (!is_sin && !is_cos) return m;
+    ex arg = m.op(0);
+    // split arg = x + c·π
+    numeric c = 0;
+    ex x = arg;
+    if (is_a<add>(arg)) {
+      x = 0;
+      for (std::size_t i = 0; i < arg.nops(); ++i) {
+        ex t = arg.op(i);
+        ex k = t / Pi;
+        if (is_a<numeric>(k) && ex_to<numeric>(k).is_rational()) c += ex_to<numeric>(k);
+        else x += t;
+      }
+    }
+    numeric n2 = c * 2;
+    if (!n2.is_integer() || c.is_zero()) {
+      // symmetry only: sin(−y) = −sin(y), cos(−y) = cos(y)
+      if (is_a<mul>(arg) && is_a<numeric>(arg.op(arg.nops() - 1)) &&
+          ex_to<numeric>(arg.op(arg.nops() - 1)).is_negative())
+        return is_sin ? -sin(-arg) : cos(-arg);
+      return m;
+    }
+    long n = ((n2.to_long() % 4) + 4) % 4;
+    ex sx = (*this)(sin(x)), cx = (*this)(cos(x));
+    if (is_sin) {
+      ex r[4] = {sx, cx, -sx, -cx};  // sin(x + nπ/2)
+      return r[n];
+    }
+    ex r[4] = {cx, -sx, -cx, sx};  // cos(x + nπ/2)
+    return r[n];
+  }
+};
+
+// √(c·p²·q) → |p|·√(c·q) for p positive (a positive symbol, or a positive number).
+struct unroot : public map_function {
+  ex operator()(const ex& e) override {
+    ex m = e.map(*this);
+    if (!is_a<power>(m) || !is_a<numeric>(m.op(1))) return m;
+    numeric k = ex_to<numeric>(m.op(1));
+    if (k.denom() != 2) return m;
+    ex b = m.op(0);
+    if (ex_size(b) > 300) return m;  // factoring large expressions costs more than it gives
+    ex f;
+    try {
+      f = factor(normal(b));
+    } catch (const std::exception&) {
+      return m;
+    }
+    ex out = 1, in = 1;
+    exvector fs;
+    if (is_a<mul>(f))
+      for (std::size_t i = 0; i < f.nops(); ++i) fs.push_back(f.op(i));
+    else
+      fs.push_back(f);
+    for (auto& x : fs) {
+      if (is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_integer() &&
+          x.op(0).info(info_flags::positive)) {
+        long p = ex_to<numeric>(x.op(1)).to_long();
+        out *= pow(x.op(0), p / 2);
+        in *= pow(x.op(0), p % 2);
+      } else {
+        in *= x;
+      }
+    }
+    if (out.is_equal(1))  // nothing comes out: keep the shorter of the two forms
+      return ex_size(f) < ex_size(b) ? pow(f, k) : m;
+    return pow(out, k * 2) * pow(in, k);
+  }
+};
+
 }  // namespace
 
+ex unshift_trig(const ex& e) { return unshift()(e); }
+
+ex root_simplify(const ex& e) { return unroot()(e); }
+
 ex trig_simplify(const ex& e) {
-  ex x = e.expand();
+  ex x = unshift()(e).expand();
   if (!x.has(sin(wild())) && !x.has(cos(wild()))) return x;
   reduce_power c2s(true), s2c(false);
   ex a = c2s(x).expand();

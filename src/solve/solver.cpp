@@ -221,7 +221,8 @@ private:
       ex a = d2 / 2, b = r.diff(u).subs(u == 0), c = r.subs(u == 0);
       bool known = false;
       if (b.is_zero() || numerically_zero(b, p_.env, known)) {
-        ex sq = tidy(-c / a);  // u = ±√(−c/a)
+        ex sq = tidy(-c) / tidy(a);  // u = ±√(−c/a), numerator and denominator tidied apart
+        if (model::ex_size(sq) < 600) sq = tidy(sq);
         auto v = num(sq, p_.env);
         if (v && v->is_negative())
           throw SolveError("the " + q.label + " has no real solution for " + str(u) + ": " + str(u) +

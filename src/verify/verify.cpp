@@ -47,10 +47,11 @@ Check form_check(const Solution& s, const Result& r, const model::Expect& x) {
   while (points < want && tries < 400) {
     exmap at = env;
     if (tries > 0)
-      for (auto& [k, v] : at) {
+      for (auto& p : m.params) {  // declaration order: the same points on every run
+        if (!at.count(p.sym)) continue;
         // scale each parameter by e^u, |u| ≤ 0.35: same sign, same order of magnitude
         numeric f(static_cast<long>(std::lround(std::exp(u(rng)) * 1000000)), 1000000);  // exact
-        v = v * f;
+        at[p.sym] = at[p.sym] * f;
       }
     ++tries;
     auto d = numerics::evaluate(derived, at, kDigits), cl = numerics::evaluate(claimed, at, kDigits);

@@ -8,6 +8,12 @@ namespace kinergy::model {
 /// and the same with sin and cos swapped; returns the shorter result.
 GiNaC::ex trig_simplify(const GiNaC::ex& e);
 
+/// sin(x + nπ/2) → ±sin x or ±cos x (likewise cos), sin(−x) → −sin x, cos(−x) → cos x.
+GiNaC::ex unshift_trig(const GiNaC::ex& e);
+
+/// Take squares of positive factors out of square roots: √(r²·X) → r·√X.
+GiNaC::ex root_simplify(const GiNaC::ex& e);
+
 /// Collect a quadratic form in `rates` and trig-simplify each coefficient.
 GiNaC::ex collect_simplify(const GiNaC::ex& e, const GiNaC::lst& rates);
 
