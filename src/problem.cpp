@@ -21,6 +21,15 @@ std::string str(const ex& e) {
   return os.str();
 }
 
+/// What GiNaC's complaint about a value means, in words.
+std::string math_fault(const std::exception& err) {
+  std::string w = err.what();
+  if (w.find("division by zero") != std::string::npos) return "a division by zero";
+  if (w.find("log(0)") != std::string::npos) return "log(0)";
+  if (w.find("pole") != std::string::npos) return "a function at a pole, like tan at pi/2";
+  return w;
+}
+
 bool has_float(const ex& e) {
   if (is_a<numeric>(e)) return !ex_to<numeric>(e).is_rational() && !ex_to<numeric>(e).is_crational();
   for (std::size_t i = 0; i < e.nops(); ++i)
@@ -43,7 +52,11 @@ struct Selector {
 
   std::optional<numeric> find_value(const model::Find& f, const solve::Branch& b) const {
     const exmap& given = given_all();
-    return numerics::evaluate(f.value.subs(given).subs(b.sol), env, 30);
+    try {
+      return numerics::evaluate(f.value.subs(given).subs(b.sol), env, 30);
+    } catch (const std::exception&) {
+      return std::nullopt;  // undefined on this branch (a division by zero): no value to compare
+    }
   }
 
   const exmap& given_all() const {
@@ -68,9 +81,16 @@ struct Selector {
   // continuity: a rate keeps the sign of the motion between the states of each analysis
   bool continuous(const solve::Branch& b) const {
     exmap g = given_all();
-    auto val = [&](const ex& s) { return numerics::evaluate(s.subs(g).subs(b.sol), env, 30); };
+    auto val = [&](const ex& s) -> std::optional<numeric> {
+      try {
+        return numerics::evaluate(s.subs(g).subs(b.sol), env, 30);
+      } catch (const std::exception&) {
+        return std::nullopt;
+      }
+    };
     for (auto& a : m.analyses)
       for (auto& c : m.coords) {
+        if (a.kind != "energy") break;  // impulses may reverse a motion; energy alone keeps it going
         auto& [q1, v1] = m.states[a.from].sym.at(c.name);
         auto& [q2, v2] = m.states[a.to].sym.at(c.name);
         auto d = val(q2 - q1), r1 = val(v1), r2 = val(v2);
@@ -153,10 +173,21 @@ std::optional<numeric> Result::value(const exmap& env, int digits) const {
 }
 
 Solution solve_scene(const scene::SceneDef& def) {
-  Solution sol{Model::build(def), {}, {}, {}, {}};
+  Solution sol{Model::build(def), {}, {}, {}, {}, {}, {}};
   Model& m = sol.model;
   exmap env = m.numeric_environment();
-  principles::Knowledge know(m);
+  // the constraints evaluated at the values given may be undefined there (x/tan(theta), theta = pi/2)
+  auto undefined = [&](const SourcePos& pos, const std::string& what, const std::exception& err) {
+    return SceneError(pos, what + " is undefined for the values given at the states (" + math_fault(err) + ")",
+                      "check the values given at the states");
+  };
+  std::optional<principles::Knowledge> known;
+  try {
+    known.emplace(m);
+  } catch (const std::exception& err) {
+    throw undefined(m.constraints.empty() ? SourcePos{m.file, 1, 1} : m.constraints.front().second, "a constraint", err);
+  }
+  principles::Knowledge& know = *known;
 
   exmap given;
   for (auto& s : m.states)
@@ -171,6 +202,10 @@ Solution solve_scene(const scene::SceneDef& def) {
   }
   for (auto& p : m.params)
     if (p.unknown) unknowns.push_back(p.sym);
+  for (auto& a : m.analyses)  // impulses the analyses bring: contacts, pins, constraints
+    for (auto& u : a.unknowns)
+      if (std::find_if(unknowns.begin(), unknowns.end(), [&](const ex& x) { return x.is_equal(u); }) == unknowns.end())
+        unknowns.push_back(u);
 
   exmap reference;  // a coordinate's value at another state, for numeric root searches
   for (auto& a : m.analyses)
@@ -207,8 +242,23 @@ Solution solve_scene(const scene::SceneDef& def) {
     add_state(a.from);
     add_state(a.to);
     if (a.kind == "energy") {
-      sol.balances.push_back(principles::energy(m, a, know));
+      try {
+        sol.balances.push_back(principles::energy(m, a, know));
+      } catch (const SceneError&) {
+        throw;
+      } catch (const std::exception& err) {
+        throw undefined(a.pos, "the energy analysis", err);
+      }
       sol.equations.push_back(sol.balances.back().equation);
+    } else if (a.kind == "momentum" || a.kind == "angular_momentum") {
+      sol.momenta.push_back(a.kind == "momentum" ? principles::linear_momentum(m, a, know)
+                                                 : principles::angular_momentum(m, a, know));
+      for (auto& c : sol.momenta.back().components) sol.equations.push_back(c.equation);
+    } else if (a.kind == "impact") {
+      sol.impacts.push_back(principles::impact(m, a, know));
+      const auto& ib = sol.impacts.back();
+      for (auto* group : {&ib.positions, &ib.momentum, &ib.restitution})
+        for (auto& e : *group) sol.equations.push_back(e);
     }
     if (ai + 1 < m.analyses.size()) {
       // what this analysis determines is known to the next (a direction of motion, say)
@@ -234,16 +284,35 @@ Solution solve_scene(const scene::SceneDef& def) {
   Selector sel{m, env};
   sol.branch = branches.size() == 1 ? branches.front() : sel.pick(branches);
 
+  // a contact can only push: J ≥ 0 along its normal
+  for (auto& a : m.analyses)
+    for (int ci : a.contacts) {
+      const auto& e = m.effects[ci];
+      ex J = a.contact_impulses.at(e.name).first.subs(given).subs(sol.branch.sol);
+      auto v = numerics::evaluate(J, env, 30);
+      if (v && v->is_negative())
+        throw SceneError(e.pos, "contact '" + e.name + "' would have to pull (impulse " + numerics::format(*v, 6) +
+                                    " N*s along its normal) in the impact " + m.states[a.from].name + " -> " + m.states[a.to].name,
+                         "check the normal: it points from the first party (" + e.a.text + ") into the second (" + e.b.text + ")");
+    }
+
   for (auto& f : m.finds) {
     Result r;
     r.name = f.name;
     r.pos = f.pos;
     r.dim = f.dim;
-    ex c = f.value.subs(given).subs(sol.branch.sol);
+    ex c;
+    try {
+      c = f.value.subs(given).subs(sol.branch.sol);
+    } catch (const std::exception& err) {
+      throw SceneError(f.pos, "'" + f.name + "' is undefined at the states (" + math_fault(err) + ")",
+                       "check the value of '" + f.name + "' and the values given at its states");
+    }
     for (auto& u : unknowns)
       if (c.has(u)) {
+        std::size_t n = sol.equations.size();
         throw SceneError(f.pos, "'" + f.name + "' is not determined: " + str(u) + " is unknown (the analyses give " +
-                                    std::to_string(sol.equations.size()) + " equations for more unknowns)",
+                                    std::to_string(n) + (n == 1 ? " equation" : " equations") + " for more unknowns)",
                          "give " + str(u) + " at its state, or add an analysis or a 'where' condition that fixes it");
       }
     // a float in the result comes only from a numeric root: no closed form
@@ -268,8 +337,8 @@ Solution solve_scene(const scene::SceneDef& def) {
     if (!all_values && number_asked)
       throw SceneError(missing->pos, "parameter '" + missing->name + "' has no value, but a number is asked for '" +
                                          f.name + "'",
-                       "give it a value with its unit, e.g. '" + missing->name + ": 2 " +
-                           (units::si_name(missing->dim).empty() ? std::string("m") : units::si_name(missing->dim)) + "'");
+                       "give it a value with its unit, e.g. '" + missing->name + ": " +
+                           (units::si_name(missing->dim).empty() ? std::string("30 deg") : "2 " + units::si_name(missing->dim)) + "'");
     if (all_values) {
       auto v = numerics::evaluate(r.closed, env, 30);
       if (!v)

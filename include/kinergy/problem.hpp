@@ -7,6 +7,7 @@
 #include <ginac/ginac.h>
 
 #include "kinergy/model/model.hpp"
+#include "kinergy/principles/momentum.hpp"
 #include "kinergy/principles/principles.hpp"
 #include "kinergy/scene/scene.hpp"
 #include "kinergy/solve/solver.hpp"
@@ -30,7 +31,9 @@ struct Result {
 
 struct Solution {
   model::Model model;
-  std::vector<principles::EnergyBalance> balances;
+  std::vector<principles::EnergyBalance> balances;     ///< energy analyses, in order
+  std::vector<principles::MomentumBalance> momenta;    ///< momentum and angular momentum analyses
+  std::vector<principles::ImpactBalance> impacts;      ///< impact analyses
   std::vector<principles::Equation> equations;  ///< every equation solved, in order
   solve::Branch branch;                         ///< the chosen solution
   std::vector<Result> results;

@@ -1,7 +1,9 @@
 #include "kinergy/expr/parser.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <set>
+#include <sstream>
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/units/units.hpp"
@@ -19,10 +21,60 @@ bool is_math_function(const std::string& n) {
 
 namespace {
 
+// Nesting deeper than this is no formula a person wrote; refusing it keeps the recursive
+// descent from running out of stack.
+constexpr int kMaxDepth = 200;
+// A number raised to a power is computed exactly; refuse results beyond this many bits.
+constexpr double kMaxBits = 1 << 20;
+
 struct Parser {
   const std::string& s;
   Context& ctx;
   std::size_t i = 0;
+  int depth = 0;
+
+  struct Deeper {
+    Parser& p;
+    explicit Deeper(Parser& q, std::size_t at) : p(q) {
+      if (++p.depth > kMaxDepth) p.fail("the expression is nested too deeply", "simplify the expression", at);
+    }
+    ~Deeper() { --p.depth; }
+  };
+
+  // b^x, refusing exact numbers too large to compute (10^10^10)
+  ex raise(const ex& b, const ex& x, std::size_t at) const {
+    using GiNaC::numeric;
+    if (GiNaC::is_a<numeric>(b) && GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_integer()) {
+      const numeric& nb = GiNaC::ex_to<numeric>(b);
+      const numeric& nx = GiNaC::ex_to<numeric>(x);
+      if (nb.is_rational() && !nb.is_zero() && abs(nb) != 1) {
+        double bits = (double(nb.numer().int_length()) + double(nb.denom().int_length())) *
+                      std::abs(nx.to_double());
+        if (!(bits <= kMaxBits))
+          fail("the number " + text_of(b) + "^" + text_of(x) + " is too large to compute exactly",
+               "write a smaller number, or give the value as a decimal with an exponent (e.g. 1e30)", at);
+      }
+    }
+    try {
+      return GiNaC::pow(b, x);
+    } catch (const std::exception& e) {
+      fail("'" + text_of(b) + "^" + text_of(x) + "' is undefined (" + math_fault(e) + ")", "check the expression", at);
+    }
+  }
+  // What GiNaC's complaint means, in words.
+  static std::string math_fault(const std::exception& e) {
+    std::string w = e.what();
+    if (w.find("division by zero") != std::string::npos) return "division by zero";
+    if (w.find("log(0)") != std::string::npos) return "the logarithm of zero";
+    if (w.find("pole") != std::string::npos) return "the function is infinite there";
+    return w;
+  }
+  static std::string text_of(const ex& e) {
+    std::ostringstream os;
+    os << e;
+    std::string t = os.str();
+    return t.size() > 20 ? t.substr(0, 17) + "..." : t;
+  }
 
   [[noreturn]] void fail(const std::string& what, const std::string& fix, std::size_t at) const {
     throw InputError(what, fix, static_cast<int>(at) + 1);
@@ -67,6 +119,8 @@ struct Parser {
     }
   }
   ex unary() {
+    skip();
+    Deeper guard(*this, i);
     if (eat('-')) return -unary();
     if (eat('+')) return unary();
     return power();
@@ -74,11 +128,12 @@ struct Parser {
   ex power() {
     ex b = postfix();
     skip();
+    std::size_t at = i;
     if (s.compare(i, 2, "**") == 0) {
       i += 2;
-      return GiNaC::pow(b, unary());
+      return raise(b, unary(), at);
     }
-    if (eat('^')) return GiNaC::pow(b, unary());
+    if (eat('^')) return raise(b, unary(), at);
     return b;
   }
   ex postfix() {
@@ -135,6 +190,23 @@ struct Parser {
     }
     fail("unclosed '('", "close the argument list with ')'", i);
   }
+  // At i, a name follows a number or a name with no operator between ("2 l", "0.1 m"): say so.
+  void juxtaposed() {
+    skip();
+    if (i >= s.size() || !(std::isalpha(static_cast<unsigned char>(s[i])) || s[i] == '_')) return;
+    std::size_t k = i;
+    while (k > 0 && std::isspace(static_cast<unsigned char>(s[k - 1]))) --k;
+    if (k == 0 || k == i) return;
+    char prev = s[k - 1];
+    if (!(std::isalnum(static_cast<unsigned char>(prev)) || prev == '_' || prev == '.' || prev == ')')) return;
+    std::size_t e = i;
+    while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_')) ++e;
+    std::string n = s.substr(i, e - i);
+    fail("no operator before '" + n + "'",
+         "write '*' to multiply (e.g. 2*l); a value with a unit goes under parameters (e.g. 'a: 0.1 m') and is used by its name",
+         i);
+  }
+
   ex call_math(const std::string& f, std::size_t at) {
     std::vector<ex> a;
     if (!eat(')')) {
@@ -146,6 +218,15 @@ struct Parser {
     if (a.size() != want)
       fail(f + " takes " + std::to_string(want) + " argument" + (want > 1 ? "s" : ""),
            "write e.g. " + f + (want > 1 ? "(y, x)" : "(x)"), at);
+    try {
+      return math(f, a);
+    } catch (const std::exception& e) {
+      fail("'" + f + "(" + text_of(a[0]) + (a.size() > 1 ? ", " + text_of(a[1]) : std::string()) + ")' is undefined (" +
+               math_fault(e) + ")",
+           "check the argument of " + f, at);
+    }
+  }
+  static ex math(const std::string& f, const std::vector<ex>& a) {
     if (f == "sin") return GiNaC::sin(a[0]);
     if (f == "cos") return GiNaC::cos(a[0]);
     if (f == "tan") return GiNaC::tan(a[0]);
@@ -169,12 +250,21 @@ struct Parser {
     if (c == '(') {
       ++i;
       ex e = expr();
-      if (!eat(')')) fail("expected ')'", "close the parenthesis", i);
+      if (!eat(')')) {
+        juxtaposed();
+        fail("expected ')'", "close the parenthesis", i);
+      }
       return e;
     }
     if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
       GiNaC::numeric v;
-      if (!units::parse_decimal(s, i, v)) fail("bad number", "write a decimal such as 9.81", at);
+      bool ok = false;
+      try {
+        ok = units::parse_decimal(s, i, v);
+      } catch (const InputError& e) {
+        fail(e.what(), e.fix(), at);
+      }
+      if (!ok) fail("bad number", "write a decimal such as 9.81", at);
       return v;
     }
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
@@ -214,6 +304,7 @@ ex parse(const std::string& text, Context& ctx) {
   if (p.i != text.size()) {
     if (text[p.i] == '=')
       p.fail("'=' is not allowed here", "write an expression, not an equation", p.i);
+    p.juxtaposed();
     p.fail("unexpected '" + text.substr(p.i, 1) + "'", "check the expression's syntax", p.i);
   }
   return e;

@@ -1,6 +1,7 @@
 #include "kinergy/model/model.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <random>
 #include <set>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/expr/parser.hpp"
 #include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 
 namespace kinergy::model {
 
@@ -19,6 +21,56 @@ static std::string str(const ex& e) {
   std::ostringstream os;
   os << e;
   return os.str();
+}
+
+/// What GiNaC's complaint about a value means, in words ("division by zero", "log(0)").
+static std::string math_fault(const std::exception& err) {
+  std::string w = err.what();
+  if (w.find("division by zero") != std::string::npos) return "a division by zero";
+  if (w.find("log(0)") != std::string::npos) return "log(0)";
+  if (w.find("pole") != std::string::npos) return "a function at a pole, like tan at pi/2";
+  return w;
+}
+
+/// The unit to write for a dimension, in words for a fix ("m/s"; angles: "rad or deg").
+static std::string unit_words(const Dimension& d) {
+  std::string n = units::si_name(d);
+  return n.empty() ? std::string("rad or deg (or a pure number)") : n;
+}
+
+/// A dimension as a student reads it: "a pure number", "N (kg·m/s^2)", "m".
+static std::string dim_words(const Dimension& d) {
+  if (d.dimensionless()) return "a pure number (or an angle)";
+  std::string n = units::si_name(d), s = d.str();
+  if (n == "J") n = "J = N\u00b7m";  // a couple and an energy share it
+  return "in " + (n == s ? s : n + " (" + s + ")");
+}
+
+/// The list of a model's states, for a fix.
+static std::string state_list(const Model& m) {
+  std::string s;
+  for (auto& st : m.states) s += (s.empty() ? "" : ", ") + st.name;
+  return s.empty() ? std::string("none yet") : s;
+}
+
+/// An expression YAML cut at a comma inside `{…}` or `[…]` (its '(' is never closed): the error.
+static void check_cut(const Node& n) {
+  if (!n.is_scalar()) return;
+  int depth = 0;
+  for (char c : n.scalar) depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+  if (depth > 0)
+    throw SceneError(n.pos, "'" + n.scalar + "' is cut at a comma: inside {…} and […] a comma separates entries, even within f(a, b)",
+                     "put the expression in quotes, e.g. \"" + n.scalar + ", …)\"");
+}
+
+/// A key no name can be: an expression's tail after YAML split `{F: [f(a, b), 0]}` at a comma.
+static bool looks_cut(const std::string& k) {
+  int depth = 0;
+  for (char c : k) {
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+  }
+  return depth < 0 || k.find_first_of("()@*/^+") != std::string::npos;
 }
 
 // ---------------------------------------------------------------- dimensions
@@ -201,7 +253,12 @@ ex Model::spring_length(const ex& d2) const {
     if (!p.is_zero() && c_free) {
       exmap env = numeric_environment();
       for (std::size_t s = 0; s < states.size(); ++s) {
-        ex v = bind(p, static_cast<int>(s)).subs(states[s].given).subs(env).evalf();
+        ex v;
+        try {
+          v = bind(p, static_cast<int>(s)).subs(states[s].given).subs(env).evalf();
+        } catch (const std::exception&) {
+          continue;  // undefined at this state: let another state decide
+        }
         if (is_a<numeric>(v) && ex_to<numeric>(v).is_real() && !ex_to<numeric>(v).is_zero())
           return sqrt(c) * (ex_to<numeric>(v).is_positive() ? p : -p);
       }
@@ -216,24 +273,12 @@ ex Model::potential_energy() const {
   return V;
 }
 
-static std::pair<ex, ex> dpos(const Model& m, const PointRef& p, const symbol& q) {
-  // ∂r_P/∂q; for a material point at a world place: ∂r_G/∂q + ∂φ/∂q k × (w − r_G)
-  if (p.body < 0) return {0, 0};
-  if (p.world_place) {
-    const Body& b = m.bodies[p.body];
-    ex dphi = b.angle.diff(q);
-    return {b.x.diff(q) - dphi * (p.wy - b.y), b.y.diff(q) + dphi * (p.wx - b.x)};
-  }
-  auto [x, y] = m.position(p);
-  return {x.diff(q), y.diff(q)};
-}
-
 ex Model::generalized_force(const Effect& e, std::size_t i) const {
   const symbol& q = coords[i].q;
   if (conservative(e)) return -potential_energy(e).diff(q);  // Q_i = −∂V/∂q_i
   if (e.kind == "couple") return e.M * bodies[e.body].angle.diff(q);  // Q_i = M ∂φ/∂q_i
   if (e.kind == "force") {
-    auto [dx, dy] = dpos(*this, e.a, q);  // Q_i = F · ∂r_P/∂q_i
+    auto [dx, dy] = position_derivative(e.a, q);  // Q_i = F · ∂r_P/∂q_i
     return e.Fx * dx + e.Fy * dy;
   }
   return 0;
@@ -258,15 +303,9 @@ ex Model::power(const Effect& e) const {
 }
 
 ex Model::angular_momentum(const PointRef& p) const {
-  // H_P = Σ Ī ω + (r_G − r_P) × m v̄
-  auto [px, py] = position(p);
-  ex H = 0;
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const Body& b = bodies[i];
-    ex vx = rate(b.x), vy = rate(b.y);
-    H += b.inertia * omega(static_cast<int>(i)) + b.mass * ((b.x - px) * vy - (b.y - py) * vx);
-  }
-  return collect_simplify(H, rate_list(coords));
+  std::vector<int> all;
+  for (std::size_t i = 0; i < bodies.size(); ++i) all.push_back(static_cast<int>(i));
+  return angular_momentum(p, all);
 }
 
 int Model::state_index(const std::string& n) const {
@@ -458,10 +497,43 @@ public:
       if (e < 0) throw InputError("no effect named '" + args[0] + "'", "name an effect of the scene");
       return m_.power(m_.effects[e]);
     }
-    if (f == "H") return m_.angular_momentum(m_.point(one("P")));
+    if (f == "H") {
+      if (args.size() == 2) return m_.angular_momentum(m_.point(args[0]), {body(args[1])});
+      return m_.angular_momentum(m_.point(one("P")));
+    }
+    if (f == "px" || f == "py") {
+      std::vector<int> set;
+      if (args.empty())
+        for (std::size_t i = 0; i < m_.bodies.size(); ++i) set.push_back(static_cast<int>(i));
+      else
+        set.push_back(body(one("body")));
+      auto [Lx, Ly] = m_.linear_momentum(set);
+      return f == "px" ? Lx : Ly;
+    }
+    if (f == "impulse_x" || f == "impulse_y" || f == "impulse" || f == "loss") {
+      if (args.size() != 3)
+        throw InputError(f + " takes an effect and two states", "write " + f + "(hit, before, after)");
+      int e = m_.effect_index(args[0]);
+      if (e < 0) throw InputError("no effect named '" + args[0] + "'", "name an effect of the scene");
+      int s1 = m_.state_index(args[1]), s2 = m_.state_index(args[2]);
+      if (s1 < 0 || s2 < 0)
+        throw InputError("no state named '" + (s1 < 0 ? args[1] : args[2]) + "'", "name two states of the scene");
+      int ai = m_.analysis_between(s1, s2);
+      if (ai < 0)
+        throw InputError("no momentum or impact analysis goes from state '" + args[1] + "' to '" + args[2] + "'",
+                         "add one, e.g. '- impact: {from: " + args[1] + ", to: " + args[2] + ", contact: …}'");
+      if (f == "loss") return m_.impact_loss(e, ai);
+      auto [x, y] = m_.impulse(e, ai);
+      if (f == "impulse_x") return x;
+      if (f == "impulse_y") return y;
+      const Effect& ef = m_.effects[e];
+      if (ef.kind == "contact") return m_.analyses[ai].contact_impulses.at(ef.name).first;  // J along n
+      return sqrt(x * x + y * y);
+    }
     throw InputError("unknown function '" + f + "'",
-                     "use T, V, T(body), omega(body), x(P), y(P), vx(P), vy(P), speed(P), "
-                     "power(effect), H(P) or a math function");
+                     "use T, V, T(body), omega(body), x(P), y(P), vx(P), vy(P), speed(P), power(effect), "
+                     "H(P), H(P, body), px, py, impulse(effect, S1, S2), impulse_x, impulse_y, loss(contact, S1, S2) "
+                     "or a math function");
   }
 
   ex at_state(const ex& e, const std::string& s) override {
@@ -474,7 +546,8 @@ public:
       for (auto& st : m_.states) names.push_back(st.name);
       std::string near = scene::closest(s, names);
       throw InputError("no state named '" + s + "'",
-                       near.empty() ? "define it under 'states'" : "did you mean '@" + near + "'?");
+                       near.empty() ? "define it under 'states' (the states are " + state_list(m_) + ")"
+                                    : "did you mean '@" + near + "'?");
     }
     return m_.bind(e, i);
   }
@@ -532,11 +605,34 @@ private:
                        "give each parameter, coordinate and rate its own name");
   }
 
-  ex parse(const Text& t, SceneContext::Level lv, bool states = false) {
+  ex parse(const Text& t, SceneContext::Level lv, bool states = false, const std::string& key = "") {
     SceneContext ctx(m_, lv, states);
     try {
       return expr::parse(t.s, ctx);
     } catch (const InputError& e) {
+      // "3 N*m" where an expression of parameters stands: say so, not "unexpected 'N'"
+      std::optional<units::Quantity> q;
+      try {
+        q = units::parse_quantity(t.s);
+      } catch (const InputError&) {
+      }
+      if (q && q->has_number && !q->unit.text.empty()) {
+        bool name_ok = !key.empty() && std::isalpha(static_cast<unsigned char>(key[0]));
+        for (char c : key) name_ok = name_ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+        std::string p = name_ok ? key + "0" : std::string("q0");
+        // "2 m" may mean 2 times the parameter m
+        std::string u = q->unit.text, also;
+        if (m_.names_.count(u)) {
+          std::string num = t.s.substr(0, t.s.find(u));
+          while (!num.empty() && num.back() == ' ') num.pop_back();
+          while (!num.empty() && num.front() == ' ') num.erase(0, 1);
+          also = ", or write '" + num + "*" + u + "' for " + num + " times the parameter '" + u + "'";
+        }
+        throw SceneError(t.pos, "'" + t.s + "' is a number with a unit, but " +
+                                    (key.empty() ? std::string("this") : "'" + key + "'") +
+                                    " takes an expression of parameters",
+                         "add a parameter '" + p + ": " + t.s + "' under parameters and write '" + p + "' here" + also);
+      }
       rethrow_at(t.pos, e);
     }
   }
@@ -554,31 +650,46 @@ private:
                   const std::string& fix) {
     Dimension got = dim(e, pos, key);
     if (!e.is_zero() && got != want)
-      throw SceneError(pos, "'" + key + "' has dimension " + got.str() + " but must be " +
-                                (want.dimensionless() ? std::string("a pure number") : want.str()),
-                       fix);
+      throw SceneError(pos, "'" + key + "' is " + dim_words(got) + " but must be " + dim_words(want), fix);
   }
 
   ex checked(const Text& t, SceneContext::Level lv, const Dimension& want, const std::string& key,
              const std::string& fix) {
-    ex e = parse(t, lv);
+    ex e = parse(t, lv, false, key);
     expect_dim(e, want, t.pos, key, fix);
     return e;
   }
 
-  /// Numeric value with the parameters' values, if all are known.
-  std::optional<numeric> value_of(const ex& e) {
-    ex v = e.subs(m_.parameter_values()).evalf();
-    if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) return ex_to<numeric>(v);
-    return std::nullopt;
+  /// Numeric value with the parameters' values, if all are known. @throws SceneError when it
+  /// is undefined (a division by zero) or not a real number.
+  std::optional<numeric> value_of(const ex& e, const SourcePos& pos, const std::string& what) {
+    ex v;
+    try {
+      v = e.subs(m_.parameter_values()).evalf();
+    } catch (const std::exception& err) {
+      throw SceneError(pos, what + " is undefined for the parameters' values (" + math_fault(err) + ")",
+                       "check the values of the parameters it uses");
+    }
+    if (!is_a<numeric>(v)) return std::nullopt;
+    if (!ex_to<numeric>(v).is_real())
+      throw SceneError(pos, what + " is not a real number for the parameters' values (it is " + str(v) + ")",
+                       "check the values of the parameters it uses (a square root of a negative number?)");
+    return ex_to<numeric>(v);
   }
 
   void positive(const ex& e, const SourcePos& pos, const std::string& what, bool allow_zero = false) {
-    auto v = value_of(e);
-    if (v && (allow_zero ? v->is_negative() : !v->is_positive()))
-      throw SceneError(pos, what + " must be " + (allow_zero ? "zero or positive" : "positive") +
-                                ", but it is " + str(*v),
-                       "give it a " + std::string(allow_zero ? "non-negative" : "positive") + " value");
+    auto v = value_of(e, pos, what);
+    if (!v || !(allow_zero ? v->is_negative() : !v->is_positive())) return;
+    const std::string must = allow_zero ? "zero or positive" : "positive";
+    // a single parameter: the fix is where its value is written
+    if (is_a<symbol>(e))
+      for (auto& pd : d_.parameters)
+        if (const Parameter* p = m_.parameter(pd.name); p && p->sym.is_equal(e))
+          throw SceneError(pd.value.pos, "parameter '" + pd.name + "' is " + pd.value.s + ", but it stands for " + what +
+                                             ", which must be " + must,
+                           "give '" + pd.name + "' a " + (allow_zero ? "non-negative" : "positive") + " value");
+    throw SceneError(pos, what + " must be " + must + ", but it is " + numerics::format(*v, 6),
+                     "give it a " + std::string(allow_zero ? "non-negative" : "positive") + " value");
   }
 
   void parameters() {
@@ -730,8 +841,13 @@ private:
   }
   void only(const scene::EffectDef& e, std::vector<std::string> keys) {
     keys.push_back(e.kind);
+    for (std::size_t i = 0; i + 1 < e.options.entries.size(); ++i)
+      if (e.options.entries[i + 1].second.kind == Node::Kind::Null) check_cut(e.options.entries[i].second);
     for (auto& [k, v] : e.options.entries)
       if (std::find(keys.begin(), keys.end(), k.scalar) == keys.end()) {
+        if (v.kind == Node::Kind::Null && looks_cut(k.scalar))
+          throw SceneError(k.pos, "'" + k.scalar + "' looks like the end of an expression cut at a comma: inside {…} a comma separates entries",
+                           "put the expression in quotes, e.g. M: \"atan2(y, x)*M0\"");
         std::string list;
         for (auto& s : keys) list += (list.empty() ? "" : ", ") + s;
         std::string near = scene::closest(k.scalar, keys);
@@ -749,6 +865,17 @@ private:
       rethrow_at(n.pos, err);
     }
   }
+  // A contact party: a point, a body, or the ground (a line, no point).
+  PointRef party(const Node& n) {
+    if (n.is_scalar() && n.scalar == "ground") {
+      PointRef p;
+      p.ground = true;
+      p.text = "ground";
+      return p;
+    }
+    return point_ref(n, "contact");
+  }
+
   int body_ref(const Node& n, const std::string& key) {
     if (!n.is_scalar())
       throw SceneError(n.pos, "'" + key + "' must name a body, not " + n.kind_name(), "write the body's name");
@@ -764,8 +891,10 @@ private:
   }
   std::pair<ex, ex> vec(const Node& n, const std::string& key, const Dimension& d, SceneContext::Level lv,
                         const std::string& fix) {
-    if (!n.is_list() || n.items.size() != 2)
+    if (!n.is_list() || n.items.size() != 2) {
+      for (auto& it : n.items) check_cut(it);
       throw SceneError(n.pos, "'" + key + "' must be a list [x, y]", "write e.g. " + key + ": [0, -P]");
+    }
     ex x = checked(text_of(n.items[0], key, "0"), lv, d, key + "[0]", fix);
     ex y = checked(text_of(n.items[1], key, "0"), lv, d, key + "[1]", fix);
     return {x, y};
@@ -872,6 +1001,48 @@ private:
         e.body = body_ref(ed.arg, k);
         e.P = checked(text_of(option(ed, "P", "P0"), "P", "P0"), SceneContext::ParamsOnly, E / T, "P",
                       "a power is in W (or hp)");
+      } else if (k == "contact") {
+        only(ed, {"normal", "e", "tangential"});
+        if (!ed.arg.is_list() || ed.arg.items.size() != 2)
+          throw SceneError(ed.arg.pos, "a contact names two parties",
+                           "write 'contact: [ball, bar.Q]' (body points, bodies, fixed points or ground)");
+        e.a = party(ed.arg.items[0]);
+        e.b = party(ed.arg.items[1]);
+        if (e.a.body < 0 && e.b.body < 0)
+          throw SceneError(ed.arg.pos, "contact '" + ed.name + "' joins two fixed parties; nothing can strike",
+                           "make at least one party a body or a body point");
+        const Node& nn = option(ed, "normal", "[0, 1]");
+        auto [nx, ny] = vec(nn, "normal", Dimension{}, SceneContext::ParamsOnly,
+                            "a normal is a direction: a pair of pure numbers");
+        ex n2 = model::trig_simplify(nx * nx + ny * ny);
+        auto nv = value_of(n2, nn.pos, "the normal of '" + ed.name + "'");
+        if (n2.is_zero() || (nv && nv->is_zero()))
+          throw SceneError(nn.pos, "the normal of contact '" + ed.name + "' is zero", "write a direction, e.g. [0, 1]");
+        // n̂ = n / |n|
+        e.nx = nx / sqrt(n2);
+        e.ny = ny / sqrt(n2);
+        const Node& en = option(ed, "e", "0.5");
+        e.e = checked(text_of(en, "e", "0.5"), SceneContext::ParamsOnly, Dimension{}, "e",
+                      "a coefficient of restitution is a pure number");
+        if (auto v = value_of(e.e, en.pos, "the coefficient of restitution"); v && (v->is_negative() || *v > 1))
+          throw SceneError(en.pos, "the coefficient of restitution of '" + ed.name + "' is " + str(*v) + ", outside [0, 1]",
+                           "give e between 0 (plastic: the parties move together) and 1 (elastic)");
+        if (auto* tg = ed.options.get("tangential")) {
+          if (!tg->is_scalar() || (tg->scalar != "stick" && tg->scalar != "smooth"))
+            throw SceneError(tg->pos, "'tangential' must be stick or smooth",
+                             "write 'tangential: stick' for a rough contact that does not slide after the impact");
+          e.stick = tg->scalar == "stick";
+        }
+      } else if (k == "impulse") {
+        only(ed, {"J"});
+        e.a = point_ref(ed.arg, k);
+        if (e.a.body < 0)
+          throw SceneError(ed.arg.pos, "an impulse acts on a body, but '" + ed.arg.scalar + "' is a fixed point",
+                           "name body.point or a body (its mass centre)");
+        auto [jx, jy] = vec(option(ed, "J", "[J0, 0]"), "J", F * T, SceneContext::ParamsOnly,
+                            "an impulse is in N*s (or lb*s)");
+        e.Jx = jx;
+        e.Jy = jy;
       } else if (k == "pin") {
         only(ed, {});
         if (!ed.arg.is_list() || ed.arg.items.size() != 2)
@@ -899,7 +1070,13 @@ private:
       exmap m = vals;
       for (auto& c : m_.coords) m[c.q] = numeric(u(rng));
       m[m_.t] = numeric(u(rng) + 3);
-      ex gx = dx.subs(m).evalf(), gy = dy.subs(m).evalf();
+      ex gx, gy;
+      try {
+        gx = dx.subs(m).evalf();
+        gy = dy.subs(m).evalf();
+      } catch (const std::exception&) {
+        continue;  // undefined at this sample position: try another
+      }
       if (!is_a<numeric>(gx) || !is_a<numeric>(gy)) return;  // symbolic parameters: trust it
       double d = std::hypot(ex_to<numeric>(gx).to_double(), ex_to<numeric>(gy).to_double());
       if (d > 1e-9)
@@ -952,15 +1129,22 @@ private:
           if (q.has_number && !q.unit.text.empty()) {
             v = q.si;
             if (q.unit.dim != want)
-              throw SceneError(val.pos, "'" + key + "' is given in " + q.unit.text + " (" + q.unit.dim.str() +
-                                            ") but must be " + (want.dimensionless() ? "an angle or pure number" : want.str()),
-                               "give it in a unit of " + units::si_name(want));
+              throw SceneError(val.pos, "'" + key + "' is given in " + q.unit.text +
+                                            (q.unit.text == q.unit.dim.str() ? std::string() : " (" + q.unit.dim.str() + ")") +
+                                            " but must be " + (want.dimensionless() ? std::string("an angle or pure number") : want.str()),
+                               "give it in " + unit_words(want));
             done = true;
+          } else if (q.has_number && !q.number.is_zero() && !want.dimensionless()) {
+            throw SceneError(val.pos, "'" + key + ": " + val.s + "' has no unit, but '" + key + "' is in " + units::si_name(want),
+                             "write it with its unit, e.g. '" + key + ": " + val.s + " " + units::si_name(want) + "'");
           }
         } catch (const InputError&) {
         }
-        if (!done) v = checked(val, SceneContext::ParamsOnly, want, key, "give it in " + units::si_name(want) +
-                                                                         " (a parameter with that unit, or NUMBER UNIT)");
+        if (!done)
+          v = checked(val, SceneContext::ParamsOnly, want, key,
+                      want.dimensionless() ? std::string("give an angle: a value such as 30 deg, a parameter in rad or deg, or a pure number")
+                                           : "give it in " + units::si_name(want) + " (a parameter with that unit, or NUMBER UNIT)");
+        value_of(v, val.pos, "'" + key + "' at state '" + sd.name + "'");  // defined and real
         s.given[sym] = v;
       }
       for (auto& w : sd.where) {
@@ -988,24 +1172,53 @@ private:
       for (auto& st : m_.states) names.push_back(st.name);
       std::string near = scene::closest(n->scalar, names);
       throw SceneError(n->pos, "no state named '" + n->scalar + "'",
-                       near.empty() ? "define it under 'states'" : "did you mean '" + near + "'?");
+                       near.empty() ? "define it under 'states' (the states are " + state_list(m_) + ")"
+                                    : "did you mean '" + near + "'?");
     }
     return i;
   }
 
+  std::vector<int> body_set(const Node& n) {
+    std::vector<int> out;
+    if (n.is_scalar()) out.push_back(body_ref(n, "bodies"));
+    else if (n.is_list())
+      for (auto& it : n.items) out.push_back(body_ref(it, "bodies"));
+    else
+      throw SceneError(n.pos, "'bodies' must list bodies", "write 'bodies: [disk, block]'");
+    if (out.empty()) throw SceneError(n.pos, "'bodies' is empty", "list at least one body");
+    return out;
+  }
+
+  ex impulse_symbol(const std::string& name, const Dimension& d) {
+    realsymbol s(name);
+    m_.add_symbol(s, d);
+    return s;
+  }
+
   void analyses() {
-    static const std::vector<std::string> kinds = {"energy"};
+    static const std::vector<std::string> kinds = {"energy", "momentum", "angular_momentum", "impact"};
+    const Dimension M = Dimension::mass(), L = Dimension::length(), T = Dimension::time();
+    const Dimension P = M * L / T;  // impulse
+    std::map<std::string, std::pair<ex, ex>> pin_reactions;  // "pin|S1|S2" → (Rx, Ry)
     for (auto& ad : d_.analyses) {
       if (std::find(kinds.begin(), kinds.end(), ad.kind) == kinds.end()) {
         std::string near = scene::closest(ad.kind, kinds);
         throw SceneError(ad.pos, "unknown analysis '" + ad.kind + "'",
-                         near.empty() ? "use: energy" : "did you mean '" + near + "'?");
+                         near.empty() ? "use: energy, momentum, angular_momentum or impact" : "did you mean '" + near + "'?");
       }
       if (!ad.options.is_map())
         throw SceneError(ad.pos, "'" + ad.kind + "' needs its states", "write '" + ad.kind + ": {from: 1, to: 2}'");
+      std::vector<std::string> keys = {"from", "to"};
+      if (ad.kind == "momentum") keys.insert(keys.end(), {"bodies", "along", "conserved"});
+      if (ad.kind == "angular_momentum") keys.insert(keys.end(), {"bodies", "about", "conserved"});
+      if (ad.kind == "impact") keys.insert(keys.end(), {"contact", "contacts"});
       for (auto& [k, v] : ad.options.entries)
-        if (k.scalar != "from" && k.scalar != "to")
-          throw SceneError(k.pos, "unknown key '" + k.scalar + "' in " + ad.kind + " analysis", "use 'from' and 'to'");
+        if (std::find(keys.begin(), keys.end(), k.scalar) == keys.end()) {
+          std::string list, near = scene::closest(k.scalar, keys);
+          for (auto& x : keys) list += (list.empty() ? "" : ", ") + x;
+          throw SceneError(k.pos, "unknown key '" + k.scalar + "' in " + ad.kind + " analysis",
+                           near.empty() ? "use: " + list : "did you mean '" + near + "'?");
+        }
       Analysis a;
       a.kind = ad.kind;
       a.pos = ad.pos;
@@ -1013,6 +1226,105 @@ private:
       a.to = state_ref(ad.options, "to", ad.pos, ad.kind);
       if (a.from == a.to)
         throw SceneError(ad.options.get("to")->pos, "'from' and 'to' are the same state", "name two different states");
+      const std::string S1 = m_.states[a.from].name, S2 = m_.states[a.to].name;
+      if (auto* b = ad.options.get("bodies")) a.bodies = body_set(*b);
+      else
+        for (std::size_t i = 0; i < m_.bodies.size(); ++i) a.bodies.push_back(static_cast<int>(i));
+      if (auto* c = ad.options.get("conserved")) {
+        if (!c->is_scalar() || (c->scalar != "true" && c->scalar != "false"))
+          throw SceneError(c->pos, "'conserved' must be true or false", "write 'conserved: true'");
+        a.conserved = c->scalar == "true";
+      }
+      if (ad.kind == "momentum") {
+        if (auto* al = ad.options.get("along")) {
+          a.has_along = true;
+          if (al->is_scalar() && (al->scalar == "x" || al->scalar == "y")) {
+            a.nx = al->scalar == "x" ? 1 : 0;
+            a.ny = al->scalar == "y" ? 1 : 0;
+            a.along_name = al->scalar;
+          } else {
+            auto [nx, ny] = vec(*al, "along", Dimension{}, SceneContext::ParamsOnly, "a direction is a pair of pure numbers");
+            ex n2 = nx * nx + ny * ny;
+            if (n2.is_zero()) throw SceneError(al->pos, "the direction is zero", "write x, y or [nx, ny]");
+            a.nx = nx / sqrt(n2);
+            a.ny = ny / sqrt(n2);
+            a.along_name = "[" + str(nx) + ", " + str(ny) + "]";
+          }
+        }
+      }
+      if (ad.kind == "angular_momentum") {
+        const Node* ab = ad.options.get("about");
+        if (!ab)
+          throw SceneError(ad.pos, "angular_momentum needs the point 'about' which moments are taken",
+                           "write 'about: O' (a fixed point) or 'about: disk' (its mass centre)");
+        a.about = point_ref(*ab, "about");
+        // H_P₂ − H_P₁ = ∫M_P dt holds about a fixed point, or about the mass centre of the body
+        bool fixed = a.about.body < 0;
+        bool own_centre = a.about.body >= 0 && a.about.lx.is_zero() && a.about.ly.is_zero() && !a.about.world_place &&
+                          a.bodies.size() == 1 && a.bodies[0] == a.about.body;
+        if (!fixed && !own_centre)
+          throw SceneError(ab->pos, "angular impulse-momentum about '" + ab->scalar + "' does not hold: that point moves",
+                           "take moments about a fixed point (under 'points') or about the mass centre of the one body analysed");
+      }
+      if (ad.kind == "impact") {
+        a.instant = true;
+        std::vector<const Node*> names;
+        const Node* c1 = ad.options.get("contact");
+        const Node* cs = ad.options.get("contacts");
+        if (c1) names.push_back(c1);
+        if (cs) {
+          if (!cs->is_list()) throw SceneError(cs->pos, "'contacts' must be a list", "write 'contacts: [hit1, hit2]'");
+          for (auto& it : cs->items) names.push_back(&it);
+        }
+        bool blows = std::any_of(m_.effects.begin(), m_.effects.end(), [](const Effect& e) { return e.kind == "impulse"; });
+        if (names.empty() && !blows)
+          throw SceneError(ad.pos, "an impact needs a contact or a given impulse",
+                           "write 'impact: {from: before, to: after, contact: hit}', or add an effect '{impulse: body.P, J: [Jx, Jy]}'");
+        for (auto* n : names) {
+          int ei = n->is_scalar() ? m_.effect_index(n->scalar) : -1;
+          if (ei < 0 || m_.effects[ei].kind != "contact") {
+            std::vector<std::string> contacts;
+            for (auto& e : m_.effects)
+              if (e.kind == "contact") contacts.push_back(e.name);
+            std::string near = n->is_scalar() ? scene::closest(n->scalar, contacts) : "";
+            throw SceneError(n->pos, "'" + (n->is_scalar() ? n->scalar : std::string("?")) + "' is not a contact effect",
+                             near.empty() ? "define it under effects: 'hit: {contact: [A, B], normal: [nx, ny], e: e}'"
+                                          : "did you mean '" + near + "'?");
+          }
+          a.contacts.push_back(ei);
+          const Effect& e = m_.effects[ei];
+          // unknown impulses: J along n (and Jt along the tangent when rough)
+          ex J = impulse_symbol("J_" + e.name + "[" + S1 + "," + S2 + "]", P);
+          ex Jt = e.stick ? impulse_symbol("Jt_" + e.name + "[" + S1 + "," + S2 + "]", P) : ex(0);
+          a.contact_impulses[e.name] = {J, Jt};
+          a.unknowns.push_back(J);
+          if (e.stick) a.unknowns.push_back(Jt);
+        }
+        // one impulsive reaction per constraint: its generalized impulse λ ∂c/∂q has the
+        // dimension of (kg·m²/s) / [q], so λ has (kg·m²/s) / [c]
+        for (std::size_t kk = 0; kk < m_.constraints.size(); ++kk) {
+          Dimension dc = m_.dimension(m_.constraints[kk].first);
+          ex lam = impulse_symbol("lambda" + std::to_string(kk + 1) + "[" + S1 + "," + S2 + "]", M * L * L / T / dc);
+          a.lambdas.push_back(lam);
+          a.unknowns.push_back(lam);
+        }
+      } else if (ad.kind != "energy") {
+        // pins between the body set and the rest carry unknown reactions
+        for (auto& e : m_.effects) {
+          if (e.kind != "pin") continue;
+          auto in = [&](int b) { return b >= 0 && std::find(a.bodies.begin(), a.bodies.end(), b) != a.bodies.end(); };
+          if (in(e.a.body) == in(e.b.body)) continue;
+          std::string key = e.name + "|" + S1 + "|" + S2;
+          if (!pin_reactions.count(key)) {
+            ex Rx = impulse_symbol("Rx_" + e.name + "[" + S1 + "," + S2 + "]", P);
+            ex Ry = impulse_symbol("Ry_" + e.name + "[" + S1 + "," + S2 + "]", P);
+            pin_reactions[key] = {Rx, Ry};
+          }
+          a.reactions[e.name] = pin_reactions[key];
+          a.unknowns.push_back(pin_reactions[key].first);
+          a.unknowns.push_back(pin_reactions[key].second);
+        }
+      }
       m_.analyses.push_back(a);
     }
   }
@@ -1073,9 +1385,10 @@ private:
           rethrow_at(fd.unit->pos, e);
         }
         if (u.dim != f.dim)
-          throw SceneError(fd.unit->pos, "find '" + fd.name + "' has dimension " + f.dim.str() +
-                                             " but its unit '" + fd.unit->s + "' is " + u.dim.str(),
-                           "use a unit of " + units::si_name(f.dim));
+          throw SceneError(fd.unit->pos, "the unit '" + u.text + "'" +
+                                             (u.text == u.dim.str() ? std::string() : " (" + u.dim.str() + ")") +
+                                             " does not fit find '" + fd.name + "', which has dimension " + f.dim.str(),
+                           "use " + (units::si_name(f.dim).empty() ? std::string("rad, deg or no unit") : "a unit of " + units::si_name(f.dim)));
         f.unit = u;
       }
       m_.finds.push_back(f);
@@ -1115,8 +1428,9 @@ private:
           throw SceneError(xd.value->pos, "the claimed value has no number", "write e.g. 'value: 3.50 rad/s'");
         if (q.unit.dim != it->dim)
           throw SceneError(xd.value->pos, "the claimed value is in " + (q.unit.text.empty() ? std::string("no unit") : q.unit.text) +
-                                              " (" + q.unit.dim.str() + ") but '" + xd.name + "' has " + it->dim.str(),
-                           "give the value in a unit of " + units::si_name(it->dim));
+                                              (q.unit.text == q.unit.dim.str() ? std::string() : " (" + q.unit.dim.str() + ")") +
+                                              " but '" + xd.name + "' has " + it->dim.str(),
+                           "give the value in " + (units::si_name(it->dim).empty() ? std::string("rad or deg, or as a pure number") : "a unit of " + units::si_name(it->dim)));
         x.value = q;
         x.value_pos = xd.value->pos;
       }

@@ -1,5 +1,7 @@
 #include "kinergy/model/simplify.hpp"
 
+#include <optional>
+
 namespace kinergy::model {
 
 using namespace GiNaC;
@@ -150,6 +152,78 @@ ex collect_simplify(const ex& e, const lst& rates) {
   ex out = 0;
   for (auto& [mono, coef] : by_mono) out += mono * trig_simplify(coef);
   return out;
+}
+
+
+static std::optional<ex> linear_coeff(const ex& arg, const symbol& s) {
+  // arg = a s + b with a free of s
+  ex d = arg.diff(s);
+  if (d.is_zero() || d.has(s)) return std::nullopt;
+  return d;
+}
+
+std::optional<ex> antiderivative(const ex& f, const symbol& s) {
+  if (!f.has(s)) return f * s;  // ∫ c ds = c s
+  if (f.is_equal(s)) return pow(s, 2) / 2;
+  if (is_a<add>(f)) {
+    ex r = 0;
+    for (std::size_t i = 0; i < f.nops(); ++i) {
+      auto a = antiderivative(f.op(i), s);
+      if (!a) return std::nullopt;
+      r += *a;
+    }
+    return r;
+  }
+  if (is_a<mul>(f)) {
+    ex c = 1, g = 1;
+    int dependent = 0;
+    for (std::size_t i = 0; i < f.nops(); ++i) {
+      if (f.op(i).has(s)) {
+        g *= f.op(i);
+        ++dependent;
+      } else {
+        c *= f.op(i);
+      }
+    }
+    if (dependent == 1) {
+      auto a = antiderivative(g, s);
+      if (a) return c * *a;
+      return std::nullopt;
+    }
+    // a product of several factors in s: try its expansion (polynomials, sums)
+    ex x = f.expand();
+    if (!x.is_equal(f) && is_a<add>(x)) return antiderivative(x, s);
+    return std::nullopt;
+  }
+  if (is_a<power>(f)) {
+    const ex& b = f.op(0);
+    const ex& n = f.op(1);
+    if (n.has(s)) return std::nullopt;
+    auto a = linear_coeff(b, s);
+    if (a) {
+      // ∫ (a s + b)^n ds = (a s + b)^(n+1) / ((n+1) a);  n = −1: log(a s + b)/a
+      if (n.is_equal(-1)) return log(b) / *a;
+      return pow(b, n + 1) / ((n + 1) * *a);
+    }
+    if (is_a<numeric>(n) && ex_to<numeric>(n).is_pos_integer()) {
+      ex x = f.expand();
+      if (!x.is_equal(f)) return antiderivative(x, s);
+    }
+    return std::nullopt;
+  }
+  if (is_a<function>(f) && f.nops() == 1) {
+    auto a = linear_coeff(f.op(0), s);
+    if (!a) return std::nullopt;
+    const ex& u = f.op(0);
+    // ∫ sin(a s + b) ds = −cos(a s + b)/a,  ∫ cos = sin/a,  ∫ exp = exp/a, ∫ sinh = cosh/a, ∫ cosh = sinh/a
+    if (is_ex_the_function(f, sin)) return -cos(u) / *a;
+    if (is_ex_the_function(f, cos)) return sin(u) / *a;
+    if (is_ex_the_function(f, exp)) return exp(u) / *a;
+    if (is_ex_the_function(f, sinh)) return cosh(u) / *a;
+    if (is_ex_the_function(f, cosh)) return sinh(u) / *a;
+    return std::nullopt;
+  }
+  return std::nullopt;
 }
 
 }  // namespace kinergy::model

@@ -46,7 +46,9 @@ Decimal decompose(const GiNaC::numeric& v, int n) {
   GiNaC::numeric l = GiNaC::log(GiNaC::ex_to<GiNaC::numeric>(GiNaC::numeric(a).evalf())) / GiNaC::log(GiNaC::ex_to<GiNaC::numeric>(GiNaC::numeric(10).evalf()));
   Digits = saved;
   long e = static_cast<long>(std::floor(l.to_double())) + 1;
-  const cln::cl_I lo = cln::expt_pos(cln::cl_I(10), n - 1), hi = cln::expt_pos(cln::cl_I(10), n);
+  // (cln::expt_pos needs a positive exponent: 10^0 would never return)
+  const cln::cl_I lo = n > 1 ? cln::expt_pos(cln::cl_I(10), n - 1) : cln::cl_I(1);
+  const cln::cl_I hi = cln::expt_pos(cln::cl_I(10), n);
   cln::cl_I r;
   for (int guard = 0; guard < 8; ++guard) {
     cln::cl_R scaled = a / cln::expt(cln::cl_RA(10), cln::cl_I(e - n));

@@ -7,8 +7,8 @@ namespace kinergy::principles {
 using namespace GiNaC;
 using model::Model;
 
-Knowledge::Knowledge(const Model& m) {
-  exmap env = m.numeric_environment();
+Knowledge::Knowledge(const Model& m) : env_(m.numeric_environment()) {
+  const exmap& env = env_;
   auto num = [&](const ex& e) -> std::optional<numeric> {
     ex v = e.subs(known_).subs(env).evalf();
     if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) return ex_to<numeric>(v);
@@ -36,7 +36,7 @@ Knowledge::Knowledge(const Model& m) {
 }
 
 std::optional<numeric> Knowledge::value(const ex& e) const {
-  ex v = e.subs(known_).evalf();
+  ex v = e.subs(known_).subs(env_).evalf();
   if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) return ex_to<numeric>(v);
   return std::nullopt;
 }

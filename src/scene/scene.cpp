@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 namespace kinergy::scene {
@@ -34,13 +37,21 @@ SourcePos StateDef::key_pos(const std::string& key) const {
 const std::vector<std::string>& effect_kinds() {
   static const std::vector<std::string> k = {
       "gravity", "spring", "torsion_spring", "couple", "force", "friction", "friction_couple",
-      "power",   "pin"};
+      "power",   "pin",    "contact",        "impulse"};
   return k;
 }
 
 std::string closest(const std::string& word, const std::vector<std::string>& options) {
+  auto lower = [](std::string x) {
+    for (auto& c : x) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return x;
+  };
+  // a name that differs only in case is the one meant ('L' for 'l')
+  for (auto& o : options)
+    if (o != word && lower(o) == lower(word)) return o;
   std::string best;
-  std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
+  // near enough: a few edits, and never every character of the word (for 'q', 'g' is no hint)
+  std::size_t best_d = std::min(std::max<std::size_t>(2, word.size() / 3) + 1, word.size());
   for (auto& o : options) {
     // Levenshtein distance
     std::vector<std::size_t> prev(o.size() + 1), cur(o.size() + 1);
@@ -63,9 +74,34 @@ namespace {
 
 struct Loader {
   std::string file;
+  std::vector<std::string> lines;  ///< the source, for places inside quoted and block scalars
 
   SourcePos at(const YAML::Mark& m) const {
     return {file, m.line < 0 ? 0 : m.line + 1, m.column < 0 ? 0 : m.column + 1};
+  }
+
+  char char_at(const SourcePos& p) const {
+    if (p.line < 1 || p.line > static_cast<int>(lines.size())) return '\0';
+    const std::string& l = lines[p.line - 1];
+    return p.col >= 1 && p.col <= static_cast<int>(l.size()) ? l[p.col - 1] : '\0';
+  }
+
+  /// The place where a scalar's text begins: after an opening quote, or on the first line of
+  /// a block scalar (`|`, `>`), so that a column inside an expression lands on the character.
+  SourcePos text_start(SourcePos p) const {
+    char c = char_at(p);
+    if (c == '"' || c == '\'') {
+      ++p.col;
+    } else if (c == '|' || c == '>') {
+      for (int l = p.line + 1; l <= static_cast<int>(lines.size()); ++l) {
+        auto k = lines[l - 1].find_first_not_of(" \t\r");
+        if (k == std::string::npos) continue;
+        p.line = l;
+        p.col = static_cast<int>(k) + 1;
+        break;
+      }
+    }
+    return p;
   }
 
   Node convert(const YAML::Node& y) const {
@@ -75,6 +111,7 @@ struct Loader {
       case YAML::NodeType::Scalar:
         n.kind = Node::Kind::Scalar;
         n.scalar = y.Scalar();
+        n.pos = text_start(n.pos);
         break;
       case YAML::NodeType::Sequence:
         n.kind = Node::Kind::List;
@@ -109,14 +146,43 @@ struct Loader {
   }
 
   void only_keys(const Node& map, const std::string& where, const std::vector<std::string>& keys) const {
+    // "{value: f(a, b)}" reads as value "f(a" and a key "b)" without a value
+    for (std::size_t i = 0; i + 1 < map.entries.size(); ++i)
+      if (unclosed_paren(map.entries[i].second) && map.entries[i + 1].second.kind == Node::Kind::Null)
+        cut_at_comma(map.entries[i].second);
     for (auto& [k, v] : map.entries) {
       if (std::find(keys.begin(), keys.end(), k.scalar) != keys.end()) continue;
+      if (v.kind == Node::Kind::Null && looks_cut(k.scalar))
+        throw SceneError(k.pos, "'" + k.scalar + "' looks like the end of an expression cut at a comma: inside {…} a comma separates entries",
+                         "put the expression in quotes, e.g. value: \"atan2(y@2, x@2)\"");
       std::string near = closest(k.scalar, keys);
       std::string list;
       for (auto& s : keys) list += (list.empty() ? "" : ", ") + s;
       throw SceneError(k.pos, "unknown key '" + k.scalar + "' in " + where,
                        near.empty() ? "use one of: " + list : "did you mean '" + near + "'?");
     }
+  }
+
+  /// An expression YAML cut at a comma inside `{…}` or `[…]`: its '(' is never closed.
+  [[noreturn]] static void cut_at_comma(const Node& n) {
+    throw SceneError(n.pos, "'" + n.scalar + "' is cut at a comma: inside {…} and […] a comma separates entries, even within f(a, b)",
+                     "put the expression in quotes, e.g. value: \"" + n.scalar + ", …)\"");
+  }
+  static bool unclosed_paren(const Node& n) {
+    if (!n.is_scalar()) return false;
+    int depth = 0;
+    for (char c : n.scalar) depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+    return depth > 0;
+  }
+
+  /// A key no name can be: an expression's tail after YAML split `{value: f(a, b)}` at the comma.
+  static bool looks_cut(const std::string& k) {
+    int depth = 0;
+    for (char c : k) {
+      if (c == '(') ++depth;
+      if (c == ')') --depth;
+    }
+    return depth < 0 || k.find_first_of("()@*/^+") != std::string::npos;
   }
 
   const Node& need_map(const Node& n, const std::string& key, const std::string& example) const {
@@ -133,12 +199,23 @@ struct Loader {
 
   std::pair<Text, Text> pair(const Node& n, const std::string& key, const std::string& example) const {
     if (!n.is_list() || n.items.size() != 2) {
+      for (auto& it : n.items)
+        if (unclosed_paren(it)) cut_at_comma(it);
       if (n.is_list())
         throw SceneError(n.pos, "'" + key + "' must have 2 entries [x, y], not " + std::to_string(n.items.size()),
                          "write e.g. " + example);
       wrong_type(n, key, "a list [x, y]", example);
     }
     return {text(n.items[0], key + "[0]", example), text(n.items[1], key + "[1]", example)};
+  }
+
+  /// A section name met inside another section: its line is indented under the section above.
+  void not_a_section(const Node& k, const Node& root, const std::string& inside) const {
+    static const std::vector<std::string> sections = {"parameters", "points", "coordinates", "bodies", "constraints",
+                                                      "effects", "states", "analyses", "find", "expect"};
+    if (std::find(sections.begin(), sections.end(), k.scalar) == sections.end() || root.get(k.scalar)) return;
+    throw SceneError(k.pos, "'" + k.scalar + "' is indented, so it stands inside '" + inside + "' instead of being a section",
+                     "start '" + k.scalar + ":' at the beginning of its line, and indent what belongs to it");
   }
 
   static void check_name(const Node& k, const std::string& what) {
@@ -201,6 +278,7 @@ struct Loader {
     if (auto* p = r.get("parameters")) {
       need_map(*p, "parameters", "parameters: {m: 5 kg, l: 1.2 m}");
       for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "parameters");
         check_name(k, "parameter");
         s.parameters.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": 5 kg")});
       }
@@ -208,6 +286,7 @@ struct Loader {
     if (auto* p = r.get("points")) {
       need_map(*p, "points", "points: {O: [0, 0]}");
       for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "points");
         check_name(k, "point");
         auto [x, y] = pair(v, k.scalar, k.scalar + ": [0, 0]");
         s.points.push_back({k.scalar, k.pos, x, y});
@@ -216,6 +295,7 @@ struct Loader {
     if (auto* p = r.get("coordinates")) {
       need_map(*p, "coordinates", "coordinates: {theta: rad, x: m}");
       for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "coordinates");
         check_name(k, "coordinate");
         s.coordinates.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": rad")});
       }
@@ -223,6 +303,7 @@ struct Loader {
     if (auto* p = r.get("bodies")) {
       need_map(*p, "bodies", "bodies: {rod: {mass: m, inertia: {slender_rod: l}, position: [x, y]}}");
       for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "bodies");
         check_name(k, "body");
         need_map(v, k.scalar, "{mass: m, inertia: {disk: r}, position: [x, y], angle: phi}");
         only_keys(v, "body '" + k.scalar + "'", {"mass", "inertia", "position", "angle", "points"});
@@ -264,6 +345,7 @@ struct Loader {
       need_map(*p, "effects", "effects: {gravity: {g: g}}");
       const auto& kinds = effect_kinds();
       for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "effects");
         check_name(k, "effect");
         if (!v.is_map())
           wrong_type(v, k.scalar, "a map", k.scalar + ": {couple: disk, M: M0}");
@@ -295,6 +377,7 @@ struct Loader {
     if (auto* p = r.get("states")) {
       need_map(*p, "states", "states: {1: {theta: 0, theta_dot: 0}, 2: {theta: theta2}}");
       for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "states");
         StateDef st;
         st.name = k.scalar;
         st.pos = k.pos;
@@ -312,8 +395,19 @@ struct Loader {
                 for (auto& w : sv.items) st.where.push_back(text(w, "where", "x_dot + r*phi_dot = 0"));
               else wrong_type(sv, "where", "a list of equations", "where: [x_dot + r*phi_dot = 0]");
             } else {
+              // a key that names no coordinate, rate or t is blamed where it is written
+              std::vector<std::string> keys = {"t", "where"};
+              for (auto& c : s.coordinates) {
+                keys.push_back(c.name);
+                keys.push_back(c.name + "_dot");
+              }
+              if (std::find(keys.begin(), keys.end(), sk.scalar) == keys.end()) {
+                std::string near = closest(sk.scalar, keys);
+                throw SceneError(sk.pos, "state '" + st.name + "' gives '" + sk.scalar + "', which is not a coordinate, rate or t",
+                                 near.empty() ? "give coordinates (theta), rates (theta_dot), t or where"
+                                              : "did you mean '" + near + "'?");
+              }
               st.values.emplace_back(sk.scalar, text(sv, sk.scalar, sk.scalar + ": 0"));
-              st.values.back().second.pos = sv.pos;
             }
           }
         }
@@ -336,6 +430,7 @@ struct Loader {
     if (auto* p = r.get("find")) {
       need_map(*p, "find", "find: {omega2: theta_dot@2}");
       for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "find");
         check_name(k, "result");
         FindDef f;
         f.name = k.scalar;
@@ -358,6 +453,7 @@ struct Loader {
     if (auto* p = r.get("expect")) {
       need_map(*p, "expect", "expect: {omega2: {form: sqrt(3*g/l), value: 3.50 rad/s}}");
       for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "expect");
         ExpectDef e;
         e.name = k.scalar;
         e.pos = k.pos;
@@ -377,26 +473,277 @@ struct Loader {
 
 }  // namespace
 
-SceneDef load_string(const std::string& text, const std::string& file) {
-  Loader l{file};
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    std::string msg = e.msg;
-    throw SceneError(l.at(e.mark), "YAML syntax error: " + msg,
-                     "fix the indentation, brackets or quotes near here");
+namespace {
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : text) {
+    if (c == '\n') {
+      if (!cur.empty() && cur.back() == '\r') cur.pop_back();
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
   }
-  if (!root || root.IsNull())
+  out.push_back(cur);
+  return out;
+}
+
+/// A line that opens a block scalar (`key: |`, `key: >-`, `- >`): its content follows, indented.
+bool opens_block_scalar(const std::string& l) {
+  auto k = l.find_last_not_of(" \t");
+  if (k == std::string::npos) return false;
+  std::size_t e = k + 1;
+  // strip a trailing comment
+  auto hash = l.find(" #");
+  if (hash != std::string::npos && hash < e) {
+    k = l.find_last_not_of(" \t", hash);
+    if (k == std::string::npos) return false;
+    e = k + 1;
+  }
+  std::size_t b = e;
+  while (b > 0 && (std::isdigit(static_cast<unsigned char>(l[b - 1])) || l[b - 1] == '-' || l[b - 1] == '+')) --b;
+  if (b == 0 || (l[b - 1] != '|' && l[b - 1] != '>')) return false;
+  --b;
+  if (b == 0) return true;
+  return l[b - 1] == ' ' && l.find_last_not_of(' ', b - 1) != std::string::npos &&
+         (l[l.find_last_not_of(' ', b - 1)] == ':' || l[l.find_last_not_of(' ', b - 1)] == '-');
+}
+
+std::size_t indentation(const std::string& l) {
+  auto k = l.find_first_not_of(' ');
+  return k == std::string::npos ? l.size() : k;
+}
+
+/// What is still open at (line, col) — brackets of flow lists and maps, a quoted text — by a
+/// light scan that skips comments and block scalars. (yaml-cpp reports an unclosed bracket
+/// where it notices it, lines later, and takes a quote left open up to the end of the file
+/// for one long text.)
+struct Open {
+  char c;
+  int line, col;
+};
+struct OpenAt {
+  std::vector<Open> brackets;
+  std::optional<Open> quote;
+};
+
+OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
+  OpenAt st;
+  std::optional<std::size_t> block;  // indentation of the line that opened a block scalar
+  for (int li = 0; li < static_cast<int>(lines.size()) && li < line; ++li) {
+    const std::string& l = lines[li];
+    if (block) {
+      if (l.find_first_not_of(" \t\r") == std::string::npos || indentation(l) > *block) continue;
+      block.reset();
+    }
+    if (!st.quote && st.brackets.empty() && opens_block_scalar(l)) {
+      block = indentation(l);
+      continue;
+    }
+    char prev = 0;  // previous non-space character on this line (0: line start)
+    std::size_t end = li + 1 == line ? std::min<std::size_t>(l.size(), static_cast<std::size_t>(std::max(col, 1))) : l.size();
+    for (std::size_t i = 0; i < end; ++i) {
+      char c = l[i];
+      if (st.quote) {
+        if (st.quote->c == '"' && c == '\\') { ++i; continue; }
+        if (c == st.quote->c) {
+          if (c == '\'' && i + 1 < l.size() && l[i + 1] == '\'') { ++i; continue; }
+          st.quote.reset();
+          prev = c;
+        }
+        continue;
+      }
+      if (c == ' ' || c == '\t' || c == '\r') continue;
+      bool node_start = prev == 0 || prev == ':' || prev == ',' || prev == '[' || prev == '{' || prev == '-' || prev == '?';
+      if (c == '#' && (i == 0 || l[i - 1] == ' ' || l[i - 1] == '\t')) break;
+      if ((c == '"' || c == '\'') && node_start) {
+        st.quote = Open{c, li + 1, static_cast<int>(i) + 1};
+        continue;
+      }
+      if ((c == '[' || c == '{') && node_start) st.brackets.push_back({c, li + 1, static_cast<int>(i) + 1});
+      else if ((c == ']' || c == '}') && !st.brackets.empty()) st.brackets.pop_back();
+      prev = c;
+    }
+  }
+  return st;
+}
+
+/// The innermost '[' or '{' still open at (line, col): where a student must add the closing bracket.
+std::optional<SourcePos> unclosed_bracket(const std::vector<std::string>& lines, int line, int col,
+                                          const std::string& file) {
+  OpenAt st = scan_open(lines, line, col);
+  if (st.brackets.empty()) return std::nullopt;
+  return SourcePos{file, st.brackets.back().line, st.brackets.back().col};
+}
+
+/// The first tab in the indentation of a line up to `line`, where YAML allows only spaces.
+std::optional<SourcePos> tab_in_indentation(const std::vector<std::string>& lines, int line, const std::string& file) {
+  for (int li = 0; li < static_cast<int>(lines.size()) && li < line; ++li) {
+    const std::string& l = lines[li];
+    auto k = l.find_first_not_of(" \t");
+    if (k == std::string::npos) continue;
+    auto tab = l.find('\t');
+    if (tab != std::string::npos && tab < k) return SourcePos{file, li + 1, static_cast<int>(tab) + 1};
+  }
+  return std::nullopt;
+}
+
+/// yaml-cpp's message turned into what a student should look for, and where.
+[[noreturn]] void yaml_error(const Loader& l, const YAML::Exception& e) {
+  const std::string& m = e.msg;
+  SourcePos pos = l.at(e.mark);
+  if (pos.line == 0) pos = {l.file, 1, 1};
+  if (pos.col == 0) pos.col = 1;
+  auto has = [&](const char* s) { return m.find(s) != std::string::npos; };
+  if (dynamic_cast<const YAML::DeepRecursion*>(&e))
+    throw SceneError(pos, "YAML syntax error: lists and maps nested too deeply", "a scene nests a few levels; check the brackets");
+  if (auto tab = tab_in_indentation(l.lines, pos.line, l.file); tab && !has(YAML::ErrorMsg::EOF_IN_SCALAR))
+    throw SceneError(*tab, "YAML syntax error: a tab in the indentation", "indent with spaces; YAML does not allow tabs there");
+  if (has(YAML::ErrorMsg::END_OF_SEQ_FLOW) || has(YAML::ErrorMsg::END_OF_MAP_FLOW)) {
+    char open = has(YAML::ErrorMsg::END_OF_SEQ_FLOW) ? '[' : '{';
+    if (auto b = unclosed_bracket(l.lines, pos.line, pos.col, l.file)) {
+      open = l.char_at(*b) ? l.char_at(*b) : open;
+      pos = *b;
+    }
+    std::string close = open == '[' ? "]" : "}";
+    throw SceneError(pos, std::string("YAML syntax error: unclosed '") + open + "'",
+                     "close it with '" + close + "'");
+  }
+  if (has(YAML::ErrorMsg::FLOW_END))
+    throw SceneError(pos, "YAML syntax error: a closing bracket that closes nothing",
+                     "remove it, or add the '[' or '{' it belongs to");
+  if (has(YAML::ErrorMsg::MAP_VALUE) && pos.line >= 1 && pos.line <= static_cast<int>(l.lines.size())) {
+    // "mass:m" is one text, not a key and a value: the ':' of a key needs a space after it
+    for (int li = pos.line; li >= std::max(1, pos.line - 1); --li) {
+      const std::string& t = l.lines[li - 1];
+      std::size_t b = t.find_first_not_of(' '), k = b;
+      if (k == std::string::npos || !(std::isalpha(static_cast<unsigned char>(t[k])) || t[k] == '_')) continue;
+      while (k < t.size() && (std::isalnum(static_cast<unsigned char>(t[k])) || t[k] == '_')) ++k;
+      if (k + 1 < t.size() && t[k] == ':' && t[k + 1] != ' ' && t[k + 1] != '\r')
+        throw SceneError({l.file, li, static_cast<int>(k) + 1},
+                         "YAML syntax error: '" + t.substr(b, t.find(' ', k) == std::string::npos ? std::string::npos : t.find(' ', k) - b) +
+                             "' has no space after ':', so it is not a key",
+                         "write a space after the ':' ('" + t.substr(b, k - b) + ": …')");
+    }
+  }
+  if (has(YAML::ErrorMsg::MAP_VALUE) && pos.line >= 2 && pos.line <= static_cast<int>(l.lines.size())) {
+    // "key: value" followed by a line indented deeper: YAML reads that line as more of the value
+    const std::string& here = l.lines[pos.line - 1];
+    int pl = pos.line - 1;
+    while (pl >= 1 && (l.lines[pl - 1].find_first_not_of(" \t\r") == std::string::npos ||
+                       l.lines[pl - 1][l.lines[pl - 1].find_first_not_of(" \t\r")] == '#'))
+      --pl;
+    if (pl >= 1) {
+      const std::string& above = l.lines[pl - 1];
+      auto colon = above.find(": ");
+      bool has_value = colon != std::string::npos && above.find_first_not_of(" \t\r", colon + 1) != std::string::npos &&
+                       !opens_block_scalar(above);
+      if (has_value && indentation(here) > indentation(above) && above[indentation(above)] != '-')
+        throw SceneError({l.file, pos.line, static_cast<int>(indentation(here)) + 1},
+                         "YAML syntax error: this line is indented deeper than line " + std::to_string(pl) +
+                             ", which already has its value",
+                         "indent the keys of one map by the same number of spaces");
+    }
+  }
+  if (has(YAML::ErrorMsg::MAP_VALUE) || has(YAML::ErrorMsg::MAP_KEY))
+    throw SceneError(pos, "YAML syntax error: a 'key:' where no key may stand",
+                     "indent the keys of one map by the same number of spaces, or quote a value that holds ': '");
+  if ((has(YAML::ErrorMsg::END_OF_MAP) || has(YAML::ErrorMsg::END_OF_SEQ) || has(YAML::ErrorMsg::BLOCK_ENTRY)) &&
+      pos.line >= 2 && pos.line <= static_cast<int>(l.lines.size())) {
+    // "- a: 1" then "b: 2" at one indentation: a list item and a map key side by side
+    const std::string& here = l.lines[pos.line - 1];
+    std::size_t ind = indentation(here);
+    bool item_here = here.compare(ind, 2, "- ") == 0;
+    for (int pl = pos.line - 1; pl >= 1 && ind < here.size(); --pl) {
+      const std::string& above = l.lines[pl - 1];
+      if (above.find_first_not_of(" \t\r") == std::string::npos) continue;
+      if (indentation(above) < ind) break;
+      if (indentation(above) > ind) continue;
+      bool item_above = above.compare(ind, 2, "- ") == 0;
+      if (item_above != item_here)
+        throw SceneError({l.file, pos.line, static_cast<int>(ind) + 1},
+                         std::string("YAML syntax error: ") +
+                             (item_here ? "a '- ' list item among the keys of a map" : "a key among the '- ' items of a list") +
+                             " (line " + std::to_string(pl) + ")",
+                         "a section is a map ('name: value' entries) or a list ('- ' items), not both; "
+                         "remove the '- ' or add it to every entry");
+      break;
+    }
+  }
+  if (has(YAML::ErrorMsg::END_OF_MAP) || has(YAML::ErrorMsg::END_OF_SEQ) || has(YAML::ErrorMsg::BLOCK_ENTRY))
+    throw SceneError(pos, "YAML syntax error: this line is indented where no entry can start",
+                     "indent the keys of one map (and the '- ' items of one list) by the same number of spaces");
+  if (has(YAML::ErrorMsg::UNKNOWN_ANCHOR) || has(YAML::ErrorMsg::ALIAS_NOT_FOUND) || has(YAML::ErrorMsg::ANCHOR_NOT_FOUND) ||
+      has("alias") || has("anchor"))
+    throw SceneError(pos, "YAML syntax error: a value starting with '*' or '&' is a YAML alias or anchor",
+                     "put the value in quotes, e.g. \"*x\"");
+  if (has(YAML::ErrorMsg::EOF_IN_SCALAR))
+    throw SceneError(pos, "YAML syntax error: a quoted text is not closed", "close it with the same quote it opens with");
+  if (has(YAML::ErrorMsg::INVALID_ESCAPE))
+    throw SceneError(pos, "YAML syntax error: " + m, "in double quotes write '\\\\' for a backslash, or use single quotes");
+  throw SceneError(pos, "YAML syntax error: " + m, "fix the indentation, brackets or quotes near here");
+}
+
+/// Where the second YAML document of a file begins (its '---'), if the file holds one.
+SourcePos second_document(const std::vector<std::string>& lines, const std::string& file) {
+  bool content = false;
+  for (int li = 0; li < static_cast<int>(lines.size()); ++li) {
+    const std::string& l = lines[li];
+    bool marker = l.compare(0, 3, "---") == 0 && (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r');
+    if (marker && content) return {file, li + 1, 1};
+    auto k = l.find_first_not_of(" \t\r");
+    if (!marker && k != std::string::npos && l[k] != '#' && l[k] != '%') content = true;
+  }
+  return {file, 1, 1};
+}
+
+}  // namespace
+
+SceneDef load_string(const std::string& text, const std::string& file) {
+  Loader l{file, split_lines(text)};
+  std::vector<YAML::Node> docs;
+  try {
+    docs = YAML::LoadAll(text);
+  } catch (const YAML::Exception& e) {
+    yaml_error(l, e);
+  }
+  // a quote left open runs to the end of the file, and yaml-cpp takes it all for one text
+  OpenAt open = scan_open(l.lines, static_cast<int>(l.lines.size()) + 1, 0);
+  if (open.quote && open.quote->line < static_cast<int>(l.lines.size()))
+    throw SceneError({file, open.quote->line, open.quote->col},
+                     std::string("YAML syntax error: the quoted text opened here with ") + open.quote->c + " is never closed",
+                     std::string("close it with ") + open.quote->c + " where the text ends");
+  std::vector<YAML::Node> real;
+  for (auto& d : docs)
+    if (d && !d.IsNull()) real.push_back(d);
+  if (real.empty())
     throw SceneError({file, 1, 1}, "the scene is empty", "write a scene: title, parameters, bodies, states, analyses, find");
-  return l.load(root);
+  if (real.size() > 1)
+    throw SceneError(second_document(l.lines, file), "the file holds more than one YAML document ('---')",
+                     "keep one scene per file: remove the second '---' and what follows, or move it to a file of its own");
+  try {
+    return l.load(real.front());
+  } catch (const YAML::Exception& e) {
+    yaml_error(l, e);
+  }
 }
 
 SceneDef load_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SceneError({path, 0, 0}, "cannot open the scene file", "check the path");
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st))
+    throw SceneError({path, 1, 1}, "the scene file does not exist", "check the path and the file name");
+  if (fs::is_directory(st))
+    throw SceneError({path, 1, 1}, "this is a directory, not a scene file", "name a .yaml file inside it");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError({path, 1, 1}, "cannot read the scene file", "check that you may read it (permissions)");
   std::stringstream ss;
   ss << in.rdbuf();
+  if (in.bad()) throw SceneError({path, 1, 1}, "cannot read the scene file", "check that it is a readable file");
   return load_string(ss.str(), path);
 }
 

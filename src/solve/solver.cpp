@@ -20,6 +20,15 @@ std::string str(const ex& e) {
   return os.str();
 }
 
+/// What GiNaC's complaint about a value means, in words.
+std::string math_fault(const std::exception& err) {
+  std::string w = err.what();
+  if (w.find("division by zero") != std::string::npos) return "a division by zero";
+  if (w.find("log(0)") != std::string::npos) return "log(0)";
+  if (w.find("pole") != std::string::npos) return "a function at a pole, like tan at pi/2";
+  return w;
+}
+
 constexpr int kWork = 40;  // working digits for decisions
 
 std::optional<numeric> num(const ex& e, const exmap& env) { return numerics::evaluate(e, env, kWork); }
@@ -64,8 +73,13 @@ public:
     State s;
     for (auto& e : p_.equations) {
       Equation q = e;
-      q.lhs = q.lhs.subs(p_.given);
-      q.rhs = q.rhs.subs(p_.given);
+      try {
+        q.lhs = q.lhs.subs(p_.given);
+        q.rhs = q.rhs.subs(p_.given);
+      } catch (const std::exception& err) {
+        throw SolveError("the " + q.label + " is undefined for the values given at the states (" + math_fault(err) + ")",
+                         "check the values given at the states (a position where a formula divides by zero?)", q.pos);
+      }
       s.eqs.push_back(q);
     }
     work_.push_back(s);
@@ -108,11 +122,21 @@ private:
 
   void assign(State& st, const ex& u, const ex& value, const std::string& how) {
     ex v = value;
-    for (auto& [k, val] : st.b.sol) val = val.subs(u == v);
+    try {
+      for (auto& [k, val] : st.b.sol) val = val.subs(u == v);
+    } catch (const std::exception& err) {
+      throw SolveError("the solution " + str(u) + " = " + str(v) + " makes an earlier result undefined (" + math_fault(err) + ")",
+                       "check the values given at the states", {});
+    }
     st.b.sol[u] = v;
     for (auto& q : st.eqs) {
-      q.lhs = q.lhs.subs(u == v);
-      q.rhs = q.rhs.subs(u == v);
+      try {
+        q.lhs = q.lhs.subs(u == v);
+        q.rhs = q.rhs.subs(u == v);
+      } catch (const std::exception& err) {
+        throw SolveError("the " + q.label + " is undefined when " + str(u) + " = " + str(v) + " (" + math_fault(err) + ")",
+                         "check the values given at the states", q.pos);
+      }
     }
     st.b.steps.push_back(str(u) + " from " + how);
   }

@@ -113,11 +113,31 @@ std::string known_units() {
   return s;
 }
 
+// What to write instead of an unknown unit: the usual spellings students reach for.
+std::string unit_advice(const std::string& name) {
+  static const std::map<std::string, std::string> alias = {
+      {"sec", "s"},     {"secs", "s"},     {"second", "s"},   {"seconds", "s"},  {"S", "s"},
+      {"hr", "h"},      {"hrs", "h"},      {"hour", "h"},     {"hours", "h"},    {"minute", "min"},
+      {"minutes", "min"}, {"mins", "min"}, {"meter", "m"},    {"meters", "m"},   {"metre", "m"},
+      {"metres", "m"},  {"M", "m"},        {"feet", "ft"},    {"foot", "ft"},    {"inch", "in"},
+      {"inches", "in"}, {"kgs", "kg"},     {"KG", "kg"},      {"Kg", "kg"},      {"kilogram", "kg"},
+      {"kilograms", "kg"}, {"gram", "g"},  {"grams", "g"},    {"lbs", "lb"},     {"pound", "lb"},
+      {"pounds", "lb"}, {"n", "N"},        {"newton", "N"},   {"newtons", "N"},  {"kn", "kN"},
+      {"j", "J"},       {"joule", "J"},    {"joules", "J"},   {"w", "W"},        {"watt", "W"},
+      {"watts", "W"},   {"kw", "kW"},      {"KW", "kW"},      {"rads", "rad"},   {"radian", "rad"},
+      {"radians", "rad"}, {"degree", "deg"}, {"degrees", "deg"}, {"revs", "rev"}, {"revolution", "rev"},
+      {"revolutions", "rev"}, {"RPM", "rpm"}, {"HP", "hp"},   {"slugs", "slug"}, {"hz", "Hz"}};
+  auto a = alias.find(name);
+  if (a != alias.end()) return "write '" + a->second + "'";
+  return "use one of: " + known_units();
+}
+
 // unit   := factor (('*' | '·' | '/') factor)*
 // factor := NAME ('^' INT)? | '1' | '(' unit ')' ('^' INT)?
 struct UnitParser {
   const std::string& s;
   std::size_t i = 0;
+  int depth = 0;  ///< nested '(': bounded, so a pathological text cannot exhaust the stack
 
   void skip() {
     while (i < s.size() && s[i] == ' ') ++i;
@@ -152,8 +172,10 @@ struct UnitParser {
     skip();
     Unit u;
     if (i < s.size() && s[i] == '(') {
+      if (++depth > 20) fail("a unit nested too deeply in parentheses", "write the unit plainly, e.g. kg*m^2/s^2");
       ++i;
       u = unit();
+      --depth;
       skip();
       if (i >= s.size() || s[i] != ')') fail("unit has an unclosed '('", "close it with ')'");
       ++i;
@@ -170,7 +192,7 @@ struct UnitParser {
       auto it = table().find(name);
       if (it == table().end()) {
         i = b;
-        fail("unknown unit '" + name + "'", "use one of: " + known_units());
+        fail("unknown unit '" + name + "'", unit_advice(name));
       }
       u.factor = it->second.factor;
       u.dim = it->second.dim;
@@ -186,6 +208,11 @@ struct UnitParser {
       std::size_t b = i;
       while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
       if (b == i) fail("expected an integer exponent after '^'", "write e.g. m^2 or s^-2");
+      if (i - b > 2) {
+        i = b;
+        fail("the exponent '" + s.substr(b, s.find_first_not_of("0123456789", b) - b) + "' of a unit is too large",
+             "a unit's exponent is a small integer, e.g. m^2 or s^-2");
+      }
       int p = std::stoi(s.substr(b, i - b));
       if (neg) p = -p;
       if (paren) {
@@ -248,7 +275,7 @@ bool parse_decimal(const std::string& s, std::size_t& pos, numeric& out, int* si
     std::size_t b = j;
     while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) ++j;
     if (j > b) {
-      if (j - b > 6) throw InputError("exponent too large in '" + s.substr(pos, j - pos) + "'", "write a number between 1e-999999 and 1e999999");
+      if (j - b > 4) throw InputError("exponent too large in '" + s.substr(pos, j - pos) + "'", "write a number between 1e-9999 and 1e9999");
       exp10 = std::stol(s.substr(b, j - b));
       if (eneg) exp10 = -exp10;
       i = j;

@@ -46,6 +46,7 @@ struct PointRef {
   std::string text;
   int body = -1;          ///< -1: fixed point
   bool world_place = false;  ///< body material point at world place (wx, wy)
+  bool ground = false;    ///< the fixed ground (a contact party without a point)
   ex lx = 0, ly = 0;      ///< body-local offset from G
   ex wx = 0, wy = 0;      ///< fixed point / world place
 };
@@ -62,6 +63,11 @@ struct Effect {
   // couple (M) / force (F at a) / friction (mu, normal at a) / friction_couple (M) / power (P)
   ex M = 0, Fx = 0, Fy = 0, mu = 0, normal = 0, P = 0;
   std::optional<int> direction;  ///< friction: +1 / −1 sign of the motion, if declared
+  // contact (parties a, b; unit normal from a into b; restitution e; rough without sliding)
+  ex nx = 0, ny = 0, e = 0;
+  bool stick = false;
+  // impulse: a given impulse at point a
+  ex Jx = 0, Jy = 0;
 };
 
 struct State {
@@ -74,9 +80,24 @@ struct State {
 };
 
 struct Analysis {
-  std::string kind;
+  std::string kind;  ///< energy, momentum, angular_momentum, impact
   SourcePos pos;
   int from = -1, to = -1;
+  std::vector<int> bodies;        ///< the body set (all bodies unless listed)
+  bool has_along = false;         ///< momentum: one direction only
+  ex nx = 0, ny = 0;
+  std::string along_name;
+  PointRef about;                 ///< angular_momentum: the moment point
+  bool conserved = false;         ///< claimed conserved: checked against the effects
+  bool instant = false;           ///< an impact: positions do not change
+  std::vector<int> contacts;      ///< impact: contact effects
+  /// Unknown impulses this analysis brings: pin reactions (Rx, Ry) by effect name (momentum),
+  /// contact impulses (J along n, Jt along the tangent) by effect name (impact), and one
+  /// impulsive constraint reaction per constraint (impact).
+  std::map<std::string, std::pair<ex, ex>> reactions;
+  std::map<std::string, std::pair<ex, ex>> contact_impulses;
+  std::vector<ex> lambdas;
+  std::vector<ex> unknowns;       ///< all of the above, in a stable order
 };
 
 /// How to pick between roots for a named result.
@@ -150,10 +171,28 @@ public:
   ex power(const Effect& e) const;
   /// Angular momentum of all bodies about point P: Σ Ī ω + (r_G − r_P) × m v̄.
   ex angular_momentum(const PointRef& p) const;
+  /// The same for a set of bodies.
+  ex angular_momentum(const PointRef& p, const std::vector<int>& bodies) const;
+  /// Linear momentum Σ m v̄ of a set of bodies.
+  std::pair<ex, ex> linear_momentum(const std::vector<int>& bodies) const;
+  /// ∂r_P/∂q (for a material point at a world place: ∂r_G/∂q + ∂φ/∂q k × (w − r_G)).
+  std::pair<ex, ex> position_derivative(const PointRef& p, const GiNaC::symbol& q) const;
+  /// Impulse (x, y) of an effect over an analysis' interval: a contact's J n (+ Jt t), a pin's
+  /// reaction (an unknown, or in an impact the body's momentum change minus the other impulses
+  /// on it), a given impulse, ∫F dt of a constant or time-dependent force.
+  /// @throws InputError when the effect has no impulse there.
+  std::pair<ex, ex> impulse(int effect, int analysis) const;
+  /// Kinetic energy lost at a contact in an impact, −½[(1 − e) J v_n⁻ + Jt v_t⁻]
+  /// (= ½(1 − e²) m_eff v_n⁻² for one smooth contact), free of the cancellation of T₁ − T₂.
+  ex impact_loss(int contact, int analysis) const;
+  /// The analysis between two states (−1 when none).
+  int analysis_between(int from, int to) const;
 
   // --- states ---
   int state_index(const std::string& name) const;  ///< −1 when none
   ex bind(const ex& e, int state) const;           ///< generic → state symbols
+  /// Positions (and t) from one state, rates from another: velocities just after an impact.
+  ex bind_mixed(const ex& e, int position_state, int rate_state) const;
   GiNaC::exmap parameter_values() const;           ///< parameter symbol → exact value
   /// Values for numeric decisions (root choice, directions, zero tests): the parameters' values,
   /// and for a parameter given without a value (taken as positive) a fixed sample value.

@@ -1,5 +1,7 @@
 /// @file simplify.hpp  Trigonometric simplification without normal() on big trig expressions.
 #pragma once
+#include <optional>
+
 #include <ginac/ginac.h>
 
 namespace kinergy::model {
@@ -16,6 +18,10 @@ GiNaC::ex root_simplify(const GiNaC::ex& e);
 
 /// Collect a quadratic form in `rates` and trig-simplify each coefficient.
 GiNaC::ex collect_simplify(const GiNaC::ex& e, const GiNaC::lst& rates);
+
+/// Antiderivative of f in s when an elementary rule applies (sums, constant factors,
+/// powers and sin/cos/exp/sinh/cosh of a linear argument); nothing otherwise.
+std::optional<GiNaC::ex> antiderivative(const GiNaC::ex& f, const GiNaC::symbol& s);
 
 /// Number of nodes in an expression tree (a size measure).
 std::size_t ex_size(const GiNaC::ex& e);

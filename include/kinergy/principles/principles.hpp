@@ -40,6 +40,7 @@ public:
   void set(const ex& sym, const GiNaC::numeric& v) { known_[sym] = v; }
 private:
   GiNaC::exmap known_;
+  GiNaC::exmap env_;  ///< parameter values
 };
 
 /// Energy terms of one side.

@@ -1,0 +1,402 @@
+#include "kinergy/principles/momentum.hpp"
+
+#include <algorithm>
+#include <random>
+#include <sstream>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/model/simplify.hpp"
+
+namespace kinergy::principles {
+
+using namespace GiNaC;
+using model::Analysis;
+using model::Effect;
+using model::Model;
+using model::PointRef;
+
+namespace {
+
+std::string str(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
+bool in_set(const std::vector<int>& s, int b) { return std::find(s.begin(), s.end(), b) != s.end(); }
+
+/// Zero for every value of the coordinates (symbolic, then numeric at random points)?
+bool vanishes(const Model& m, const ex& e) {
+  ex x = model::trig_simplify(e);
+  if (x.is_zero()) return true;
+  exmap env = m.numeric_environment();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (int i = 0; i < 4; ++i) {
+    exmap at = env;
+    for (auto& c : m.coords) {
+      at[c.q] = numeric(u(rng));
+      at[c.qd] = numeric(u(rng));
+    }
+    at[m.t] = numeric(u(rng) + 2);
+    ex v = x.subs(at).evalf();
+    if (!is_a<numeric>(v) || std::abs(ex_to<numeric>(v).to_double()) > 1e-12) return false;
+  }
+  return true;
+}
+
+bool motion_free(const Model& m, const ex& e) {
+  for (auto& c : m.coords)
+    if (e.has(c.q) || e.has(c.qd)) return false;
+  return true;
+}
+
+/// ∫_{t₁}^{t₂} f(t) dt for f free of the motion.
+ex time_integral(const Model& m, const Effect& e, const ex& f, const Analysis& a) {
+  ex dt = m.states[a.to].t - m.states[a.from].t;
+  if (!f.has(m.t)) return f * dt;
+  auto F = antiderivative(f, m.t);
+  if (!F)
+    throw SceneError(e.pos, "the impulse of '" + e.name + "' has no closed form in t",
+                     "write it with an elementary antiderivative (polynomials, sin, cos, exp of a t)");
+  return F->subs(m.t == m.states[a.to].t) - F->subs(m.t == m.states[a.from].t);
+}
+
+std::string state_pair(const Model& m, const Analysis& a) {
+  return "states " + m.states[a.from].name + " -> " + m.states[a.to].name;
+}
+
+/// Sign of an expression at a state, from what is known there.
+int sign_at(const Model& m, const Effect& e, const ex& bound, const Knowledge& k, const std::string& what,
+            const std::string& state) {
+  auto v = k.value(bound);
+  if (v && !v->is_zero()) return v->is_positive() ? 1 : -1;
+  throw SceneError(e.pos, "the direction of " + what + " under '" + e.name + "' at state '" + state + "' is not known",
+                   "give the velocities at state '" + state + "'");
+  (void)m;
+}
+
+/// A force (and where it acts) that an effect exerts on the body set over the interval.
+struct Push {
+  ex Fx = 0, Fy = 0;  ///< force (generic; may depend on t)
+  ex arm_x = 0, arm_y = 0;  ///< application point (generic)
+  ex M = 0;           ///< a couple (generic)
+  bool unknown = false;  ///< pin reaction
+  ex Rx = 0, Ry = 0;
+};
+
+/// The external forces of effect e on the bodies of analysis a; empty when e is internal or
+/// does not act on them. Throws when its impulse cannot be taken over a duration.
+std::vector<Push> pushes(const Model& m, const Effect& e, const Analysis& a, const Knowledge& k) {
+  std::vector<Push> out;
+  const auto& S = a.bodies;
+  const std::string& kind = e.kind;
+  auto on = [&](int b) { return b >= 0 && in_set(S, b); };
+  if (kind == "gravity") {
+    for (int b : S) {
+      Push p;
+      p.Fx = m.bodies[b].mass * e.g * e.dir_x;
+      p.Fy = m.bodies[b].mass * e.g * e.dir_y;
+      p.arm_x = m.bodies[b].x;
+      p.arm_y = m.bodies[b].y;
+      out.push_back(p);
+    }
+  } else if (kind == "force") {
+    if (!on(e.a.body)) return out;
+    Push p;
+    p.Fx = e.Fx;
+    p.Fy = e.Fy;
+    auto [x, y] = m.position(e.a);
+    p.arm_x = x;
+    p.arm_y = y;
+    out.push_back(p);
+  } else if (kind == "couple") {
+    if (!on(e.body)) return out;
+    Push p;
+    p.M = e.M;
+    out.push_back(p);
+  } else if (kind == "friction") {
+    if (!on(e.a.body)) return out;
+    // kinetic friction −μN û against the sliding velocity of the point at the first state
+    auto [vx, vy] = m.velocity(e.a);
+    ex ux, uy;
+    bool x0 = vanishes(m, vy), y0 = vanishes(m, vx);
+    const std::string S1 = m.states[a.from].name;
+    if (x0 && !y0) {
+      ux = sign_at(m, e, m.bind(vx, a.from), k, "sliding", S1);
+      uy = 0;
+    } else if (y0 && !x0) {
+      ux = 0;
+      uy = sign_at(m, e, m.bind(vy, a.from), k, "sliding", S1);
+    } else {
+      throw SceneError(e.pos, "friction '" + e.name + "' slides along a changing direction; its impulse needs the motion in time",
+                       "use friction whose contact slides along a fixed line (x or y)");
+    }
+    Push p;
+    p.Fx = -e.mu * e.normal * ux;
+    p.Fy = -e.mu * e.normal * uy;
+    auto [x, y] = m.position(e.a);
+    p.arm_x = x;
+    p.arm_y = y;
+    out.push_back(p);
+  } else if (kind == "friction_couple") {
+    if (!on(e.body)) return out;
+    Push p;
+    p.M = -e.M * sign_at(m, e, m.bind(m.omega(e.body), a.from), k, "rotation", m.states[a.from].name);
+    out.push_back(p);
+  } else if (kind == "pin") {
+    bool ia = on(e.a.body), ib = on(e.b.body);
+    if (ia == ib) return out;  // internal, or not acting on the set
+    auto it = a.reactions.find(e.name);
+    if (it == a.reactions.end()) return out;
+    Push p;
+    p.unknown = true;
+    p.Rx = it->second.first;
+    p.Ry = it->second.second;
+    auto [x, y] = m.position(ia ? e.a : e.b);
+    p.arm_x = x;
+    p.arm_y = y;
+    out.push_back(p);
+  } else if (kind == "impulse") {
+    if (!on(e.a.body)) return out;
+    Push p;  // a given impulse: Fx, Fy hold the impulse itself (no time integral)
+    p.Rx = e.Jx;
+    p.Ry = e.Jy;
+    p.unknown = true;
+    auto [x, y] = m.position(e.a);
+    p.arm_x = x;
+    p.arm_y = y;
+    out.push_back(p);
+  } else if (kind == "spring" || kind == "torsion_spring") {
+    bool ia = kind == "spring" ? on(e.a.body) : on(e.body);
+    bool ib = kind == "spring" ? on(e.b.body) : on(e.body2);
+    if (ia == ib) return out;
+    throw SceneError(e.pos, "the " + kind + " '" + e.name + "' pushes with a force that changes with the motion; its impulse over a duration has no closed form",
+                     "include both of its ends in the analysis' bodies, or use an energy analysis");
+  } else if (kind == "power") {
+    if (!on(e.body)) return out;
+    throw SceneError(e.pos, "a power drive '" + e.name + "' has no impulse of its own",
+                     "give the drive as a couple or a force, or use an energy analysis");
+  }
+  return out;
+}
+
+ex dot(const ex& ax, const ex& ay, const ex& bx, const ex& by) { return ax * bx + ay * by; }
+ex cross(const ex& ax, const ex& ay, const ex& bx, const ex& by) { return ax * by - ay * bx; }
+
+/// Which bodies are in the set, for messages.
+std::string set_name(const Model& m, const Analysis& a) {
+  if (a.bodies.size() == m.bodies.size()) return "all bodies";
+  std::string s;
+  for (int b : a.bodies) s += (s.empty() ? "" : ", ") + m.bodies[b].name;
+  return s;
+}
+
+}  // namespace
+
+MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
+  MomentumBalance out;
+  out.conserved = a.conserved;
+  std::vector<std::pair<std::string, std::pair<ex, ex>>> dirs;
+  if (a.has_along) dirs.push_back({a.along_name, {a.nx, a.ny}});
+  else dirs = {{"x", {1, 0}}, {"y", {0, 1}}};
+  for (auto& [name, n] : dirs) {
+    auto [nx, ny] = n;
+    MomentumBalance::Component c;
+    c.name = name;
+    // L·n = Σ m v̄·n
+    ex L = 0;
+    for (int b : a.bodies) L += m.bodies[b].mass * dot(m.rate(m.bodies[b].x), m.rate(m.bodies[b].y), nx, ny);
+    L = model::collect_simplify(L, [&] { lst l; for (auto& co : m.coords) l.append(co.qd); return l; }());
+    c.before = m.bind(L, a.from);
+    c.after = m.bind(L, a.to);
+    ex I = 0;
+    for (auto& e : m.effects) {
+      for (auto& p : pushes(m, e, a, k)) {
+        ex In;
+        std::string how;
+        if (p.unknown) {
+          In = dot(p.Rx, p.Ry, nx, ny);
+          how = e.kind == "pin" ? "reaction impulse (unknown)" : "given impulse";
+        } else {
+          ex Fn = dot(p.Fx, p.Fy, nx, ny);
+          if (vanishes(m, Fn)) continue;
+          if (!motion_free(m, model::trig_simplify(Fn)))
+            throw SceneError(e.pos, "the force of '" + e.name + "' along " + name + " changes with the motion; its impulse has no closed form",
+                             "use an energy analysis, or a force that is constant or a function of t");
+          In = time_integral(m, e, model::trig_simplify(Fn), a);
+          how = "integral of F dt";
+        }
+        if (In.is_zero()) continue;
+        if (a.conserved)
+          throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
+                                      state_pair(m, a) + ": effect '" + e.name + "' has an impulse " + str(In),
+                           "remove 'conserved: true' so its impulse is included, or choose another direction");
+        c.impulses.push_back({e.name, In, how});
+        I += In;
+      }
+    }
+    c.equation = {c.before + I, c.after, a.conserved ? "conservation of linear momentum" : "linear impulse-momentum",
+                  std::string(a.conserved ? "conservation of linear momentum" : "linear impulse-momentum") + " along " + name + ", " +
+                      state_pair(m, a),
+                  a.pos};
+    out.components.push_back(c);
+  }
+  return out;
+}
+
+MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
+  MomentumBalance out;
+  out.conserved = a.conserved;
+  MomentumBalance::Component c;
+  c.name = "moment about " + a.about.text;
+  ex H = m.angular_momentum(a.about, a.bodies);
+  c.before = m.bind(H, a.from);
+  c.after = m.bind(H, a.to);
+  auto [px, py] = m.position(a.about);
+  ex I = 0;
+  for (auto& e : m.effects) {
+    for (auto& p : pushes(m, e, a, k)) {
+      // moment about P: (r_Q − r_P) × F, plus couples
+      ex Mp, In;
+      std::string how;
+      if (p.unknown) {
+        // (r_Q − r_P) × R; a reaction's arm must stay fixed over the interval, a given impulse
+        // acts at the first state
+        ex ax = model::trig_simplify(p.arm_x - px), ay = model::trig_simplify(p.arm_y - py);
+        if (vanishes(m, ax) && vanishes(m, ay)) continue;
+        if (e.kind == "pin" && !(motion_free(m, ax) && motion_free(m, ay)) && !a.instant)
+          throw SceneError(e.pos, "the reaction of pin '" + e.name + "' acts at a point that moves relative to " + a.about.text +
+                                      ", so its angular impulse is unknown in a way no equation fixes",
+                           "take moments about the pin itself, or about a fixed point");
+        In = m.bind(cross(ax, ay, p.Rx, p.Ry), a.from);
+        how = e.kind == "pin" ? "moment of the reaction impulse (unknown)" : "moment of the given impulse";
+      } else {
+        Mp = model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
+        if (vanishes(m, Mp)) continue;
+        if (!motion_free(m, Mp))
+          throw SceneError(e.pos, "the moment of '" + e.name + "' about " + a.about.text + " changes with the motion (" + str(Mp) +
+                                      "); its angular impulse has no closed form",
+                           "take moments about a point where it is constant (a pivot, the mass centre), or use an energy analysis");
+        In = time_integral(m, e, Mp, a);
+        how = "integral of M dt";
+      }
+      if (In.is_zero()) continue;
+      if (a.conserved)
+        throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about.text + " is not conserved between " +
+                                    state_pair(m, a) + ": effect '" + e.name + "' has a moment about " + a.about.text,
+                         "remove 'conserved: true' so its angular impulse is included, or take moments about another point");
+      c.impulses.push_back({e.name, In, how});
+      I += In;
+    }
+  }
+  const char* what = a.conserved ? "conservation of angular momentum" : "angular impulse-momentum";
+  c.equation = {c.before + I, c.after, what, std::string(what) + " about " + a.about.text + ", " + state_pair(m, a), a.pos};
+  out.components.push_back(c);
+  return out;
+}
+
+ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
+  ImpactBalance out;
+  const int B = a.from, A = a.to;  // before, after
+  const std::string SB = m.states[B].name, SA = m.states[A].name;
+  // positions do not change during an impact
+  for (auto& c : m.coords) {
+    ex qb = m.states[B].sym.at(c.name).first, qa = m.states[A].sym.at(c.name).first;
+    out.positions.push_back({qa, qb, "impact", "positions kept in the impact " + SB + " -> " + SA, a.pos});
+  }
+  out.positions.push_back({m.states[A].t, m.states[B].t, "impact", "time of the impact " + SB + " -> " + SA, a.pos});
+
+  // velocities after, at the positions before
+  auto after = [&](const ex& e) { return m.bind_mixed(e, B, A); };
+  auto before = [&](const ex& e) { return m.bind(e, B); };
+
+  struct Party {
+    std::pair<ex, ex> v, r;  // generic velocity and position
+  };
+  auto party = [&](const PointRef& p) {
+    Party x;
+    if (p.ground) {
+      x.v = {0, 0};
+      x.r = {0, 0};
+    } else {
+      x.v = m.velocity(p);
+      x.r = m.position(p);
+    }
+    return x;
+  };
+
+  // generalized impulse–momentum along each coordinate q_i:
+  //   Σ_b [m_b Δv̄_b·∂r_G/∂q_i + Ī_b Δω_b ∂φ_b/∂q_i] = Σ_c P_c·(∂r_B/∂q_i − ∂r_A/∂q_i) + Σ_g J_g·∂r_g/∂q_i + Σ_k λ_k ∂c_k/∂q_i
+  for (std::size_t i = 0; i < m.coords.size(); ++i) {
+    const symbol& q = m.coords[i].q;
+    ex lhs = 0;
+    for (std::size_t bi = 0; bi < m.bodies.size(); ++bi) {
+      const auto& b = m.bodies[bi];
+      ex vx = m.rate(b.x), vy = m.rate(b.y), w = m.omega(static_cast<int>(bi));
+      ex Jx = b.x.diff(q), Jy = b.y.diff(q), Jw = b.angle.diff(q);
+      lhs += b.mass * ((after(vx) - before(vx)) * before(Jx) + (after(vy) - before(vy)) * before(Jy)) +
+             b.inertia * (after(w) - before(w)) * before(Jw);
+    }
+    ex rhs = 0;
+    for (int ci : a.contacts) {
+      const Effect& e = m.effects[ci];
+      const auto& [J, Jt] = a.contact_impulses.at(e.name);
+      auto dr = [&](const PointRef& p) -> std::pair<ex, ex> {
+        if (p.ground || p.body < 0) return {0, 0};
+        return m.position_derivative(p, q);
+      };
+      auto [dbx, dby] = dr(e.b);
+      auto [dax, day] = dr(e.a);
+      ex wn = dot(dbx - dax, dby - day, e.nx, e.ny);
+      rhs += J * before(wn);
+      if (e.stick) rhs += Jt * before(dot(dbx - dax, dby - day, -e.ny, e.nx));
+    }
+    for (auto& e : m.effects) {
+      if (e.kind != "impulse") continue;
+      auto [dx, dy] = m.position_derivative(e.a, q);
+      rhs += before(dot(e.Jx, e.Jy, dx, dy));
+    }
+    for (std::size_t kk = 0; kk < m.constraints.size(); ++kk)
+      rhs += a.lambdas[kk] * before(m.constraints[kk].first.diff(q));
+    ex res = model::trig_simplify(lhs - rhs);
+    if (res.is_zero()) continue;
+    out.momentum.push_back({lhs, rhs, "impulse-momentum",
+                            "impulse-momentum along " + m.coords[i].name + " in the impact " + SB + " -> " + SA, a.pos});
+  }
+
+  for (int ci : a.contacts) {
+    const Effect& e = m.effects[ci];
+    Party pa = party(e.a), pb = party(e.b);
+    // the parties must touch at the impact
+    if (!e.a.ground && !e.b.ground) {
+      auto dx = k.value(before(pb.r.first - pa.r.first)), dy = k.value(before(pb.r.second - pa.r.second));
+      if (dx && dy) {
+        double d = std::hypot(dx->to_double(), dy->to_double());
+        double scale = 1;
+        if (auto s = k.value(before(pa.r.first))) scale = std::max(scale, std::abs(s->to_double()));
+        if (d > 1e-9 * scale)
+          throw SceneError(e.pos, "contact '" + e.name + "': " + e.a.text + " and " + e.b.text + " are " + std::to_string(d) +
+                                      " m apart at state '" + SB + "', so they cannot strike each other there",
+                           "give positions at '" + SB + "' that bring the two points together");
+      }
+    }
+    // restitution: (v_B′ − v_A′)·n = −e (v_B − v_A)·n
+    ex vn_after = dot(pb.v.first - pa.v.first, pb.v.second - pa.v.second, e.nx, e.ny);
+    ex vn_before = before(vn_after);
+    if (auto v = k.value(vn_before); v && !v->is_negative())
+      throw SceneError(e.pos, "contact '" + e.name + "': the parties are not approaching along the normal at state '" + SB +
+                                  "' (relative normal velocity " + std::to_string(v->to_double()) + " m/s), so no impact happens",
+                       "check the normal: it points from the first party (" + e.a.text + ") into the second (" + e.b.text + ")");
+    out.restitution.push_back({after(vn_after), -e.e * vn_before, "restitution",
+                               "restitution at contact " + e.name + " in the impact " + SB + " -> " + SA, e.pos});
+    if (e.stick) {
+      ex vt = dot(pb.v.first - pa.v.first, pb.v.second - pa.v.second, -e.ny, e.nx);
+      out.restitution.push_back({after(vt), 0, "no sliding",
+                                 "no sliding at contact " + e.name + " after the impact " + SB + " -> " + SA, e.pos});
+    }
+  }
+  return out;
+}
+
+}  // namespace kinergy::principles

@@ -1,0 +1,875 @@
+// Every way a scene can be wrong ends with one line `FILE:LINE:COL: what is wrong — what would
+// fix it` (a kinergy::SceneError) and, from the command line, exit status 1: never a crash, a
+// hang, an uncaught exception, an "internal error" or a NaN printed as an answer.
+//
+// Most cases edit a good scene (kRod, kBlock) in one place and check that the error names that
+// place: `at(text, needle, k)` is the line and column of the k-th character of `needle`, which
+// must occur exactly once in the edited text. File cases live in tests/data/bad/.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/problem.hpp"
+#include "kinergy/scene/scene.hpp"
+
+namespace fs = std::filesystem;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// The sliding rod of derivations/energy/sliding_rod.yaml, without its description.
+const std::string kRod = R"(title: Rod sliding on two tracks
+parameters:
+  m: 5 kg
+  l: 1.2 m
+  g: 9.81 m/s^2
+  theta2: 30 deg
+coordinates:
+  theta: rad
+bodies:
+  rod:
+    mass: m
+    inertia: {slender_rod: l}
+    position: [l/2*cos(theta), -l/2*sin(theta)]
+    angle: theta
+    points: {B: [-l/2, 0], A: [l/2, 0]}
+effects:
+  gravity: {g: g}
+states:
+  1: {theta: 0, theta_dot: 0}
+  2: {theta: theta2}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  omega2: {value: theta_dot@2, root: positive, unit: rad/s}
+expect:
+  omega2: {form: sqrt(3*g*sin(theta2)/l), value: 3.50 rad/s}
+)";
+
+const std::string kRodExpect = "expect:\n  omega2: {form: sqrt(3*g*sin(theta2)/l), value: 3.50 rad/s}\n";
+const std::string kRodFind = "omega2: {value: theta_dot@2, root: positive, unit: rad/s}";
+
+// A block sent up a smooth incline with speed v1; it reaches x = 0.5 m (v1² > g sin β).
+const std::string kBlock = R"(title: Block sent up an incline
+parameters:
+  m: 2 kg
+  beta: 30 deg
+  g: 9.81 m/s^2
+  v1: 3 m/s
+coordinates:
+  x: m
+bodies:
+  block:
+    mass: m
+    inertia: particle
+    position: [x*cos(beta), x*sin(beta)]
+effects:
+  gravity: {g: g}
+states:
+  1: {x: 0, x_dot: v1}
+  2: {x: 0.5 m}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  v2: {value: x_dot@2, root: positive, unit: m/s}
+)";
+
+struct Pos {
+  int line, col;
+};
+
+/// Line and column of character `k` of `needle`, the only occurrence in `text`.
+Pos at(const std::string& text, const std::string& needle, std::size_t k = 0) {
+  auto i = text.find(needle);
+  INFO("needle: " << needle);
+  REQUIRE(i != std::string::npos);
+  REQUIRE(text.find(needle, i + 1) == std::string::npos);
+  i += k;
+  int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(i), '\n'));
+  auto nl = text.rfind('\n', i == 0 ? 0 : i - 1);
+  int col = static_cast<int>(nl == std::string::npos || i == 0 ? i + 1 : i - nl);
+  return {line, col};
+}
+
+/// `text` with the first `from` replaced by `to`.
+std::string edit(std::string text, const std::string& from, const std::string& to) {
+  auto i = text.find(from);
+  INFO("edit: " << from);
+  REQUIRE(i != std::string::npos);
+  return text.replace(i, from.size(), to);
+}
+
+std::string rod(const std::string& from, const std::string& to) { return edit(kRod, from, to); }
+std::string block(const std::string& from, const std::string& to) { return edit(kBlock, from, to); }
+/// The rod without its expect and with another find.
+std::string rod_find(const std::string& find) { return edit(edit(kRod, kRodExpect, ""), kRodFind, find); }
+
+const std::string kDash = " \u2014 ";
+
+/// True when `s` shows a NaN or an internal error, which bad input must never produce.
+bool looks_broken(const std::string& s) {
+  static const std::regex nan("\\bnan\\b", std::regex::icase);
+  return std::regex_search(s, nan) || s.find("internal error") != std::string::npos;
+}
+
+/// The one-line form of an error: prefix, what is wrong, " — ", a non-empty fix.
+void check_form(const kinergy::SceneError& e, const std::string& file) {
+  std::string w = e.what();
+  INFO(w);
+  std::string prefix = file + ":" + std::to_string(e.pos().line) + ":" + std::to_string(e.pos().col) + ": ";
+  CHECK(w.rfind(prefix, 0) == 0);
+  CHECK(e.pos().line >= 1);
+  CHECK(e.pos().col >= 1);
+  CHECK(w.find('\n') == std::string::npos);
+  auto dash = w.find(kDash);
+  REQUIRE(dash != std::string::npos);
+  CHECK(w.substr(dash + kDash.size()) == e.fix());
+  CHECK(!e.fix().empty());
+  CHECK(!e.problem().empty());
+  CHECK(w == prefix + e.problem() + kDash + e.fix());
+  CHECK_FALSE(looks_broken(w));
+}
+
+/// Load and solve a scene; the SceneError it ends with, if any. Any other exception fails the test.
+std::optional<kinergy::SceneError> error_of(const std::string& text) {
+  try {
+    kinergy::solve_scene(kinergy::scene::load_string(text, "bad.yaml"));
+  } catch (const kinergy::SceneError& e) {
+    return e;
+  }
+  return std::nullopt;
+}
+
+/// The scene fails at `p` with `phrase` in what is wrong (and `fix_phrase` in the fix).
+void expect_error(const std::string& text, Pos p, const std::string& phrase, const std::string& fix_phrase = "") {
+  INFO("scene:\n" << text);
+  auto e = error_of(text);
+  REQUIRE(e.has_value());
+  INFO("error: " << e->what());
+  CHECK(e->pos().file == "bad.yaml");
+  CHECK(e->pos().line == p.line);
+  CHECK(e->pos().col == p.col);
+  CHECK_THAT(e->problem(), Contains(phrase));
+  if (!fix_phrase.empty()) CHECK_THAT(e->fix(), Contains(fix_phrase));
+  check_form(*e, "bad.yaml");
+}
+
+// --- the command line ---
+
+struct Run {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// Run `kinergy ARGS` with stdout and stderr captured.
+Run cli(const std::string& args) {
+  static int n = 0;
+  fs::path base = fs::temp_directory_path() / ("kinergy_errors_" + std::to_string(getpid()) + "_" + std::to_string(++n));
+  fs::path out = base.string() + ".out", err = base.string() + ".err";
+  std::string cmd = std::string("\"") + KINERGY_CLI + "\" " + args + " >\"" + out.string() + "\" 2>\"" + err.string() + "\"";
+  int rc = std::system(cmd.c_str());
+  Run r;
+  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+std::string bad_file(const std::string& name) { return std::string(KINERGY_SOURCE_DIR) + "/tests/data/bad/" + name; }
+
+std::size_t lines_of(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+// ------------------------------------------------------------------------------------------
+
+TEST_CASE("the scenes the error cases start from are good", "[errors]") {
+  CHECK_FALSE(error_of(kRod).has_value());
+  CHECK_FALSE(error_of(kBlock).has_value());
+  CHECK_FALSE(error_of(rod_find("th: theta@2")).has_value());
+}
+
+TEST_CASE("YAML syntax errors point at the fault and say what to fix", "[errors][yaml]") {
+  SECTION("bad indentation: a line deeper than the key above it") {
+    auto t = rod("    mass: m\n", "   mass: m\n");
+    expect_error(t, at(t, "    inertia:", 4), "YAML syntax error", "indent");
+  }
+  SECTION("bad indentation: a line shallower than its siblings") {
+    auto t = rod("  l: 1.2 m\n", " l: 1.2 m\n");
+    expect_error(t, at(t, " l: 1.2 m", 1), "YAML syntax error", "same number of spaces");
+  }
+  SECTION("a key without a space after ':'") {
+    auto t = rod("    mass: m\n", "    mass:m\n");
+    expect_error(t, at(t, "mass:m", 4), "no space after ':'", "mass: ");
+  }
+  SECTION("an unclosed '[' is shown where it opens, not lines later") {
+    auto t = rod("[l/2*cos(theta), -l/2*sin(theta)]", "[l/2*cos(theta), -l/2*sin(theta)");
+    expect_error(t, at(t, "[l/2*cos"), "unclosed '['", "']'");
+  }
+  SECTION("an unclosed '{'") {
+    auto t = rod("{slender_rod: l}", "{slender_rod: l");
+    expect_error(t, at(t, "{slender_rod"), "unclosed '{'", "'}'");
+  }
+  SECTION("a closing bracket that closes nothing") {
+    auto t = rod("A: [l/2, 0]}", "A: [l/2, 0]}}");
+    expect_error(t, at(t, "}}", 1), "closes nothing");
+  }
+  SECTION("a tab in the indentation") {
+    auto t = rod("    mass: m\n", "\tmass: m\n");
+    expect_error(t, at(t, "\tmass"), "a tab in the indentation", "spaces");
+  }
+  SECTION("a quote never closed (yaml-cpp would swallow the rest of the file into it)") {
+    auto t = rod("    mass: m\n", "    mass: \"m\n");
+    expect_error(t, at(t, "\"m"), "never closed", "\"");
+    auto t2 = rod("title: Rod", "title: 'Rod");
+    expect_error(t2, at(t2, "'Rod"), "never closed", "'");
+  }
+  SECTION("a '*' at the start of a value is a YAML alias") {
+    auto t = rod("    mass: m\n", "    mass: *m\n");
+    expect_error(t, at(t, "*m"), "alias", "quotes");
+  }
+  SECTION("two YAML documents in one file") {
+    auto t = kRod + "---\ntitle: another scene\n";
+    expect_error(t, at(t, "---"), "more than one YAML document", "one scene per file");
+  }
+  SECTION("nesting too deep for a scene") {
+    auto t = "title: x\nparameters: " + std::string(5000, '[') + std::string(5000, ']') + "\n";
+    auto e = error_of(t);
+    REQUIRE(e);
+    CHECK(e->pos().line == 2);
+    CHECK_THAT(e->problem(), Contains("nested too deeply"));
+    check_form(*e, "bad.yaml");
+  }
+}
+
+TEST_CASE("an empty scene, or one that is not a map", "[errors][yaml]") {
+  expect_error("", {1, 1}, "the scene is empty");
+  expect_error("# only a comment\n\n", {1, 1}, "the scene is empty");
+  expect_error("just some text\n", {1, 1}, "must be a map of sections");
+  expect_error("- a\n- b\n", {1, 1}, "must be a map of sections");
+  auto t = edit(kRod, "title: Rod sliding on two tracks\n", "");
+  expect_error(t, {1, 1}, "has no 'title'", "title:");
+}
+
+TEST_CASE("wrong types: a list, a map or a text where another is needed", "[errors][types]") {
+  SECTION("a list where a map is needed") {
+    auto t = rod("bodies:\n  rod:\n    mass: m\n", "bodies:\n  - rod:\n    mass: m\n");
+    // the whole body list is one list item now; what matters is the 'bodies' value
+    auto e = error_of(t);
+    REQUIRE(e);
+    CHECK_THAT(e->problem(), Contains("'bodies' must be a map, not a list"));
+    CHECK(e->pos().line == 10);
+    check_form(*e, "bad.yaml");
+    auto t2 = rod("points: {B: [-l/2, 0], A: [l/2, 0]}", "points: [B, A]");
+    expect_error(t2, at(t2, "[B, A]"), "'points' must be a map, not a list");
+    auto t3 = rod("  1: {theta: 0, theta_dot: 0}", "  1: [0, 0]");
+    expect_error(t3, at(t3, "[0, 0]"), "'1' must be a map, not a list");
+    // a list item among map entries at one indentation
+    auto t4 = edit(kRod, "parameters:\n  m: 5 kg\n", "parameters:\n  - m: 5 kg\n");
+    expect_error(t4, at(t4, "l: 1.2 m"), "a key among the '- ' items of a list", "not both");
+  }
+  SECTION("a map where a single value is needed") {
+    auto t = rod("    mass: m\n", "    mass: {value: m}\n");
+    expect_error(t, at(t, "{value: m}"), "'mass' must be a single value, not a map", "mass: m");
+    auto t2 = rod("  m: 5 kg", "  m: {value: 5, unit: kg}");
+    expect_error(t2, at(t2, "{value: 5"), "'m' must be a single value, not a map");
+    auto t3 = rod("title: Rod sliding on two tracks", "title: [a, b]");
+    expect_error(t3, at(t3, "[a, b]"), "'title' must be a single value, not a list");
+  }
+  SECTION("a position with 3 entries") {
+    auto t = rod("[l/2*cos(theta), -l/2*sin(theta)]", "[l/2*cos(theta), -l/2*sin(theta), 0]");
+    expect_error(t, at(t, "[l/2*cos"), "'position' must have 2 entries [x, y], not 3");
+  }
+  SECTION("a point with 1 entry") {
+    auto t = rod("A: [l/2, 0]", "A: [l/2]");
+    expect_error(t, at(t, "[l/2]"), "must have 2 entries");
+  }
+  SECTION("analyses as a map, where as a map, an empty value") {
+    auto t = rod("  - energy: {from: 1, to: 2}", "  energy: {from: 1, to: 2}");
+    expect_error(t, at(t, "energy:"), "'analyses' must be a list");
+    auto t2 = rod("  2: {theta: theta2}", "  2: {theta: theta2, where: {a: b}}");
+    expect_error(t2, at(t2, "{a: b}"), "'where' must be a list of equations");
+    auto t3 = rod("    mass: m\n", "    mass:\n");
+    expect_error(t3, at(t3, "mass:"), "'mass' must be a single value, not empty");
+  }
+  SECTION("a map key that is not a name") {
+    auto t = rod("  m: 5 kg\n", "  ? [a, b]\n  : 5 kg\n");
+    expect_error(t, at(t, "[a, b]"), "a map key must be a plain name");
+  }
+}
+
+TEST_CASE("unknown keys at every level, with the nearest known key", "[errors][keys]") {
+  SECTION("top level") {
+    auto t = rod("analyses:", "analysis:");
+    expect_error(t, at(t, "analysis:"), "unknown key 'analysis' in the scene", "did you mean 'analyses'?");
+  }
+  SECTION("a section indented into the one above") {
+    auto t = rod("bodies:\n", "  bodies:\n");
+    expect_error(t, at(t, "bodies:"), "'bodies' is indented", "beginning of its line");
+  }
+  SECTION("body") {
+    auto t = rod("    angle: theta", "    angel: theta");
+    expect_error(t, at(t, "angel"), "unknown key 'angel' in body 'rod'", "did you mean 'angle'?");
+  }
+  SECTION("inertia shape") {
+    auto t = rod("{slender_rod: l}", "{slender_road: l}");
+    expect_error(t, at(t, "slender_road"), "unknown inertia shape 'slender_road'", "did you mean 'slender_rod'?");
+  }
+  SECTION("effect") {
+    auto t = rod("gravity: {g: g}", "gravity: {g: g, dirction: [0, -1]}");
+    expect_error(t, at(t, "dirction"), "unknown key 'dirction' in gravity effect 'gravity'", "did you mean 'direction'?");
+  }
+  SECTION("find") {
+    auto t = rod("root: positive, unit", "roots: positive, unit");
+    expect_error(t, at(t, "roots"), "unknown key 'roots' in find 'omega2'", "did you mean 'root'?");
+  }
+  SECTION("expect") {
+    auto t = rod("{form: sqrt", "{from: sqrt");
+    expect_error(t, at(t, "from: sqrt"), "unknown key 'from' in expect 'omega2'", "did you mean 'form'?");
+  }
+  SECTION("state key") {
+    auto t = rod("2: {theta: theta2}", "2: {thetta: theta2}");
+    expect_error(t, at(t, "thetta"), "state '2' gives 'thetta'", "did you mean 'theta'?");
+  }
+  SECTION("analysis kind and option") {
+    auto t = rod("- energy:", "- energi:");
+    expect_error(t, at(t, "energi"), "unknown analysis 'energi'", "did you mean 'energy'?");
+    auto t2 = rod("{from: 1, to: 2}", "{from: 1, too: 2}");
+    expect_error(t2, at(t2, "too"), "unknown key 'too' in energy analysis");
+  }
+  SECTION("an expression that YAML cut at a comma inside {…}") {
+    auto t = rod(kRodFind, "omega2: {value: atan2(theta_dot@2, 1)}");
+    expect_error(t, at(t, "atan2("), "'atan2(theta_dot@2' is cut at a comma", "quotes");
+    auto t2 = rod("gravity: {g: g}", "gravity: {g: g}\n  push: {force: rod.A, F: [m*g*atan2(l, l), 0]}");
+    expect_error(t2, at(t2, "m*g*atan2"), "is cut at a comma", "quotes");
+  }
+}
+
+TEST_CASE("undefined names in expressions, with the column inside the expression", "[errors][names]") {
+  SECTION("in a position") {
+    auto t = rod("-l/2*sin(theta)]", "-L/2*sin(theta)]");
+    expect_error(t, at(t, "L/2*sin"), "unknown name 'L'", "did you mean 'l'?");
+  }
+  SECTION("inside a quoted expression") {
+    auto t = rod("[l/2*cos(theta), -l/2*sin(theta)]", "[\"l/2*cos(theta) + L\", -l/2*sin(theta)]");
+    expect_error(t, at(t, "L\""), "unknown name 'L'");
+  }
+  SECTION("on the second line of a block list") {
+    auto t = rod("position: [l/2*cos(theta), -l/2*sin(theta)]", "position:\n      - l/2*cos(theta)\n      - -L/2*sin(theta)");
+    expect_error(t, at(t, "L/2"), "unknown name 'L'");
+  }
+  SECTION("in a find") {
+    auto t = rod("value: theta_dot@2", "value: omega_dot@2");
+    expect_error(t, at(t, "omega_dot@2"), "unknown name 'omega_dot'", "did you mean 'theta_dot'?");
+  }
+  SECTION("in a 'where' condition, nothing near") {
+    auto t = rod("2: {theta: theta2}", "2: {theta: theta2, where: [theta_dot = q]}");
+    expect_error(t, at(t, "q]"), "unknown name 'q'", "parameters or coordinates");
+  }
+  SECTION("a point and a body that do not exist") {
+    auto t = rod("value: theta_dot@2", "value: speed(rod.C)@2");
+    expect_error(t, at(t, "speed("), "body 'rod' has no point 'C'");
+    auto t2 = rod("gravity: {g: g}", "gravity: {g: g}\n  drive: {couple: rdo, M: m*g*l}");
+    expect_error(t2, at(t2, "rdo"), "no body named 'rdo'", "did you mean 'rod'?");
+    auto t3 = rod("gravity: {g: g}", "gravity: {g: g}\n  s: {spring: [rod.A, Q], k: m*g/l}");
+    expect_error(t3, at(t3, "[rod.A, Q]", 8), "'Q' is neither a fixed point nor a body");
+  }
+  SECTION("a coordinate where only parameters may stand") {
+    auto t = rod("B: [-l/2, 0]", "B: [-l/2, theta]");
+    expect_error(t, at(t, "theta]"), "'theta' is a coordinate or rate");
+  }
+  SECTION("syntax inside an expression") {
+    auto t = rod("value: theta_dot@2", "value: theta_dot@2 +");
+    expect_error(t, at(t, "+,", 1), "expression ends too early");
+    auto t2 = rod("value: theta_dot@2", "value: theta_dot@2 = 3");
+    expect_error(t2, at(t2, "= 3"), "'=' is not allowed here");
+    auto t3 = rod("    mass: m\n", "    mass: m$\n");
+    expect_error(t3, at(t3, "$"), "unexpected '$'");
+    auto t4 = rod("value: theta_dot@2", "value: sin(theta@2");
+    expect_error(t4, at(t4, ", root"), "expected ')'");
+  }
+  SECTION("a number and a name with no operator between") {
+    auto t = rod("-l/2*sin(theta)]", "-l/2*sin(theta) + 2 l]");
+    expect_error(t, at(t, "l]"), "no operator before 'l'", "'*'");
+  }
+}
+
+TEST_CASE("units: unknown, wrong for the place, or mixed", "[errors][units]") {
+  SECTION("an unknown unit, with the usual spelling") {
+    auto t = rod("g: 9.81 m/s^2", "g: 9.81 m/sec^2");
+    expect_error(t, at(t, "sec^2"), "unknown unit 'sec'", "'s'");
+    auto t2 = rod("m: 5 kg", "m: 5 kilo");
+    expect_error(t2, at(t2, "kilo"), "unknown unit 'kilo'", "kg");
+    auto t3 = rod("unit: rad/s}", "unit: rad/sec}");
+    expect_error(t3, at(t3, "sec}"), "unknown unit 'sec'");
+  }
+  SECTION("a unit exponent too large (was an uncaught std::out_of_range)") {
+    auto t = rod("g: 9.81 m/s^2", "g: 9.81 m/s^99999999999");
+    expect_error(t, at(t, "99999999999"), "exponent", "m^2");
+  }
+  SECTION("'unknown' without a unit") {
+    auto t = rod("m: 5 kg", "m: unknown");
+    expect_error(t, at(t, "unknown"), "'unknown' needs a unit");
+  }
+  SECTION("mass + length in a position") {
+    auto t = rod("[l/2*cos(theta), -l/2", "[l/2*cos(theta) + m, -l/2");
+    expect_error(t, at(t, "l/2*cos(theta) + m"), "inconsistent units in 'position[0]'", "same kind of quantity");
+  }
+  SECTION("a state value with the wrong unit") {
+    auto t = rod("2: {theta: theta2}", "2: {theta: 2 m}");
+    expect_error(t, at(t, "2 m}"), "'theta' is given in m", "rad or deg");
+    auto t2 = rod("2: {theta: theta2}", "2: {theta: l}");
+    expect_error(t2, at(t2, "theta: l}", 7), "'theta' is in m but must be a pure number");
+    auto t3 = block("2: {x: 0.5 m}", "2: {x: 0.5 m, t: 3 m}");
+    expect_error(t3, at(t3, "3 m}"), "'t' is given in m but must be s");
+  }
+  SECTION("a rate given as a bare number") {
+    auto t = block("x_dot: v1}", "x_dot: 3}");
+    expect_error(t, at(t, "3}"), "has no unit", "x_dot: 3 m/s");
+  }
+  SECTION("an expect with a value in the wrong unit") {
+    auto t = rod("value: 3.50 rad/s}", "value: 3.50 m/s}");
+    expect_error(t, at(t, "3.50 m/s"), "the claimed value is in m/s", "rad/s");
+    auto t2 = rod("value: 3.50 rad/s}", "value: 3.50}");
+    expect_error(t2, at(t2, "3.50}"), "the claimed value is in no unit");
+    auto t3 = rod("value: 3.50 rad/s}", "value: rad/s}");
+    expect_error(t3, at(t3, "value: rad/s}", 7), "the claimed value has no number");
+  }
+  SECTION("an expect form and a find unit of the wrong dimension") {
+    auto t = rod("{form: sqrt(3*g*sin(theta2)/l)", "{form: sqrt(3*g*sin(theta2)*l)");
+    expect_error(t, at(t, "sqrt(3*g*sin(theta2)*l)"), "the claimed form has dimension m/s");
+    auto t2 = rod("unit: rad/s}", "unit: m/s}");
+    expect_error(t2, at(t2, "m/s}"), "the unit 'm/s' does not fit find 'omega2'", "rad/s");
+  }
+  SECTION("a couple given in N") {
+    auto t = rod("  theta2: 30 deg\n", "  theta2: 30 deg\n  F0: 3 N\n");
+    t = edit(t, "gravity: {g: g}", "gravity: {g: g}\n  drive: {couple: rod, M: F0}");
+    expect_error(t, at(t, "F0}"), "'M' is in N", "N\u00b7m");
+  }
+  SECTION("a number with a unit written where an expression of parameters stands") {
+    auto t = rod("gravity: {g: g}", "gravity: {g: g}\n  drive: {couple: rod, M: 3 N*m}");
+    expect_error(t, at(t, "3 N*m"), "'3 N*m' is a number with a unit", "under parameters");
+    auto t2 = rod("    mass: m\n", "    mass: 2 m\n");
+    expect_error(t2, at(t2, "mass: 2 m", 6), "number with a unit", "'2*m'");
+  }
+  SECTION("a mass in N, a size in kg, a coordinate in kg, g in kg, a spring constant without unit") {
+    auto t = rod("m: 5 kg", "m: 5 N");
+    expect_error(t, at(t, "    mass: m", 10), "'mass' is in N");
+    auto t2 = rod("{slender_rod: l}", "{slender_rod: m}");
+    expect_error(t2, at(t2, "m}"), "'slender_rod' is in kg but must be in m");
+    auto t3 = rod("theta: rad\n", "theta: kg\n");
+    expect_error(t3, at(t3, "theta: kg", 7), "a coordinate is a length or an angle");
+    auto t4 = rod("gravity: {g: g}", "gravity: {g: m}");
+    expect_error(t4, at(t4, "m}"), "'g' is in kg but must be in m/s^2");
+    auto t5 = rod("gravity: {g: g}", "gravity: {g: g}\n  s: {spring: [rod.A, rod.B], k: 10}");
+    expect_error(t5, at(t5, "10}"), "'k' is a pure number", "N/m");
+  }
+}
+
+TEST_CASE("states: unknown in X@S, missing @, missing or repeated in an analysis", "[errors][states]") {
+  SECTION("an unknown state in X@S") {
+    auto t = rod("value: theta_dot@2", "value: theta_dot@3");
+    expect_error(t, at(t, "3,"), "no state named '3'", "the states are 1, 2");
+    auto t2 = rod("value: theta_dot@2", "value: theta_dot@");
+    expect_error(t2, at(t2, "@,"), "expected a state name after '@'");
+  }
+  SECTION("a find that uses a coordinate without @state") {
+    auto t = rod("value: theta_dot@2", "value: theta_dot");
+    expect_error(t, at(t, "theta_dot,"), "'omega2' depends on the motion but names no state", "@");
+    auto t2 = rod("{form: sqrt(3*g*sin(theta2)/l)", "{form: theta_dot");
+    expect_error(t2, at(t2, "theta_dot, value"), "'form' depends on the motion but names no state");
+  }
+  SECTION("an analysis naming a missing state") {
+    auto t = rod("{from: 1, to: 2}", "{from: 1, to: 3}");
+    expect_error(t, at(t, "3}"), "no state named '3'", "1, 2");
+    auto t2 = rod("{from: 1, to: 2}", "{to: 2}");
+    expect_error(t2, at(t2, "energy"), "energy analysis has no 'from'");
+  }
+  SECTION("an analysis naming the same state twice") {
+    auto t = rod("{from: 1, to: 2}", "{from: 1, to: 1}");
+    expect_error(t, at(t, "1}"), "'from' and 'to' are the same state");
+  }
+  SECTION("a state name that is not a name") {
+    auto t = rod("  2: {theta: theta2}", "  2a-b: {theta: theta2}");
+    expect_error(t, at(t, "2a-b"), "is not a valid state name");
+  }
+}
+
+TEST_CASE("parameters: reserved names, duplicates, no value where a number is asked", "[errors][parameters]") {
+  for (std::string name : {"T", "V", "t", "pi", "sin", "sqrt"}) {
+    DYNAMIC_SECTION("reserved name " << name) {
+      auto t = rod("  theta2: 30 deg\n", "  theta2: 30 deg\n  " + name + ": 2 m\n");
+      expect_error(t, at(t, "  " + name + ": 2 m", 2), "'" + name + "' is a reserved name", name + "_1");
+    }
+  }
+  SECTION("a coordinate named t") {
+    auto t = rod("  theta: rad\n", "  theta: rad\n  t: rad\n");
+    expect_error(t, at(t, "  t: rad", 2), "'t' is a reserved name and cannot name a coordinate");
+  }
+  SECTION("a duplicate key") {
+    auto t = rod("  l: 1.2 m\n", "  l: 1.2 m\n  l: 1.5 m\n");
+    expect_error(t, at(t, "l: 1.5 m"), "duplicate key 'l'", "give each key once");
+  }
+  SECTION("a name used for a parameter and a coordinate") {
+    auto t = rod("  theta: rad\n", "  theta: rad\n  l: m\n");
+    expect_error(t, at(t, "l: m\n"), "the name 'l' is used twice");
+  }
+  SECTION("a parameter without a value when a find asks for a unit") {
+    auto t = rod("l: 1.2 m", "l: m");
+    expect_error(t, at(t, "l: m"), "parameter 'l' has no value, but a number is asked for 'omega2'", "l: 2 m");
+  }
+  SECTION("a parameter without a value when an expect claims a value") {
+    auto t = edit(rod("l: 1.2 m", "l: m"), ", unit: rad/s}", "}");
+    expect_error(t, at(t, "l: m"), "parameter 'l' has no value, but a number is asked for 'omega2'");
+  }
+  SECTION("an angle parameter without a value: the example is an angle") {
+    auto t = rod("theta2: 30 deg", "theta2: rad");
+    expect_error(t, at(t, "theta2: rad"), "parameter 'theta2' has no value", "theta2: 30 deg");
+  }
+  SECTION("without a unit or a claimed value the closed form alone is fine") {
+    auto t = edit(edit(rod("l: 1.2 m", "l: m"), ", unit: rad/s}", "}"), ", value: 3.50 rad/s}", "}");
+    CHECK_FALSE(error_of(t).has_value());
+  }
+  SECTION("a parameter that is not a quantity") {
+    auto t = rod("m: 5 kg", "m: [5, kg]");
+    expect_error(t, at(t, "[5, kg]"), "'m' must be a single value, not a list");
+  }
+}
+
+TEST_CASE("non-positive masses and sizes are blamed where their value is written", "[errors][positive]") {
+  SECTION("a negative mass parameter") {
+    auto t = rod("m: 5 kg", "m: -5 kg");
+    expect_error(t, at(t, "-5 kg"), "parameter 'm' is -5 kg, but it stands for the mass of 'rod'", "positive");
+  }
+  SECTION("a zero mass") {
+    auto t = rod("m: 5 kg", "m: 0 kg");
+    expect_error(t, at(t, "0 kg"), "must be positive");
+  }
+  SECTION("a zero rod length") {
+    auto t = rod("l: 1.2 m", "l: 0 m");
+    expect_error(t, at(t, "0 m"), "parameter 'l' is 0 m, but it stands for the size 'l' of slender_rod", "positive");
+  }
+  SECTION("a mass expression that comes out negative") {
+    auto t = rod("    mass: m\n", "    mass: m - 10*m\n");
+    expect_error(t, at(t, "m - 10*m"), "the mass of 'rod' must be positive, but it is -45");
+  }
+  SECTION("a mass that is not a real number") {
+    auto t = rod("    mass: m\n", "    mass: m*sqrt(-1)\n");
+    expect_error(t, at(t, "m*sqrt(-1)"), "not a real number");
+  }
+  SECTION("a negative spring free length") {
+    auto t = block("  v1: 3 m/s\n", "  v1: 3 m/s\n  k: 5 N/m\n  L0: -1 m\n");
+    t = edit(t, "gravity: {g: g}", "gravity: {g: g}\n  s: {spring: [block, O], k: k, free_length: L0}");
+    t = edit(t, "coordinates:", "points:\n  O: [0, 0]\ncoordinates:");
+    expect_error(t, at(t, "-1 m"), "free length, which must be zero or positive");
+  }
+}
+
+TEST_CASE("effects: no kind, two kinds, a pin whose points do not coincide", "[errors][effects]") {
+  SECTION("an effect with no kind") {
+    auto t = rod("gravity: {g: g}", "gravity: {g: g}\n  pull: {M: m*g*l}");
+    expect_error(t, at(t, "pull"), "effect 'pull' has no kind", "couple");
+  }
+  SECTION("an effect with two kinds") {
+    auto t = rod("gravity: {g: g}", "gravity: {g: g}\n  drive: {couple: rod, force: rod.A, M: m*g*l}");
+    expect_error(t, at(t, "force:"), "effect 'drive' names two kinds, 'couple' and 'force'", "split");
+  }
+  SECTION("an effect missing its option") {
+    auto t = rod("gravity: {g: g}", "gravity: {g: g}\n  drive: {couple: rod}");
+    expect_error(t, at(t, "drive"), "has no 'M'");
+  }
+  SECTION("a pin whose points do not coincide") {
+    auto t = rod("gravity: {g: g}", "gravity: {g: g}\n  support: {pin: [O, rod.A]}");
+    t = edit(t, "coordinates:", "points:\n  O: [0, 0]\ncoordinates:");
+    expect_error(t, at(t, "[O, rod.A]"), "pin 'support': O and rod.A do not coincide");
+  }
+  SECTION("a force on a fixed point") {
+    auto t = rod("gravity: {g: g}", "gravity: {g: g}\n  f: {force: O, F: [0, m*g]}");
+    t = edit(t, "coordinates:", "points:\n  O: [0, 0]\ncoordinates:");
+    expect_error(t, at(t, "O, F"), "a force acts on a body, but 'O' is a fixed point");
+  }
+  SECTION("friction whose direction nothing tells") {
+    auto t = block("  v1: 3 m/s\n", "  v1: 3 m/s\n  mu: 0.2\n");
+    t = edit(t, "gravity: {g: g}", "gravity: {g: g}\n  rub: {friction: block, mu: mu, normal: m*g*cos(beta)}");
+    t = edit(edit(t, "1: {x: 0, x_dot: v1}", "1: {x: 0}"), "2: {x: 0.5 m}", "2: {x_dot: 0}");
+    t = edit(t, "v2: {value: x_dot@2, root: positive, unit: m/s}", "d: {value: x@2, unit: m}");
+    expect_error(t, at(t, "rub"), "the direction of the motion", "direction: positive|negative");
+  }
+}
+
+TEST_CASE("find and expect: a claim that names no find, a claim of nothing, a bad root", "[errors][find]") {
+  SECTION("an expect naming no find") {
+    auto t = rod("expect:\n  omega2", "expect:\n  omega3");
+    expect_error(t, at(t, "omega3"), "expect 'omega3' names no result under find", "did you mean 'omega2'?");
+  }
+  SECTION("an expect that claims nothing") {
+    auto t = rod("omega2: {form: sqrt(3*g*sin(theta2)/l), value: 3.50 rad/s}", "omega2: {}");
+    expect_error(t, at(t, "omega2: {}"), "claims nothing");
+  }
+  SECTION("a find without a value") {
+    auto t = rod(kRodFind, "omega2: {root: positive, unit: rad/s}");
+    expect_error(t, at(t, "omega2: {root"), "find 'omega2' has no 'value'");
+  }
+  SECTION("a root choice that is not one") {
+    auto t = rod("root: positive", "root: up");
+    expect_error(t, at(t, "up,"), "'root' must be positive, negative or {in: [lo, hi]}");
+  }
+  SECTION("a root range that holds no solution") {
+    auto t = edit(rod("root: positive", "root: {in: [10, 20]}"), kRodExpect, "");
+    expect_error(t, at(t, "omega2"), "no solution has 'omega2' with the root asked for", "-3.50179 or 3.50179");
+  }
+}
+
+TEST_CASE("physics: unreachable states, contradictions, underdetermined and ambiguous results", "[errors][solve]") {
+  SECTION("a block released from rest asked to rise (T2 would be negative)") {
+    auto t = block("1: {x: 0, x_dot: v1}", "1: {x: 0, x_dot: 0}");
+    expect_error(t, at(t, "energy"), "has no real solution for x_dot@2", "cannot be reached");
+  }
+  SECTION("a block sent up asked to rise higher than its speed allows") {
+    auto t = block("2: {x: 0.5 m}", "2: {x: 1 m}");
+    expect_error(t, at(t, "energy"), "x_dot@2^2 would be -0.81 (negative)", "kinetic energy would be negative");
+  }
+  SECTION("the rod asked to turn the wrong way from rest") {
+    auto t = rod("2: {theta: theta2}", "2: {theta: -theta2}");
+    expect_error(t, at(t, "energy"), "has no real solution for theta_dot@2");
+  }
+  SECTION("contradictory states: an energy balance that cannot hold") {
+    auto t = block("2: {x: 0.5 m}", "2: {x: 0.5 m, x_dot: 3 m/s}");
+    expect_error(t, at(t, "energy"), "the equations contradict each other", "cannot hold");
+  }
+  SECTION("a result that nothing determines") {
+    auto t = rod_find("w3: theta_dot@3");
+    t = edit(t, "  2: {theta: theta2}\n", "  2: {theta: theta2}\n  3: {}\n");
+    expect_error(t, at(t, "w3"), "'w3' is not determined: theta_dot@3 is unknown", "give theta_dot@3");
+    auto t2 = rod_find("t2: t@2");
+    expect_error(t2, at(t2, "t2: t@2"), "'t2' is not determined: t@2 is unknown");
+  }
+  SECTION("too few values for the analysis") {
+    auto t = rod("1: {theta: 0, theta_dot: 0}", "1: {theta: 0}");
+    expect_error(t, at(t, "energy"), "nonlinear in several unknowns (theta_dot@1, theta_dot@2)", "give more values");
+  }
+  SECTION("ambiguous roots without root:") {
+    auto t = rod_find("th2: theta@2");
+    t = edit(t, "2: {theta: theta2}", "2: {theta_dot: 2 rad/s}");
+    expect_error(t, at(t, "th2"), "'th2' has more than one solution", "root:");
+  }
+}
+
+TEST_CASE("values undefined at the states are errors, not crashes", "[errors][undefined]") {
+  SECTION("a result that divides by zero (was an internal error)") {
+    auto t = rod_find("q: {value: 1/theta_dot@1}");
+    expect_error(t, at(t, "q:"), "'q' is undefined at the states (a division by zero)");
+    auto t2 = rod_find("q: 1/theta@1");
+    expect_error(t2, at(t2, "q:"), "division by zero");
+  }
+  SECTION("log(0) and tan at a pole (were internal errors)") {
+    auto t = rod_find("q: log(theta@1)");
+    expect_error(t, at(t, "q:"), "log(0)");
+    auto t2 = rod_find("q: tan(pi/2 + theta@1)");
+    expect_error(t2, at(t2, "q:"), "a function at a pole");
+  }
+  SECTION("a result with no real value") {
+    auto t = rod_find("q: acos(2 + theta@1)");
+    expect_error(t, at(t, "q:"), "has no real value");
+  }
+  SECTION("undefined in the expression itself") {
+    auto t = rod("    mass: m\n", "    mass: m*log(0)\n");
+    expect_error(t, at(t, "log(0)"), "'log(0)' is undefined");
+    auto t2 = rod("    mass: m\n", "    mass: m*0^(-1)\n");
+    expect_error(t2, at(t2, "^("), "is undefined (division by zero)");
+  }
+  SECTION("a state value undefined for the parameters' values") {
+    auto t = block("  v1: 3 m/s\n", "  v1: 3 m/s\n  one: 1 m\n");
+    t = edit(t, "2: {x: 0.5 m}", "2: {x: one/(beta - pi/6)}");
+    expect_error(t, at(t, "one/(beta"), "'x' at state '2' is undefined for the parameters' values");
+    auto t2 = block("  v1: 3 m/s\n", "  v1: 3 m/s\n  one: 1 m\n");
+    t2 = edit(t2, "2: {x: 0.5 m}", "2: {x: one*sqrt(-1)}");
+    expect_error(t2, at(t2, "one*sqrt"), "is not a real number");
+  }
+  SECTION("a condition undefined at the state's values") {
+    auto t = block("  v1: 3 m/s\n", "  v1: 3 m/s\n  one: 1 m\n  w: 1 rad/s\n");
+    t = edit(t, "  1: {x: 0, x_dot: v1}\n", "  1: {x: 0, x_dot: v1}\n  0: {x: one, where: [\"x_dot/(x - one) = w\"]}\n");
+    t = edit(t, "analyses:\n", "analyses:\n  - energy: {from: 0, to: 2}\n");
+    expect_error(t, at(t, "x_dot/(x - one)"), "the condition at state 0 is undefined");
+  }
+}
+
+TEST_CASE("pathological expressions end with an error, not a hang or a crash", "[errors][limits]") {
+  SECTION("10^10^10 (was a hang, then a crash)") {
+    auto t = rod("    mass: m\n", "    mass: m*10^10^10\n");
+    expect_error(t, at(t, "^10^10"), "too large to compute exactly");
+  }
+  SECTION("100000 nested parentheses (was a stack overflow)") {
+    auto t = rod("    mass: m\n", "    mass: " + std::string(100000, '(') + "m" + std::string(100000, ')') + "\n");
+    auto e = error_of(t);
+    REQUIRE(e);
+    CHECK(e->pos().line == 11);
+    CHECK_THAT(e->problem(), Contains("nested too deeply"));
+    check_form(*e, "bad.yaml");
+  }
+  SECTION("a unit in 100000 nested parentheses (was a stack overflow)") {
+    auto t = rod("g: 9.81 m/s^2", "g: 9.81 " + std::string(100000, '(') + "m" + std::string(100000, ')'));
+    auto e = error_of(t);
+    REQUIRE(e);
+    CHECK(e->pos().line == 5);
+    check_form(*e, "bad.yaml");
+  }
+}
+
+TEST_CASE("a file that does not exist, or is a directory", "[errors][files]") {
+  std::string missing = bad_file("no_such_scene.yaml");
+  try {
+    kinergy::solve_file(missing);
+    FAIL("a missing file was accepted");
+  } catch (const kinergy::SceneError& e) {
+    CHECK(e.pos().line == 1);
+    CHECK(e.pos().col == 1);
+    CHECK_THAT(e.problem(), Contains("does not exist"));
+    check_form(e, missing);
+  }
+  std::string dir = std::string(KINERGY_SOURCE_DIR) + "/tests/data/bad";
+  try {
+    kinergy::solve_file(dir);
+    FAIL("a directory was accepted");
+  } catch (const kinergy::SceneError& e) {
+    CHECK_THAT(e.problem(), Contains("directory"));
+    check_form(e, dir);
+  }
+}
+
+// ----------------------------------------------------------------- files in tests/data/bad/
+
+namespace {
+struct FileCase {
+  const char* file;
+  int line, col;
+  const char* phrase;
+};
+const FileCase kFileCases[] = {
+    {"bad_indentation.yaml", 12, 5, "indented deeper than line 11"},
+    {"missing_space_after_colon.yaml", 11, 9, "no space after ':'"},
+    {"unclosed_bracket.yaml", 13, 15, "unclosed '['"},
+    {"tab_indentation.yaml", 11, 1, "a tab in the indentation"},
+    {"unclosed_quote.yaml", 11, 11, "never closed"},
+    {"two_documents.yaml", 28, 1, "more than one YAML document"},
+    {"empty.yaml", 1, 1, "the scene is empty"},
+    {"unit_exponent_overflow.yaml", 5, 15, "exponent '99999999999' of a unit is too large"},
+    {"huge_power.yaml", 11, 15, "too large to compute exactly"},
+    {"log_of_zero.yaml", 24, 3, "'q' is undefined at the states (log(0))"},
+    {"division_by_zero.yaml", 24, 3, "'q' is undefined at the states (a division by zero)"},
+    {"rise_too_high.yaml", 19, 5, "has no real solution for x_dot@2"},
+    {"unknown_unit.yaml", 5, 13, "unknown unit 'sec'"},
+    {"did_you_mean_key.yaml", 14, 5, "unknown key 'angel' in body 'rod'"},
+};
+}  // namespace
+
+TEST_CASE("bad scene files: the library names the place", "[errors][files]") {
+  for (auto& c : kFileCases) {
+    DYNAMIC_SECTION(c.file) {
+      std::string path = bad_file(c.file);
+      REQUIRE(fs::exists(path));
+      try {
+        kinergy::solve_file(path);
+        FAIL("the scene was accepted");
+      } catch (const kinergy::SceneError& e) {
+        INFO(e.what());
+        CHECK(e.pos().file == path);
+        CHECK(e.pos().line == c.line);
+        CHECK(e.pos().col == c.col);
+        CHECK_THAT(e.problem(), Contains(c.phrase));
+        check_form(e, path);
+      }
+    }
+  }
+}
+
+TEST_CASE("bad scene files: the command line prints one line and exits 1", "[errors][cli]") {
+  for (auto& c : kFileCases) {
+    DYNAMIC_SECTION(c.file) {
+      std::string path = bad_file(c.file);
+      Run r = cli("solve \"" + path + "\"");
+      INFO("stderr: " << r.err);
+      CHECK(r.status == 1);
+      CHECK(r.out.empty());
+      CHECK(lines_of(r.err) == 1);
+      CHECK(r.err.back() == '\n');
+      std::string prefix = path + ":" + std::to_string(c.line) + ":" + std::to_string(c.col) + ": ";
+      CHECK(r.err.rfind(prefix, 0) == 0);
+      CHECK_THAT(r.err, Contains(c.phrase));
+      CHECK(r.err.find(kDash) != std::string::npos);
+      CHECK(r.err.size() > r.err.find(kDash) + kDash.size() + 1);  // a fix follows the dash
+      CHECK_FALSE(looks_broken(r.err));
+    }
+  }
+}
+
+TEST_CASE("the command line: verify of a bad scene, a missing file", "[errors][cli]") {
+  SECTION("verify: one line per bad scene, exit 1") {
+    Run r = cli("verify \"" + bad_file("unclosed_bracket.yaml") + "\"");
+    INFO("stderr: " << r.err);
+    CHECK(r.status == 1);
+    CHECK(lines_of(r.err) == 1);
+    CHECK_THAT(r.err, Contains("unclosed '['"));
+    CHECK_FALSE(looks_broken(r.err));
+  }
+  SECTION("a missing file") {
+    std::string missing = bad_file("no_such_scene.yaml");
+    Run r = cli("solve \"" + missing + "\"");
+    INFO("stderr: " << r.err);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(lines_of(r.err) == 1);
+    CHECK(r.err.rfind(missing + ":1:1: ", 0) == 0);
+    CHECK_THAT(r.err, Contains("does not exist"));
+    CHECK_FALSE(looks_broken(r.err));
+  }
+}
+
+TEST_CASE("the command line: usage errors exit 2", "[errors][cli]") {
+  std::string good = std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/sliding_rod.yaml";
+  SECTION("no subcommand") {
+    Run r = cli("");
+    CHECK(r.status == 2);
+    CHECK(!r.err.empty());
+  }
+  SECTION("an unknown option") {
+    Run r = cli("solve \"" + good + "\" --bogus");
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Contains("--bogus"));
+  }
+  SECTION("--digits 0") {
+    Run r = cli("solve \"" + good + "\" --digits 0");
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Contains("--digits"));
+    CHECK(r.out.empty());
+  }
+  SECTION("solve without a scene") {
+    Run r = cli("solve");
+    CHECK(r.status == 2);
+  }
+  SECTION("and a good scene still exits 0") {
+    Run r = cli("solve \"" + good + "\"");
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+  }
+}

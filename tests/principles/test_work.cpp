@@ -1,0 +1,489 @@
+// Work of effects between states and the antiderivatives behind it: every antiderivative is
+// differentiated back; every work is compared with the formula of the textbook (U = M Δφ,
+// U = −μ N × distance, U = P Δt) or with the potential of the equivalent spring.
+#include <catch2/catch.hpp>
+
+#include "../support/helpers.hpp"
+#include "kinergy/principles/principles.hpp"
+#include "kinergy/problem.hpp"
+
+using namespace GiNaC;
+using kinergy::model::Model;
+using kinergy::principles::antiderivative;
+using kinergy::principles::Knowledge;
+using kinergy::principles::work;
+
+// ------------------------------------------------------------------------------------------
+// antiderivative()
+
+namespace {
+
+/// F is an antiderivative of f in s: F' − f = 0.
+bool differentiates_back(const ex& F, const ex& f, const symbol& s) {
+  return kt::symbolically_zero(F.diff(s) - f);
+}
+
+}  // namespace
+
+TEST_CASE("antiderivative: polynomials", "[principles][antiderivative]") {
+  symbol s("s"), a("a"), b("b"), c("c");
+  std::vector<ex> fs = {
+      ex(7),                                  // constant
+      c,                                      // constant symbol
+      pow(s, 2),                              // monomial
+      3 * pow(s, 2),                          // with a coefficient
+      a * pow(s, 5) - 4 * pow(s, 3) + c,      // several terms, one constant
+      pow(2 * s + 1, 3),                      // power of a linear argument
+      pow(s, 2) * (s + 1) * (s - 2),          // product to expand (s^4 - s^3 - 2 s^2)
+      pow(s, -2),                             // negative power
+  };
+  for (auto& f : fs) {
+    INFO("f = " << f);
+    auto F = antiderivative(f, s);
+    REQUIRE(F);
+    INFO("F = " << *F);
+    CHECK(differentiates_back(*F, f, s));
+  }
+  // exact forms
+  CHECK(kt::symbolically_zero(*antiderivative(ex(7), s) - 7 * s));
+  CHECK(kt::symbolically_zero(*antiderivative(pow(s, 2), s) - pow(s, 3) / 3));
+  CHECK(kt::symbolically_zero(*antiderivative(pow(2 * s + 1, 3), s) - pow(2 * s + 1, 4) / 8));
+}
+
+TEST_CASE("antiderivative: a first-degree term s (bare symbol, k*s, polynomials with a linear term)",
+          "[principles][antiderivative][!mayfail]") {
+  // BUG (src/principles/work.cpp, antiderivative): a bare symbol s is neither add, mul, power
+  // nor function, so no rule applies and the result is empty; every polynomial with a linear
+  // term (k*s, s^2 + s, k*(s - L0)) therefore has no antiderivative.
+  symbol s("s"), k("k"), L0("L0");
+  std::vector<ex> fs = {s, k * s, pow(s, 2) + s, 3 * pow(s, 2) + 2 * s + 1, -k * (s - L0), s * (s + 1) * (s - 2)};
+  for (auto& f : fs) {
+    INFO("f = " << f);
+    auto F = antiderivative(f, s);
+    CHECK(F.has_value());
+    if (F) CHECK(differentiates_back(*F, f, s));
+  }
+  auto F = antiderivative(ex(s), s);
+  CHECK((F && kt::symbolically_zero(*F - pow(s, 2) / 2)));
+}
+
+TEST_CASE("antiderivative: sin, cos, exp of linear arguments", "[principles][antiderivative]") {
+  symbol s("s"), a("a"), b("b");
+  std::vector<ex> fs = {sin(3 * s + 1), cos(a * s + b), 5 * sin(a * s), exp(2 * s - 1),
+                        cos(s), sin(s) + cos(2 * s), sinh(2 * s), cosh(s / 3)};
+  for (auto& f : fs) {
+    INFO("f = " << f);
+    auto F = antiderivative(f, s);
+    REQUIRE(F);
+    INFO("F = " << *F);
+    CHECK(differentiates_back(*F, f, s));
+  }
+  CHECK(kt::symbolically_zero(*antiderivative(sin(3 * s + 1), s) + cos(3 * s + 1) / 3));
+  CHECK(kt::symbolically_zero(*antiderivative(cos(a * s + b), s) - sin(a * s + b) / a));
+}
+
+TEST_CASE("antiderivative: powers of linear arguments and 1/(a s + b)", "[principles][antiderivative]") {
+  symbol s("s"), a("a"), b("b");
+  std::vector<ex> fs = {pow(a * s + b, -2), sqrt(2 * s + 1), pow(3 - s, numeric(3, 2)), 1 / (a * s + b),
+                        4 / (2 * s + 3), pow(s, -1)};
+  for (auto& f : fs) {
+    INFO("f = " << f);
+    auto F = antiderivative(f, s);
+    REQUIRE(F);
+    INFO("F = " << *F);
+    CHECK(differentiates_back(*F, f, s));
+  }
+  // ∫ ds/(a s + b) = log(a s + b)/a
+  CHECK(kt::symbolically_zero(*antiderivative(1 / (a * s + b), s) - log(a * s + b) / a));
+  // a definite integral with numbers: ∫₀¹ ds/(2 s + 1) = ln(3)/2
+  ex F = *antiderivative(1 / (2 * s + 1), s);
+  CHECK(kt::close(kt::value(F.subs(s == 1) - F.subs(s == 0), {}), kt::value(log(ex(3)) / 2, {}), kt::tol(45)));
+}
+
+TEST_CASE("antiderivative: no elementary rule gives nothing (not a wrong answer)", "[principles][antiderivative]") {
+  symbol s("s");
+  for (const ex& f : {ex(sin(pow(s, 2))), ex(s * sin(s)), ex(1 / (pow(s, 2) + 1)), ex(exp(pow(s, 2))),
+                      ex(sin(s) * cos(s) * exp(s)), ex(log(s))}) {
+    INFO("f = " << f);
+    auto F = antiderivative(f, s);
+    // either nothing, or a correct antiderivative
+    if (F) CHECK(differentiates_back(*F, f, s));
+    else SUCCEED("no closed form");
+  }
+  CHECK(!antiderivative(sin(pow(s, 2)), s).has_value());
+}
+
+// ------------------------------------------------------------------------------------------
+// work() between states
+
+TEST_CASE("constant couple: U = M (phi2 - phi1)", "[principles][work]") {
+  Model m = kt::model_of(R"(title: couple
+parameters:
+  m: kg
+  k: m
+  M0: N*m
+  a1: rad
+  a2: rad
+points:
+  O: [0, 0]
+coordinates:
+  phi: rad
+bodies:
+  wheel:
+    mass: m
+    inertia: {gyration: k}
+    position: [0, 0]
+    angle: phi
+effects:
+  axle: {pin: [O, wheel]}
+  drive: {couple: wheel, M: M0}
+states:
+  1: {phi: a1, phi_dot: 0}
+  2: {phi: a2}
+)");
+  Knowledge know(m);
+  auto w = work(m, kt::effect(m, "drive"), 0, 1, know);
+  ex M0 = kt::param(m, "M0");
+  INFO("U = " << w.U);
+  CHECK(kt::symbolically_zero(w.U - M0 * (kt::at(m, "phi", "2") - kt::at(m, "phi", "1"))));
+  // backwards the work changes sign
+  auto back = work(m, kt::effect(m, "drive"), 1, 0, know);
+  CHECK(kt::symbolically_zero(back.U + w.U));
+}
+
+TEST_CASE("couple on one of two geared wheels: U = M (phiA2 - phiA1)", "[principles][work]") {
+  Model m = kt::model_of_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/meshed_gears.yaml");
+  Knowledge know(m);
+  auto w = work(m, kt::effect(m, "drive"), 0, 1, know);
+  CHECK(kt::symbolically_zero(w.U - kt::param(m, "M") * (kt::at(m, "phiA", "2") - kt::at(m, "phiA", "1"))));
+}
+
+TEST_CASE("couple proportional to the angle: U = c (phi2^2 - phi1^2)/2", "[principles][work][!mayfail]") {
+  // BUG: fails through antiderivative(c*phi, phi) (see the antiderivative test above):
+  // work() throws "the work of 'winder' has no closed form integral along phi".
+  Model m = kt::model_of(R"(title: winding couple
+parameters:
+  m: kg
+  k: m
+  c: N*m
+points:
+  O: [0, 0]
+coordinates:
+  phi: rad
+bodies:
+  wheel:
+    mass: m
+    inertia: {gyration: k}
+    position: [0, 0]
+    angle: phi
+effects:
+  axle: {pin: [O, wheel]}
+  winder: {couple: wheel, M: -c*phi}
+states:
+  1: {phi: 0, phi_dot: 0}
+  2: {phi: 2}
+)");
+  Knowledge know(m);
+  ex U;
+  REQUIRE_NOTHROW(U = work(m, kt::effect(m, "winder"), 0, 1, know).U);
+  ex c = kt::param(m, "c");
+  CHECK(kt::symbolically_zero(U.subs(m.states[0].given).subs(m.states[1].given) + c * 2));  // −c·2²/2
+}
+
+TEST_CASE("friction: U = -mu N x distance, whichever way the block slides", "[principles][work][friction]") {
+  const std::string scene = R"(title: block on a floor
+parameters:
+  m: 3 kg
+  mu: 0.2
+  g: 9.81 m/s^2
+  v1: 4 m/s
+coordinates:
+  x: m
+bodies:
+  block:
+    mass: m
+    inertia: particle
+    position: [x, 0]
+effects:
+  gravity: {g: g}
+  rub: {friction: block, mu: mu, normal: m*g}
+states:
+  1: {x: 0, x_dot: SIGN*v1}
+  2: {x_dot: 0}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  d: {value: x@2, unit: m}
+)";
+  for (int sign : {1, -1}) {
+    DYNAMIC_SECTION("sliding " << (sign > 0 ? "forwards" : "backwards")) {
+      std::string text = scene;
+      text.replace(text.find("SIGN*"), 5, sign > 0 ? "" : "-");
+      Model m = kt::model_of(text);
+      Knowledge know(m);
+      auto w = work(m, kt::effect(m, "rub"), 0, 1, know);
+      ex mu = kt::param(m, "mu"), mm = kt::param(m, "m"), g = kt::param(m, "g");
+      ex dist = sign * (kt::at(m, "x", "2") - kt::at(m, "x", "1"));  // distance slid
+      INFO("U = " << w.U);
+      CHECK(kt::symbolically_zero(w.U + mu * mm * g * dist));
+      // solved: the block stops after v1²/(2 μ g) = 16/(2·0.2·9.81) = 4.0774719673802242610 m
+      auto sol = kinergy::solve_scene(kinergy::scene::load_string(text));
+      REQUIRE(sol.results.size() == 1);
+      REQUIRE(sol.results[0].si);
+      CHECK(kt::close(*sol.results[0].si, sign * numeric(16) / (2 * numeric(2, 10) * numeric(981, 100)),
+                      kt::tol(25)));
+    }
+  }
+}
+
+TEST_CASE("friction on a block going up an incline: U = -mu m g cos(beta) d", "[principles][work][friction]") {
+  Model m = kt::model_of_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/block_incline_friction.yaml");
+  Knowledge know(m);
+  auto w = work(m, kt::effect(m, "rubbing"), 0, 1, know);
+  ex mu = kt::param(m, "mu_k"), mm = kt::param(m, "m"), g = kt::param(m, "g"), beta = kt::param(m, "beta");
+  CHECK(kt::symbolically_zero(w.U + mu * mm * g * cos(beta) * (kt::at(m, "x", "2") - kt::at(m, "x", "1"))));
+}
+
+TEST_CASE("friction at the rim of a turning wheel: U = -mu N r (theta2 - theta1)", "[principles][work][friction]") {
+  Model m = kt::model_of_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/braking_friction.yaml");
+  Knowledge know(m);
+  auto w = work(m, kt::effect(m, "brake"), 0, 1, know);
+  ex mu = kt::param(m, "mu_k"), N = kt::param(m, "Fn"), r = kt::param(m, "r");
+  CHECK(kt::symbolically_zero(w.U + mu * N * r * (kt::at(m, "theta", "2") - kt::at(m, "theta", "1"))));
+}
+
+TEST_CASE("friction couple and power drive", "[principles][work]") {
+  Model m = kt::model_of(R"(title: brake and motor
+parameters:
+  m: kg
+  k: m
+  Mf: N*m
+  P: W
+  w1: rad/s
+points:
+  O: [0, 0]
+coordinates:
+  phi: rad
+bodies:
+  wheel:
+    mass: m
+    inertia: {gyration: k}
+    position: [0, 0]
+    angle: phi
+effects:
+  axle: {pin: [O, wheel]}
+  brake: {friction_couple: wheel, M: Mf}
+  motor: {power: wheel, P: P}
+states:
+  1: {phi: 0, phi_dot: -w1, t: 0}
+  2: {phi_dot: 0}
+)");
+  Knowledge know(m);
+  ex Mf = kt::param(m, "Mf"), P = kt::param(m, "P");
+  // turning clockwise (phi decreasing): U = −Mf |Δφ| = +Mf (φ2 − φ1)
+  auto wb = work(m, kt::effect(m, "brake"), 0, 1, know);
+  CHECK(kt::symbolically_zero(wb.U - Mf * (kt::at(m, "phi", "2") - kt::at(m, "phi", "1"))));
+  auto wp = work(m, kt::effect(m, "motor"), 0, 1, know);
+  CHECK(kt::symbolically_zero(wp.U - P * (m.states[1].t - m.states[0].t)));
+}
+
+TEST_CASE("a constant force along a line: U = F . (r2 - r1)", "[principles][work]") {
+  Model m = kt::model_of(R"(title: constant force on a particle in the plane
+parameters:
+  m: kg
+  Fx: N
+  Fy: N
+coordinates:
+  x: m
+  y: m
+bodies:
+  p:
+    mass: m
+    inertia: particle
+    position: [x, y]
+effects:
+  pull: {force: p, F: [Fx, Fy]}
+states:
+  1: {x: 0, y: 0}
+  2: {}
+)");
+  Knowledge know(m);
+  auto w = work(m, kt::effect(m, "pull"), 0, 1, know);
+  ex Fx = kt::param(m, "Fx"), Fy = kt::param(m, "Fy");
+  CHECK(kt::symbolically_zero(w.U - Fx * (kt::at(m, "x", "2") - kt::at(m, "x", "1")) -
+                              Fy * (kt::at(m, "y", "2") - kt::at(m, "y", "1"))));
+}
+
+TEST_CASE("a force -k x^3 agrees with its potential k x^4/4", "[principles][work]") {
+  Model m = kt::model_of(R"(title: cubic spring force
+parameters:
+  m: kg
+  k: N/m^3
+coordinates:
+  x: m
+bodies:
+  p:
+    mass: m
+    inertia: particle
+    position: [x, 0]
+effects:
+  stiff: {force: p, F: [-k*x^3, 0]}
+states:
+  1: {}
+  2: {}
+)");
+  Knowledge know(m);
+  auto w = work(m, kt::effect(m, "stiff"), 0, 1, know);
+  ex k = kt::param(m, "k");
+  ex x1 = kt::at(m, "x", "1"), x2 = kt::at(m, "x", "2");
+  CHECK(kt::symbolically_zero(w.U + k * (pow(x2, 4) - pow(x1, 4)) / 4));
+}
+
+TEST_CASE("a force F = -k x agrees with the spring potential", "[principles][work][!mayfail]") {
+  // BUG: the applied force -k*x has the generalized force -k*x; its antiderivative is not found
+  // (antiderivative() has no rule for a bare symbol), so work() throws a SceneError
+  // "the work of 'hand' has no closed form integral along x" for the simplest conservative force.
+  const std::string head = R"(title: linear restoring force
+parameters:
+  m: 2 kg
+  k: 50 N/m
+  x0: 0.3 m
+points:
+  O: [0, 0]
+coordinates:
+  x: m
+bodies:
+  p:
+    mass: m
+    inertia: particle
+    position: [x, 0]
+effects:
+)";
+  const std::string tail = R"(states:
+  1: {x: x0, x_dot: 0}
+  2: {x: 0}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  v2: {value: x_dot@2, root: negative, unit: m/s}
+)";
+  std::string as_force = head + "  hand: {force: p, F: [-k*x, 0]}\n" + tail;
+  std::string as_spring = head + "  spring: {spring: [O, p], k: k}\n" + tail;
+
+  // the spring alone: v2 = −x0 √(k/m) = −0.3·5 = −1.5 m/s
+  auto spring = kinergy::solve_scene(kinergy::scene::load_string(as_spring));
+  REQUIRE(spring.results[0].si);
+  CHECK(kt::close(*spring.results[0].si, numeric(-3, 2), kt::tol(25)));
+
+  Model m = kt::model_of(as_force);
+  Model ms = kt::model_of(as_spring);
+  Knowledge know(m);
+  ex U;
+  REQUIRE_NOTHROW(U = work(m, kt::effect(m, "hand"), 0, 1, know).U);
+  // U₁→₂ = V₁ − V₂ of the spring (same parameter names, so compare after substituting values)
+  ex Vs = ms.potential_energy(kt::effect(ms, "spring"));
+  ex dV = (ms.bind(Vs, 0) - ms.bind(Vs, 1)).subs(ms.parameter_values());
+  ex x1 = kt::at(ms, "x", "1"), x2 = kt::at(ms, "x", "2");
+  exmap pts = {{x1, numeric(3, 10)}, {x2, numeric(-1, 10)}};
+  exmap ptsf = {{kt::at(m, "x", "1"), numeric(3, 10)}, {kt::at(m, "x", "2"), numeric(-1, 10)}};
+  CHECK(kt::close(kt::value(U.subs(m.parameter_values()), ptsf), kt::value(dV, pts), kt::tol(40)));
+
+  auto force = kinergy::solve_scene(kinergy::scene::load_string(as_force));
+  REQUIRE(force.results[0].si);
+  CHECK(kt::close(*force.results[0].si, *spring.results[0].si, kt::tol(25)));
+}
+
+TEST_CASE("work that cannot be taken is refused with a reason", "[principles][work][errors]") {
+  SECTION("a couple depending on time") {
+    Model m = kt::model_of(R"(title: timed couple
+parameters:
+  m: kg
+  k: m
+  c: N*m/s
+points:
+  O: [0, 0]
+coordinates:
+  phi: rad
+bodies:
+  wheel:
+    mass: m
+    inertia: {gyration: k}
+    position: [0, 0]
+    angle: phi
+effects:
+  axle: {pin: [O, wheel]}
+  ramp: {couple: wheel, M: c*t}
+states:
+  1: {phi: 0, phi_dot: 0}
+  2: {phi: 1}
+)");
+    Knowledge know(m);
+    CHECK_THROWS_AS(work(m, kt::effect(m, "ramp"), 0, 1, know), kinergy::SceneError);
+  }
+  SECTION("a non-conservative force on a body with two degrees of freedom") {
+    // F = c (−y, x): curl 2c ≠ 0, so its work depends on the path
+    Model m = kt::model_of(R"(title: swirl
+parameters:
+  m: kg
+  c: N/m
+coordinates:
+  x: m
+  y: m
+bodies:
+  p:
+    mass: m
+    inertia: particle
+    position: [x, y]
+effects:
+  swirl: {force: p, F: [-c*y, c*x]}
+states:
+  1: {}
+  2: {}
+)");
+    Knowledge know(m);
+    try {
+      work(m, kt::effect(m, "swirl"), 0, 1, know);
+      FAIL("no error");
+    } catch (const kinergy::SceneError& e) {
+      CHECK(std::string(e.what()).find("path") != std::string::npos);
+    }
+  }
+  SECTION("friction whose direction of sliding is unknown") {
+    Model m = kt::model_of(R"(title: friction without a direction
+parameters:
+  m: kg
+  mu: 0.3
+  N0: N
+coordinates:
+  x: m
+bodies:
+  p:
+    mass: m
+    inertia: particle
+    position: [x, 0]
+effects:
+  rub: {friction: p, mu: mu, normal: N0}
+states:
+  1: {}
+  2: {}
+)");
+    Knowledge know(m);
+    CHECK_THROWS_AS(work(m, kt::effect(m, "rub"), 0, 1, know), kinergy::SceneError);
+  }
+}
+
+TEST_CASE("energy balance: a conservative scene has no works and T1 + V1 = T2 + V2", "[principles][energy]") {
+  Model m = kt::model_of_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/compound_pendulum.yaml");
+  Knowledge know(m);
+  auto b = kinergy::principles::energy(m, m.analyses[0], know);
+  CHECK(b.conservative);
+  CHECK(b.works.empty());
+  CHECK(kt::symbolically_zero(b.equation.residual() - (b.at_from.T + b.at_from.V - b.at_to.T - b.at_to.V)));
+  // and with a couple the work appears on the left
+  Model mf = kt::model_of_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/flywheel_couple.yaml");
+  Knowledge kf(mf);
+  auto bf = kinergy::principles::energy(mf, mf.analyses[0], kf);
+  CHECK(!bf.conservative);
+  REQUIRE(bf.works.size() == 1);
+  CHECK(kt::symbolically_zero(bf.works[0].U - kt::param(mf, "M") * (kt::at(mf, "theta", "2") - kt::at(mf, "theta", "1"))));
+}

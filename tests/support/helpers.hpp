@@ -1,0 +1,191 @@
+/// @file helpers.hpp  Small helpers shared by the physics tests (header only: tests/CMakeLists.txt
+/// globs *.cpp, so this file adds no translation unit).
+#pragma once
+#include <algorithm>
+#include <filesystem>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "kinergy/model/model.hpp"
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/scene/scene.hpp"
+
+namespace kt {
+
+using GiNaC::ex;
+using GiNaC::exmap;
+using GiNaC::numeric;
+
+inline std::string str(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
+/// Every scene file of derivations/energy, sorted.
+inline std::vector<std::string> derivation_scenes() {
+  namespace fs = std::filesystem;
+  std::vector<std::string> out;
+  for (auto& e : fs::directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "derivations" / "energy"))
+    if (e.path().extension() == ".yaml") out.push_back(e.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+inline kinergy::model::Model model_of(const std::string& yaml) {
+  return kinergy::model::Model::build(kinergy::scene::load_string(yaml, "<test>"));
+}
+
+inline kinergy::model::Model model_of_file(const std::string& path) {
+  return kinergy::model::Model::build(kinergy::scene::load_file(path));
+}
+
+/// The symbol of a named parameter (fails the test through an exception when absent).
+inline ex param(const kinergy::model::Model& m, const std::string& name) {
+  const auto* p = m.parameter(name);
+  if (!p) throw std::runtime_error("test scene has no parameter " + name);
+  return p->sym;
+}
+
+inline const kinergy::model::Coordinate& coord(const kinergy::model::Model& m, const std::string& name) {
+  for (auto& c : m.coords)
+    if (c.name == name) return c;
+  throw std::runtime_error("test scene has no coordinate " + name);
+}
+
+inline const kinergy::model::Effect& effect(const kinergy::model::Model& m, const std::string& name) {
+  int i = m.effect_index(name);
+  if (i < 0) throw std::runtime_error("test scene has no effect " + name);
+  return m.effects[static_cast<std::size_t>(i)];
+}
+
+/// State symbol q@S (rate = false) or q_dot@S (rate = true).
+inline ex at(const kinergy::model::Model& m, const std::string& q, const std::string& state, bool rate = false) {
+  int s = m.state_index(state);
+  if (s < 0) throw std::runtime_error("test scene has no state " + state);
+  auto& p = m.states[static_cast<std::size_t>(s)].sym.at(q);
+  return rate ? ex(p.second) : ex(p.first);
+}
+
+/// Zero after expansion and removal of sin² + cos² (the library's own normal form for
+/// polynomials in sin and cos), falling back to GiNaC's rational normal form.
+inline bool symbolically_zero(const ex& e) {
+  ex x = kinergy::model::trig_simplify(e.expand());
+  if (x.is_zero()) return true;
+  return GiNaC::normal(x).is_zero();
+}
+
+/// Every symbol in e.
+inline std::set<ex, GiNaC::ex_is_less> symbols_in(const ex& e) {
+  std::set<ex, GiNaC::ex_is_less> out;
+  if (GiNaC::is_a<GiNaC::symbol>(e)) out.insert(e);
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    auto s = symbols_in(e.op(i));
+    out.insert(s.begin(), s.end());
+  }
+  return out;
+}
+
+/// A random exact rational in [lo, hi] with denominator 1000.
+inline numeric random_rational(std::mt19937& rng, int lo, int hi) {
+  std::uniform_int_distribution<int> d(lo * 1000, hi * 1000);
+  return numeric(d(rng), 1000);
+}
+
+/// Numeric value of e at `values`, `digits` working digits; throws when not a real number.
+inline numeric value(const ex& e, const exmap& values, int digits = 50) {
+  auto v = kinergy::numerics::evaluate(e, values, digits);
+  if (!v) throw std::runtime_error("not a real number: " + str(e.subs(values)));
+  return *v;
+}
+
+/// 10^-n, exact.
+inline numeric tol(int n) { return GiNaC::pow(numeric(10), numeric(-n)); }
+
+/// |a − b| ≤ rel · max(1, |a|, |b|)
+inline bool close(const numeric& a, const numeric& b, const numeric& rel) {
+  numeric scale = std::max({numeric(1), GiNaC::abs(a), GiNaC::abs(b)});
+  return GiNaC::abs(a - b) <= rel * scale;
+}
+
+inline bool close(double a, double b, double rel) {
+  return std::abs(a - b) <= rel * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+inline double to_double(const ex& e, const exmap& values = {}) { return value(e, values, 30).to_double(); }
+
+}  // namespace kt
+
+#include <csignal>
+#include <functional>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace kt {
+
+/// What happened to a computation run in a child process.
+struct ChildResult {
+  enum class Status { Ok, Failed, Threw, Timeout, Crashed } status = Status::Crashed;
+  std::string message;
+};
+
+/// Run `f` in a forked child so that a computation that never returns cannot hang the test
+/// run: the child is killed after `seconds`. f returns true for success and may write a
+/// message for the report.
+inline ChildResult in_child(const std::function<bool(std::string&)>& f, int seconds) {
+  int fd[2];
+  if (pipe(fd) != 0) return {ChildResult::Status::Crashed, "pipe() failed"};
+  pid_t pid = fork();
+  if (pid < 0) return {ChildResult::Status::Crashed, "fork() failed"};
+  if (pid == 0) {
+    ::close(fd[0]);
+    std::string msg;
+    int code = 3;
+    try {
+      code = f(msg) ? 0 : 1;
+    } catch (const std::exception& e) {
+      msg = e.what();
+      code = 2;
+    }
+    ssize_t w = write(fd[1], msg.data(), msg.size());
+    (void)w;
+    ::close(fd[1]);
+    _exit(code);
+  }
+  ::close(fd[1]);
+  int st = 0;
+  bool done = false;
+  for (int i = 0; i < seconds * 20; ++i) {
+    if (waitpid(pid, &st, WNOHANG) == pid) {
+      done = true;
+      break;
+    }
+    usleep(50000);
+  }
+  ChildResult r;
+  if (!done) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &st, 0);
+    ::close(fd[0]);
+    r.status = ChildResult::Status::Timeout;
+    r.message = "no answer after " + std::to_string(seconds) + " s";
+    return r;
+  }
+  char buf[4096];
+  ssize_t n;
+  while ((n = read(fd[0], buf, sizeof buf)) > 0) r.message.append(buf, static_cast<std::size_t>(n));
+  ::close(fd[0]);
+  if (!WIFEXITED(st)) r.status = ChildResult::Status::Crashed;
+  else if (WEXITSTATUS(st) == 0) r.status = ChildResult::Status::Ok;
+  else if (WEXITSTATUS(st) == 1) r.status = ChildResult::Status::Failed;
+  else r.status = ChildResult::Status::Threw;
+  return r;
+}
+
+}  // namespace kt
