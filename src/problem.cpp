@@ -15,20 +15,7 @@ using model::Model;
 
 namespace {
 
-std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
 
-/// What GiNaC's complaint about a value means, in words.
-std::string math_fault(const std::exception& err) {
-  std::string w = err.what();
-  if (w.find("division by zero") != std::string::npos) return "a division by zero";
-  if (w.find("log(0)") != std::string::npos) return "log(0)";
-  if (w.find("pole") != std::string::npos) return "a function at a pole, like tan at pi/2";
-  return w;
-}
 
 bool has_float(const ex& e) {
   if (is_a<numeric>(e)) return !ex_to<numeric>(e).is_rational() && !ex_to<numeric>(e).is_crational();
@@ -37,14 +24,6 @@ bool has_float(const ex& e) {
   return false;
 }
 
-ex tidy(const ex& e) {
-  ex x = model::trig_simplify(e);
-  if (model::ex_size(x) < 400) {
-    ex n = normal(x);
-    if (model::ex_size(n) <= model::ex_size(x) + 4) x = n;
-  }
-  return x;
-}
 
 struct Selector {
   const Model& m;
@@ -178,7 +157,7 @@ Solution solve_scene(const scene::SceneDef& def) {
   exmap env = m.numeric_environment();
   // the constraints evaluated at the values given may be undefined there (x/tan(theta), theta = pi/2)
   auto undefined = [&](const SourcePos& pos, const std::string& what, const std::exception& err) {
-    return SceneError(pos, what + " is undefined for the values given at the states (" + math_fault(err) + ")",
+    return SceneError(pos, what + " is undefined for the values given at the states (" + model::math_fault(err) + ")",
                       "check the values given at the states");
   };
   std::optional<principles::Knowledge> known;
@@ -305,19 +284,19 @@ Solution solve_scene(const scene::SceneDef& def) {
     try {
       c = f.value.subs(given).subs(sol.branch.sol);
     } catch (const std::exception& err) {
-      throw SceneError(f.pos, "'" + f.name + "' is undefined at the states (" + math_fault(err) + ")",
+      throw SceneError(f.pos, "'" + f.name + "' is undefined at the states (" + model::math_fault(err) + ")",
                        "check the value of '" + f.name + "' and the values given at its states");
     }
     for (auto& u : unknowns)
       if (c.has(u)) {
         std::size_t n = sol.equations.size();
-        throw SceneError(f.pos, "'" + f.name + "' is not determined: " + str(u) + " is unknown (the analyses give " +
+        throw SceneError(f.pos, "'" + f.name + "' is not determined: " + model::text(u) + " is unknown (the analyses give " +
                                     std::to_string(n) + (n == 1 ? " equation" : " equations") + " for more unknowns)",
-                         "give " + str(u) + " at its state, or add an analysis or a 'where' condition that fixes it");
+                         "give " + model::text(u) + " at its state, or add an analysis or a 'where' condition that fixes it");
       }
     // a float in the result comes only from a numeric root: no closed form
     r.closed_form = !has_float(c);
-    r.closed = model::root_simplify(tidy(c));
+    r.closed = model::root_simplify(model::tidy(c));
     if (f.unit) {
       r.unit = f.unit->text;
       r.unit_factor = f.unit->factor;
@@ -342,7 +321,7 @@ Solution solve_scene(const scene::SceneDef& def) {
     if (all_values) {
       auto v = numerics::evaluate(r.closed, env, 30);
       if (!v)
-        throw SceneError(f.pos, "'" + f.name + "' has no real value (" + str(r.closed) + ")",
+        throw SceneError(f.pos, "'" + f.name + "' has no real value (" + model::text(r.closed) + ")",
                          "check the states and parameters: this result is undefined or complex for them");
       r.si = v;
     }

@@ -17,21 +17,6 @@ using namespace GiNaC;
 using scene::Node;
 using scene::Text;
 
-static std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
-
-/// What GiNaC's complaint about a value means, in words ("division by zero", "log(0)").
-static std::string math_fault(const std::exception& err) {
-  std::string w = err.what();
-  if (w.find("division by zero") != std::string::npos) return "a division by zero";
-  if (w.find("log(0)") != std::string::npos) return "log(0)";
-  if (w.find("pole") != std::string::npos) return "a function at a pole, like tan at pi/2";
-  return w;
-}
-
 /// The unit to write for a dimension, in words for a fix ("m/s"; angles: "rad or deg").
 static std::string unit_words(const Dimension& d) {
   std::string n = units::si_name(d);
@@ -63,15 +48,6 @@ static void check_cut(const Node& n) {
                      "put the expression in quotes, e.g. \"" + n.scalar + ", …)\"");
 }
 
-/// A key no name can be: an expression's tail after YAML split `{F: [f(a, b), 0]}` at a comma.
-static bool looks_cut(const std::string& k) {
-  int depth = 0;
-  for (char c : k) {
-    if (c == '(') ++depth;
-    if (c == ')') --depth;
-  }
-  return depth < 0 || k.find_first_of("()@*/^+") != std::string::npos;
-}
 
 // ---------------------------------------------------------------- dimensions
 
@@ -79,7 +55,7 @@ Dimension Model::dimension(const ex& e) const {
   if (is_a<numeric>(e) || is_a<constant>(e)) return {};
   if (is_a<symbol>(e)) {
     auto it = dims_.find(e);
-    if (it == dims_.end()) throw DimensionError("'" + str(e) + "' has no known dimension");
+    if (it == dims_.end()) throw DimensionError("'" + text(e) + "' has no known dimension");
     return it->second;
   }
   if (is_a<add>(e)) {
@@ -87,8 +63,8 @@ Dimension Model::dimension(const ex& e) const {
     for (std::size_t i = 1; i < e.nops(); ++i) {
       Dimension di = dimension(e.op(i));
       if (di != d0)
-        throw DimensionError("'" + str(e.op(0)) + "' has dimension " + d0.str() + " but '" +
-                             str(e.op(i)) + "' has " + di.str());
+        throw DimensionError("'" + text(e.op(0)) + "' has dimension " + d0.str() + " but '" +
+                             text(e.op(i)) + "' has " + di.str());
     }
     return d0;
   }
@@ -101,12 +77,12 @@ Dimension Model::dimension(const ex& e) const {
     Dimension b = dimension(e.op(0));
     Dimension x = dimension(e.op(1));
     if (!x.dimensionless())
-      throw DimensionError("the exponent '" + str(e.op(1)) + "' has dimension " + x.str() +
+      throw DimensionError("the exponent '" + text(e.op(1)) + "' has dimension " + x.str() +
                            "; an exponent must be a pure number");
     if (b.dimensionless()) return {};
     if (!is_a<numeric>(e.op(1)) || !ex_to<numeric>(e.op(1)).is_rational())
-      throw DimensionError("'" + str(e.op(0)) + "' (" + b.str() +
-                           ") is raised to a non-numeric power '" + str(e.op(1)) + "'");
+      throw DimensionError("'" + text(e.op(0)) + "' (" + b.str() +
+                           ") is raised to a non-numeric power '" + text(e.op(1)) + "'");
     return b.pow(ex_to<numeric>(e.op(1)));
   }
   if (is_a<function>(e)) {
@@ -115,20 +91,20 @@ Dimension Model::dimension(const ex& e) const {
     if (n == "atan2") {
       Dimension a = dimension(e.op(0)), b = dimension(e.op(1));
       if (a != b)
-        throw DimensionError("atan2 arguments '" + str(e.op(0)) + "' (" + a.str() + ") and '" +
-                             str(e.op(1)) + "' (" + b.str() + ") differ in dimension");
+        throw DimensionError("atan2 arguments '" + text(e.op(0)) + "' (" + a.str() + ") and '" +
+                             text(e.op(1)) + "' (" + b.str() + ") differ in dimension");
       return {};
     }
     for (std::size_t i = 0; i < e.nops(); ++i) {
       Dimension a = dimension(e.op(i));
       if (!a.dimensionless())
-        throw DimensionError(n + "('" + str(e.op(i)) + "') takes a pure number or an angle, but '" +
-                             str(e.op(i)) + "' has dimension " + a.str());
+        throw DimensionError(n + "('" + text(e.op(i)) + "') takes a pure number or an angle, but '" +
+                             text(e.op(i)) + "' has dimension " + a.str());
     }
     return {};
   }
   if (is_a<integral>(e)) return dimension(e.op(3)) * dimension(e.op(0));
-  throw DimensionError("cannot tell the dimension of '" + str(e) + "'");
+  throw DimensionError("cannot tell the dimension of '" + text(e) + "'");
 }
 
 // ---------------------------------------------------------------- kinematics
@@ -239,12 +215,7 @@ ex Model::spring_length(const ex& d2) const {
       return sqrt(d2);
     }
     ex c = 1, p;
-    exvector fs;
-    if (is_a<mul>(f))
-      for (std::size_t i = 0; i < f.nops(); ++i) fs.push_back(f.op(i));
-    else
-      fs.push_back(f);
-    for (auto& x : fs) {
+    for (auto& x : factors_of(f)) {
       if (is_a<GiNaC::power>(x) && x.op(1).is_equal(2) && p.is_zero()) p = x.op(0);
       else c *= x;
     }
@@ -672,7 +643,7 @@ private:
     }
     if (!is_a<numeric>(v)) return std::nullopt;
     if (!ex_to<numeric>(v).is_real())
-      throw SceneError(pos, what + " is not a real number for the parameters' values (it is " + str(v) + ")",
+      throw SceneError(pos, what + " is not a real number for the parameters' values (it is " + text(v) + ")",
                        "check the values of the parameters it uses (a square root of a negative number?)");
     return ex_to<numeric>(v);
   }
@@ -803,16 +774,22 @@ private:
       throw SceneError({d_.file, 1, 1}, "the scene has no bodies", "add a 'bodies:' section");
   }
 
+  /// "lhs = rhs" as lhs − rhs, with its units checked; errors at the text's place.
+  ex equation(const Text& t, SceneContext::Level lv, const std::string& key) {
+    SceneContext ctx(m_, lv, false);
+    ex e;
+    try {
+      e = expr::parse_equation(t.s, ctx);
+    } catch (const InputError& err) {
+      rethrow_at(t.pos, err);
+    }
+    dim(e, t.pos, key);
+    return e;
+  }
+
   void constraints() {
     for (auto& c : d_.constraints) {
-      SceneContext ctx(m_, SceneContext::Geometry, false);
-      ex e;
-      try {
-        e = expr::parse_equation(c.s, ctx);
-      } catch (const InputError& err) {
-        rethrow_at(c.pos, err);
-      }
-      dim(e, c.pos, "constraint");
+      ex e = equation(c, SceneContext::Geometry, "constraint");
       if (e.is_zero())
         throw SceneError(c.pos, "the constraint '" + c.s + "' says nothing (0 = 0)",
                          "write a relation between coordinates, e.g. x + r*phi = 0");
@@ -845,7 +822,7 @@ private:
       if (e.options.entries[i + 1].second.kind == Node::Kind::Null) check_cut(e.options.entries[i].second);
     for (auto& [k, v] : e.options.entries)
       if (std::find(keys.begin(), keys.end(), k.scalar) == keys.end()) {
-        if (v.kind == Node::Kind::Null && looks_cut(k.scalar))
+        if (v.kind == Node::Kind::Null && scene::looks_cut(k.scalar))
           throw SceneError(k.pos, "'" + k.scalar + "' looks like the end of an expression cut at a comma: inside {…} a comma separates entries",
                            "put the expression in quotes, e.g. M: \"atan2(y, x)*M0\"");
         std::string list;
@@ -1025,7 +1002,7 @@ private:
         e.e = checked(text_of(en, "e", "0.5"), SceneContext::ParamsOnly, Dimension{}, "e",
                       "a coefficient of restitution is a pure number");
         if (auto v = value_of(e.e, en.pos, "the coefficient of restitution"); v && (v->is_negative() || *v > 1))
-          throw SceneError(en.pos, "the coefficient of restitution of '" + ed.name + "' is " + str(*v) + ", outside [0, 1]",
+          throw SceneError(en.pos, "the coefficient of restitution of '" + ed.name + "' is " + text(*v) + ", outside [0, 1]",
                            "give e between 0 (plastic: the parties move together) and 1 (elastic)");
         if (auto* tg = ed.options.get("tangential")) {
           if (!tg->is_scalar() || (tg->scalar != "stick" && tg->scalar != "smooth"))
@@ -1148,14 +1125,7 @@ private:
         s.given[sym] = v;
       }
       for (auto& w : sd.where) {
-        SceneContext ctx(m_, SceneContext::Quantities, false);
-        ex e;
-        try {
-          e = expr::parse_equation(w.s, ctx);
-        } catch (const InputError& err) {
-          rethrow_at(w.pos, err);
-        }
-        dim(e, w.pos, "where");
+        ex e = equation(w, SceneContext::Quantities, "where");
         s.where.push_back({m_.bind(e, static_cast<int>(si)), w.pos});
       }
     }
@@ -1248,7 +1218,7 @@ private:
             if (n2.is_zero()) throw SceneError(al->pos, "the direction is zero", "write x, y or [nx, ny]");
             a.nx = nx / sqrt(n2);
             a.ny = ny / sqrt(n2);
-            a.along_name = "[" + str(nx) + ", " + str(ny) + "]";
+            a.along_name = "[" + text(nx) + ", " + text(ny) + "]";
           }
         }
       }

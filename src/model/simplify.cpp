@@ -1,10 +1,44 @@
 #include "kinergy/model/simplify.hpp"
 
+#include <sstream>
+
 #include <optional>
 
 namespace kinergy::model {
 
 using namespace GiNaC;
+
+ex tidy(const ex& e) {
+  ex x = trig_simplify(e);
+  if (ex_size(x) < 400) {
+    ex n = normal(x);
+    if (ex_size(n) <= ex_size(x) + 4) x = n;
+  }
+  return x;
+}
+
+exvector factors_of(const ex& e) {
+  exvector fs;
+  if (is_a<mul>(e))
+    for (std::size_t i = 0; i < e.nops(); ++i) fs.push_back(e.op(i));
+  else
+    fs.push_back(e);
+  return fs;
+}
+
+std::string text(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
+std::string math_fault(const std::exception& err) {
+  std::string w = err.what();
+  if (w.find("division by zero") != std::string::npos) return "a division by zero";
+  if (w.find("log(0)") != std::string::npos) return "log(0)";
+  if (w.find("pole") != std::string::npos) return "a function at a pole, like tan at pi/2";
+  return w;
+}
 
 std::size_t ex_size(const ex& e) {
   std::size_t n = 1;
@@ -86,12 +120,7 @@ struct unroot : public map_function {
       return m;
     }
     ex out = 1, in = 1;
-    exvector fs;
-    if (is_a<mul>(f))
-      for (std::size_t i = 0; i < f.nops(); ++i) fs.push_back(f.op(i));
-    else
-      fs.push_back(f);
-    for (auto& x : fs) {
+    for (auto& x : factors_of(f)) {
       if (is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_integer() &&
           x.op(0).info(info_flags::positive)) {
         long p = ex_to<numeric>(x.op(1)).to_long();

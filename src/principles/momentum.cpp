@@ -17,11 +17,6 @@ using model::PointRef;
 
 namespace {
 
-std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
 
 bool in_set(const std::vector<int>& s, int b) { return std::find(s.begin(), s.end(), b) != s.end(); }
 
@@ -230,7 +225,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
         if (In.is_zero()) continue;
         if (a.conserved)
           throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
-                                      state_pair(m, a) + ": effect '" + e.name + "' has an impulse " + str(In),
+                                      state_pair(m, a) + ": effect '" + e.name + "' has an impulse " + model::text(In),
                            "remove 'conserved: true' so its impulse is included, or choose another direction");
         c.impulses.push_back({e.name, In, how});
         I += In;
@@ -275,7 +270,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         Mp = model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
         if (vanishes(m, Mp)) continue;
         if (!motion_free(m, Mp))
-          throw SceneError(e.pos, "the moment of '" + e.name + "' about " + a.about.text + " changes with the motion (" + str(Mp) +
+          throw SceneError(e.pos, "the moment of '" + e.name + "' about " + a.about.text + " changes with the motion (" + model::text(Mp) +
                                       "); its angular impulse has no closed form",
                            "take moments about a point where it is constant (a pivot, the mass centre), or use an energy analysis");
         In = time_integral(m, e, Mp, a);

@@ -41,6 +41,15 @@ const std::vector<std::string>& effect_kinds() {
   return k;
 }
 
+bool looks_cut(const std::string& k) {
+  int depth = 0;
+  for (char c : k) {
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+  }
+  return depth < 0 || k.find_first_of("()@*/^+") != std::string::npos;
+}
+
 std::string closest(const std::string& word, const std::vector<std::string>& options) {
   auto lower = [](std::string x) {
     for (auto& c : x) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -175,15 +184,6 @@ struct Loader {
     return depth > 0;
   }
 
-  /// A key no name can be: an expression's tail after YAML split `{value: f(a, b)}` at the comma.
-  static bool looks_cut(const std::string& k) {
-    int depth = 0;
-    for (char c : k) {
-      if (c == '(') ++depth;
-      if (c == ')') --depth;
-    }
-    return depth < 0 || k.find_first_of("()@*/^+") != std::string::npos;
-  }
 
   const Node& need_map(const Node& n, const std::string& key, const std::string& example) const {
     if (!n.is_map()) wrong_type(n, key, "a map", example);

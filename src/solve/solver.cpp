@@ -14,34 +14,12 @@ using principles::Equation;
 
 namespace {
 
-std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
 
-/// What GiNaC's complaint about a value means, in words.
-std::string math_fault(const std::exception& err) {
-  std::string w = err.what();
-  if (w.find("division by zero") != std::string::npos) return "a division by zero";
-  if (w.find("log(0)") != std::string::npos) return "log(0)";
-  if (w.find("pole") != std::string::npos) return "a function at a pole, like tan at pi/2";
-  return w;
-}
 
 constexpr int kWork = 40;  // working digits for decisions
 
 std::optional<numeric> num(const ex& e, const exmap& env) { return numerics::evaluate(e, env, kWork); }
 
-/// Tidy a closed form: rational normal form when it is small enough to stay cheap.
-ex tidy(const ex& e) {
-  ex x = model::trig_simplify(e);
-  if (model::ex_size(x) < 400) {
-    ex n = normal(x);
-    if (model::ex_size(n) <= model::ex_size(x) + 4) x = n;
-  }
-  return x;
-}
 
 /// Zero to working precision (relative to the size of its terms)?
 bool numerically_zero(const ex& e, const exmap& env, bool& known) {
@@ -77,7 +55,7 @@ public:
         q.lhs = q.lhs.subs(p_.given);
         q.rhs = q.rhs.subs(p_.given);
       } catch (const std::exception& err) {
-        throw SolveError("the " + q.label + " is undefined for the values given at the states (" + math_fault(err) + ")",
+        throw SolveError("the " + q.label + " is undefined for the values given at the states (" + model::math_fault(err) + ")",
                          "check the values given at the states (a position where a formula divides by zero?)", q.pos);
       }
       s.eqs.push_back(q);
@@ -125,7 +103,7 @@ private:
     try {
       for (auto& [k, val] : st.b.sol) val = val.subs(u == v);
     } catch (const std::exception& err) {
-      throw SolveError("the solution " + str(u) + " = " + str(v) + " makes an earlier result undefined (" + math_fault(err) + ")",
+      throw SolveError("the solution " + model::text(u) + " = " + model::text(v) + " makes an earlier result undefined (" + model::math_fault(err) + ")",
                        "check the values given at the states", {});
     }
     st.b.sol[u] = v;
@@ -134,11 +112,11 @@ private:
         q.lhs = q.lhs.subs(u == v);
         q.rhs = q.rhs.subs(u == v);
       } catch (const std::exception& err) {
-        throw SolveError("the " + q.label + " is undefined when " + str(u) + " = " + str(v) + " (" + math_fault(err) + ")",
+        throw SolveError("the " + q.label + " is undefined when " + model::text(u) + " = " + model::text(v) + " (" + model::math_fault(err) + ")",
                          "check the values given at the states", q.pos);
       }
     }
-    st.b.steps.push_back(str(u) + " from " + how);
+    st.b.steps.push_back(model::text(u) + " from " + how);
   }
 
   // Drop satisfied equations; an equation without unknowns that does not hold kills the branch.
@@ -203,7 +181,7 @@ private:
     if (best < 0) return false;
     std::string how = st.eqs[best].label + " (linear)";
     st.eqs.erase(st.eqs.begin() + best);  // used up: it holds by construction
-    assign(st, best_u, tidy(-best_b / best_a), how);
+    assign(st, best_u, model::tidy(-best_b / best_a), how);
     return true;
   }
 
@@ -233,7 +211,7 @@ private:
     auto us = unknowns_in(r);
     if (us.size() != 1) {
       std::string names;
-      for (auto& u : us) names += (names.empty() ? "" : ", ") + str(u);
+      for (auto& u : us) names += (names.empty() ? "" : ", ") + model::text(u);
       throw SolveError("cannot solve the " + q.label + ": it is nonlinear in several unknowns (" + names + ")",
                        "give more values at the states, or add an analysis that fixes one of them", q.pos);
     }
@@ -245,11 +223,11 @@ private:
       ex a = d2 / 2, b = r.diff(u).subs(u == 0), c = r.subs(u == 0);
       bool known = false;
       if (b.is_zero() || numerically_zero(b, p_.env, known)) {
-        ex sq = tidy(-c) / tidy(a);  // u = ±√(−c/a), numerator and denominator tidied apart
-        if (model::ex_size(sq) < 600) sq = tidy(sq);
+        ex sq = model::tidy(-c) / model::tidy(a);  // u = ±√(−c/a), numerator and denominator tidied apart
+        if (model::ex_size(sq) < 600) sq = model::tidy(sq);
         auto v = num(sq, p_.env);
         if (v && v->is_negative())
-          throw SolveError("the " + q.label + " has no real solution for " + str(u) + ": " + str(u) +
+          throw SolveError("the " + q.label + " has no real solution for " + model::text(u) + ": " + model::text(u) +
                                "^2 would be " + numerics::format(*v, 6) + " (negative)",
                            "the state cannot be reached with these values (the kinetic energy would be negative); check the states and parameters",
                            q.pos);
@@ -257,12 +235,12 @@ private:
         branch(st, u, {root, -root}, how + " (quadratic)");
         return;
       }
-      ex disc = tidy(b * b - 4 * a * c);
+      ex disc = model::tidy(b * b - 4 * a * c);
       auto v = num(disc, p_.env);
       if (v && v->is_negative())
-        throw SolveError("the " + q.label + " has no real solution for " + str(u),
+        throw SolveError("the " + q.label + " has no real solution for " + model::text(u),
                          "the state cannot be reached with these values; check the states and parameters", q.pos);
-      branch(st, u, {tidy((-b + sqrt(disc)) / (2 * a)), tidy((-b - sqrt(disc)) / (2 * a))},
+      branch(st, u, {model::tidy((-b + sqrt(disc)) / (2 * a)), model::tidy((-b - sqrt(disc)) / (2 * a))},
              how + " (quadratic)");
       return;
     }
@@ -274,13 +252,13 @@ private:
       if (w.has(u) || !w.is_polynomial(z) || w.degree(z) < 1 || w.degree(z) > 2) continue;
       std::vector<ex> zs;
       if (w.degree(z) == 1) {
-        zs.push_back(tidy(-w.subs(z == 0) / w.diff(z)));
+        zs.push_back(model::tidy(-w.subs(z == 0) / w.diff(z)));
       } else {
         ex a = w.diff(z, 2) / 2, b = w.diff(z).subs(z == 0), c = w.subs(z == 0);
-        ex disc = tidy(b * b - 4 * a * c);
+        ex disc = model::tidy(b * b - 4 * a * c);
         auto v = num(disc, p_.env);
         if (v && v->is_negative()) continue;
-        zs = {tidy((-b + sqrt(disc)) / (2 * a)), tidy((-b - sqrt(disc)) / (2 * a))};
+        zs = {model::tidy((-b + sqrt(disc)) / (2 * a)), model::tidy((-b - sqrt(disc)) / (2 * a))};
       }
       std::vector<ex> roots;
       for (auto& zz : zs) {
@@ -291,7 +269,7 @@ private:
         else roots.insert(roots.end(), {atan(zz), atan(zz) + Pi});
       }
       if (roots.empty())
-        throw SolveError("the " + q.label + " has no real solution for " + str(u),
+        throw SolveError("the " + q.label + " has no real solution for " + model::text(u),
                          "the position cannot be reached with these values; check the states and parameters", q.pos);
       branch(st, u, roots, how + " (trigonometric)");
       return;
@@ -337,7 +315,7 @@ private:
       if (roots.size() > 8) break;
     }
     if (roots.empty())
-      throw SolveError("the " + q.label + " has no closed form for " + str(u) + " and no root was found near " +
+      throw SolveError("the " + q.label + " has no closed form for " + model::text(u) + " and no root was found near " +
                            numerics::format(numeric(ref), 6),
                        "give the unknown a range with root: {in: [lo, hi]} on the result", q.pos);
     branch(st, u, roots, q.label + " (numeric root, no closed form)", true);

@@ -12,11 +12,6 @@ using namespace GiNaC;
 
 namespace {
 
-std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
 
 constexpr int kDigits = 50;
 
@@ -86,7 +81,7 @@ Check form_check(const Solution& s, const Result& r, const model::Expect& x) {
     return c;
   }
   if (worst > tol) {
-    c.detail = "FAILS: derived " + str(derived) + ", claimed " + str(claimed) + "; they differ at " + where;
+    c.detail = "FAILS: derived " + model::text(derived) + ", claimed " + model::text(claimed) + "; they differ at " + where;
     return c;
   }
   c.status = Check::Status::Checked;

@@ -1,6 +1,8 @@
 /// @file simplify.hpp  Trigonometric simplification without normal() on big trig expressions.
 #pragma once
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include <ginac/ginac.h>
 
@@ -22,6 +24,19 @@ GiNaC::ex collect_simplify(const GiNaC::ex& e, const GiNaC::lst& rates);
 /// Antiderivative of f in s when an elementary rule applies (sums, constant factors,
 /// powers and sin/cos/exp/sinh/cosh of a linear argument); nothing otherwise.
 std::optional<GiNaC::ex> antiderivative(const GiNaC::ex& f, const GiNaC::symbol& s);
+
+/// A closed form made tidy: trigonometric simplification, then the rational normal form when
+/// the expression is small enough for that to stay cheap (and it does not grow).
+GiNaC::ex tidy(const GiNaC::ex& e);
+
+/// The factors of a product (the expression itself when it is not a product).
+GiNaC::exvector factors_of(const GiNaC::ex& e);
+
+/// GiNaC's default text of an expression (for messages).
+std::string text(const GiNaC::ex& e);
+
+/// What GiNaC's complaint about a value means, in words ("a division by zero", "log(0)", …).
+std::string math_fault(const std::exception& err);
 
 /// Number of nodes in an expression tree (a size measure).
 std::size_t ex_size(const GiNaC::ex& e);

@@ -112,6 +112,9 @@ SceneDef load_file(const std::string& path);
 /// Read scene text; `file` names it in errors.
 SceneDef load_string(const std::string& text, const std::string& file = "<scene>");
 
+/// A key no name can be: an expression's tail after YAML split `{value: f(a, b)}` at the comma.
+bool looks_cut(const std::string& key);
+
 /// The closest of `options` to `word` by edit distance, or "" when none is near.
 std::string closest(const std::string& word, const std::vector<std::string>& options);
 
