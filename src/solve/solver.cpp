@@ -185,10 +185,17 @@ private:
     return true;
   }
 
-  void branch(const State& st, const ex& u, const std::vector<ex>& roots, const std::string& how,
-              bool numeric_root = false) {
+  // One branch per root. The equation solved holds there by construction and leaves the branch
+  // (its residual with a float root folds to one number that no relative test can judge).
+  void branch(const State& st, const Equation& solved, const ex& u, const std::vector<ex>& roots,
+              const std::string& how, bool numeric_root = false) {
     for (auto& r : roots) {
       State s = st;
+      for (std::size_t i = 0; i < s.eqs.size(); ++i)
+        if (s.eqs[i].residual().is_equal(solved.residual())) {
+          s.eqs.erase(s.eqs.begin() + static_cast<long>(i));
+          break;
+        }
       assign(s, u, r, how);
       if (numeric_root) s.b.numeric_only.insert(u);
       work_.push_back(std::move(s));
@@ -232,7 +239,7 @@ private:
                            "the state cannot be reached with these values (the kinetic energy would be negative); check the states and parameters",
                            q.pos);
         ex root = sqrt(sq);
-        branch(st, u, {root, -root}, how + " (quadratic)");
+        branch(st, q, u, {root, -root}, how + " (quadratic)");
         return;
       }
       ex disc = model::tidy(b * b - 4 * a * c);
@@ -240,7 +247,7 @@ private:
       if (v && v->is_negative())
         throw SolveError("the " + q.label + " has no real solution for " + model::text(u),
                          "the state cannot be reached with these values; check the states and parameters", q.pos);
-      branch(st, u, {model::tidy((-b + sqrt(disc)) / (2 * a)), model::tidy((-b - sqrt(disc)) / (2 * a))},
+      branch(st, q, u, {model::tidy((-b + sqrt(disc)) / (2 * a)), model::tidy((-b - sqrt(disc)) / (2 * a))},
              how + " (quadratic)");
       return;
     }
@@ -271,10 +278,48 @@ private:
       if (roots.empty())
         throw SolveError("the " + q.label + " has no real solution for " + model::text(u),
                          "the position cannot be reached with these values; check the states and parameters", q.pos);
-      branch(st, u, roots, how + " (trigonometric)");
+      branch(st, q, u, roots, how + " (trigonometric)");
       return;
     }
     numeric_roots(st, q, u);
+  }
+
+  // No closed form: find the sign changes of the residual around a reference and refine.
+  /// Residual at u = x with `digits` working digits (nothing where it is undefined).
+  std::optional<numeric> residual_at(const ex& r, const symbol& u, const numeric& x, int digits) const {
+    exmap m = p_.env;
+    m[u] = x;
+    return numerics::evaluate(r, m, digits);
+  }
+
+  /// A root in [a, b] where the residual changes sign: Illinois regula falsi at working
+  /// precision (bisection when a step would leave the bracket). Bounded: it always returns.
+  std::optional<numeric> refine(const ex& r, const symbol& u, numeric a, numeric b, numeric fa, numeric fb) const {
+    const int digits = kWork + 10;
+    int side = 0;
+    numeric c = a;
+    for (int it = 0; it < 400; ++it) {
+      c = (a * fb - b * fa) / (fb - fa);
+      if (!(c > std::min(a, b) && c < std::max(a, b))) c = (a + b) / 2;
+      auto fc = residual_at(r, u, c, digits);
+      if (!fc) return std::nullopt;
+      if (fc->is_zero() || abs(b - a) <= abs(c) * pow(numeric(10), -kWork) + pow(numeric(10), -300)) return c;
+      if ((fc->is_positive() && fa.is_positive()) || (fc->is_negative() && fa.is_negative())) {
+        a = c;
+        fa = *fc;
+        if (side == -1) fb = fb / 2;  // Illinois: the end kept twice has its value halved
+        side = -1;
+      } else {
+        b = c;
+        fb = *fc;
+        if (side == 1) fa = fa / 2;
+        side = 1;
+      }
+      c = ex_to<numeric>(c.evalf());  // keep the working numbers floats of fixed size
+      a = ex_to<numeric>(a.evalf());
+      b = ex_to<numeric>(b.evalf());
+    }
+    return c;
   }
 
   // No closed form: find the sign changes of the residual around a reference and refine.
@@ -286,39 +331,40 @@ private:
     double span = 10 * (1 + std::abs(ref));
     const int n = 2000;
     std::vector<ex> roots;
-    auto f = [&](double x) -> std::optional<double> {
-      auto v = numerics::evaluate(r, [&] { exmap m = p_.env; m[u] = numeric(x); return m; }(), 20);
-      if (!v) return std::nullopt;
-      return v->to_double();
+    long saved = Digits;
+    Digits = kWork + 10;
+    auto keep = [&](const numeric& x) {
+      // a root only where the residual vanishes against the size of its terms (not a pole)
+      exmap at = p_.env;
+      at[u] = x;
+      bool known = false;
+      if (numerically_zero(r, at, known) || !known) roots.push_back(x);
     };
-    double x0 = ref - span;
-    auto f0 = f(x0);
-    for (int i = 1; i <= n; ++i) {
-      double x1 = ref - span + 2 * span * i / n;
-      auto f1 = f(x1);
-      if (f0 && f1 && ((*f0 <= 0 && *f1 > 0) || (*f0 >= 0 && *f1 < 0))) {
-        ex rr = r.subs(p_.env);
-        long saved = Digits;
-        Digits = kWork;
-        try {
-          ex root = fsolve(rr, u, numeric(x0), numeric(x1));
-          // keep it only if the residual really vanishes there (not a pole)
-          bool known = false;
-          if (numerically_zero(r.subs(u == root), p_.env, known) || !known) roots.push_back(root);
-        } catch (const std::exception&) {
-          // a pole, not a root: the residual jumps sign without passing zero
+    auto grid = [&](int i) { return numeric(ref) - numeric(span) + numeric(2 * span) * numeric(i, n); };
+    numeric x0 = grid(0);
+    auto f0 = residual_at(r, u, x0, 20);
+    if (f0 && f0->is_zero()) keep(x0);
+    for (int i = 1; i <= n && roots.size() <= 8; ++i) {
+      numeric x1 = grid(i);
+      auto f1 = residual_at(r, u, x1, 20);
+      if (f1 && f1->is_zero()) {
+        keep(x1);  // exactly on the grid
+      } else if (f0 && f1 && !f0->is_zero() && (f0->is_negative() != f1->is_negative())) {
+        auto a = residual_at(r, u, x0, kWork + 10), b = residual_at(r, u, x1, kWork + 10);
+        if (a && b) {
+          auto x = refine(r, u, x0, x1, *a, *b);
+          if (x) keep(*x);
         }
-        Digits = saved;
       }
       x0 = x1;
       f0 = f1;
-      if (roots.size() > 8) break;
     }
+    Digits = saved;
     if (roots.empty())
       throw SolveError("the " + q.label + " has no closed form for " + model::text(u) + " and no root was found near " +
                            numerics::format(numeric(ref), 6),
                        "give the unknown a range with root: {in: [lo, hi]} on the result", q.pos);
-    branch(st, u, roots, q.label + " (numeric root, no closed form)", true);
+    branch(st, q, u, roots, q.label + " (numeric root, no closed form)", true);
   }
 };
 

@@ -184,7 +184,7 @@ TEST_CASE("solver: u + sin(u) = c has no closed form: a numeric root, flagged", 
   CHECK(GiNaC::abs(*r) < kt::tol(28));
 }
 
-TEST_CASE("solver: a transcendental equation with several roots gives them all", "[solve][numeric-root][!mayfail]") {
+TEST_CASE("solver: a transcendental equation with several roots gives them all", "[solve][numeric-root]") {
   // (u − 1/3)² − 4 sin(u − 1/3) = 0 has the roots 1/3 and 1/3 + 1.9337537628270212…
   // Fails through BUG 1 below: the root 2.2670870961603545866… is found by fsolve (residual
   // 6.4e-58) and then dropped because its residual is not exactly 0.0.
@@ -204,7 +204,7 @@ TEST_CASE("solver: a transcendental equation with several roots gives them all",
 }
 
 TEST_CASE("solver: u + sin(u) = c for a range of c (numeric roots are kept and the search ends)",
-          "[solve][numeric-root][!mayfail]") {
+          "[solve][numeric-root]") {
   // BUG 1 (src/solve/solver.cpp, Solver::numeric_roots and numerically_zero): the root found
   // by fsolve is checked with numerically_zero(r.subs(u == root), env, known). With a float
   // root GiNaC folds the residual to a single float (e.g. −9.96e-60 for c = 1/10), so the
@@ -240,7 +240,7 @@ TEST_CASE("solver: u + sin(u) = c for a range of c (numeric roots are kept and t
   }
 }
 
-TEST_CASE("solver: a numeric root that falls on a point of the scan grid is found", "[solve][numeric-root][!mayfail]") {
+TEST_CASE("solver: a numeric root that falls on a point of the scan grid is found", "[solve][numeric-root]") {
   // BUG (src/solve/solver.cpp, Solver::numeric_roots): the residual is sampled at
   // ref − span + 2 span i / 2000; when it is exactly 0 at a sample, neither neighbouring
   // interval shows a strict sign change (0 → + is taken, but GiNaC::fsolve then throws
