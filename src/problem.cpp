@@ -296,7 +296,7 @@ Solution solve_scene(const scene::SceneDef& def) {
       }
     // a float in the result comes only from a numeric root: no closed form
     r.closed_form = !has_float(c);
-    r.closed = model::root_simplify(model::tidy(c));
+    r.closed = model::factored(model::root_simplify(model::tidy(model::tidy_function_arguments(c))));
     if (f.unit) {
       r.unit = f.unit->text;
       r.unit_factor = f.unit->factor;

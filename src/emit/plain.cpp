@@ -16,6 +16,19 @@ enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
 
 std::string print(const ex& e, int ctx);
 
+/// Texts printed in place of some symbols (a parameter's value with its unit), or none.
+thread_local const SymbolTexts* g_names = nullptr;
+
+/// The text that decides the order of terms and factors: always the text without the
+/// replacements, so that a form with values put in keeps the order of the form itself.
+std::string key(const ex& e, int ctx) {
+  const SymbolTexts* saved = g_names;
+  g_names = nullptr;
+  std::string s = print(e, ctx);
+  g_names = saved;
+  return s;
+}
+
 std::string number(const numeric& n) {
   if (n.is_rational()) {
     std::ostringstream os;
@@ -53,9 +66,9 @@ bool flip_sum(const ex& b) {
   for (std::size_t i = 0; i < b.nops(); ++i) {
     bool n = negative_term(b.op(i));
     (n ? neg : pos)++;
-    std::string key = print(n ? ex(-b.op(i)) : b.op(i), kSum);
-    if (first.empty() || key < first) {
-      first = key;
+    std::string k = key(n ? ex(-b.op(i)) : b.op(i), kSum);
+    if (first.empty() || k < first) {
+      first = k;
       first_neg = n;
     }
   }
@@ -117,12 +130,14 @@ int rank(const ex& x) {
 
 std::string factor_text(const Factor& f) {
   if (f.k == 1) return print(f.base, kProduct);
-  return print(f.base, kAtom) + "^" + number(f.k);
+  std::string k = number(f.k);
+  if (!f.k.is_integer()) k = "(" + k + ")";  // 2^(1/4), never 2^1/4
+  return print(f.base, kAtom) + "^" + k;
 }
 
 std::string join(std::vector<Factor> v) {
   std::vector<std::pair<std::pair<int, std::string>, std::string>> keyed;
-  for (auto& x : v) keyed.push_back({{rank(x.base), print(x.base, kAtom)}, factor_text(x)});
+  for (auto& x : v) keyed.push_back({{rank(x.base), key(x.base, kAtom)}, factor_text(x)});
   std::stable_sort(keyed.begin(), keyed.end(), [](auto& a, auto& b) { return a.first < b.first; });
   std::string s;
   for (auto& x : keyed) s += (s.empty() ? "" : "*") + x.second;
@@ -211,7 +226,13 @@ std::string print(const ex& e, int ctx) {
     return compound && ctx >= kProduct ? "(" + s + ")" : s;
   }
   if (is_a<constant>(e) && e.is_equal(Pi)) return "pi";
-  if (is_a<symbol>(e)) return ex_to<symbol>(e).get_name();
+  if (is_a<symbol>(e)) {
+    if (g_names) {
+      auto it = g_names->find(e);
+      if (it != g_names->end()) return ctx >= kProduct ? "(" + it->second + ")" : it->second;
+    }
+    return ex_to<symbol>(e).get_name();
+  }
   if (is_a<add>(e)) {
     std::string s;
     // terms with a positive sign first reads better: "g*m + sqrt(…)" not "-… + …"
@@ -224,7 +245,7 @@ std::string print(const ex& e, int ctx) {
     }
     auto by_text = [](exvector& v, bool negate) {
       std::vector<std::pair<std::string, ex>> k;
-      for (auto& t : v) k.push_back({print(negate ? ex(-t) : t, kSum), t});
+      for (auto& t : v) k.push_back({key(negate ? ex(-t) : t, kSum), t});
       std::stable_sort(k.begin(), k.end(), [](auto& a, auto& b) {
         // plain names before numbers-first products: "g*m + …"; then alphabetical
         return a.first < b.first;
@@ -259,5 +280,19 @@ std::string print(const ex& e, int ctx) {
 }  // namespace
 
 std::string plain(const ex& e) { return print(e, 0); }
+
+std::string plain(const ex& e, const SymbolTexts& names) {
+  const SymbolTexts* saved = g_names;
+  g_names = &names;
+  std::string s;
+  try {
+    s = print(e, 0);
+  } catch (...) {
+    g_names = saved;
+    throw;
+  }
+  g_names = saved;
+  return s;
+}
 
 }  // namespace kinergy::emit

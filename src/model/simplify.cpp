@@ -10,11 +10,47 @@ using namespace GiNaC;
 
 ex tidy(const ex& e) {
   ex x = trig_simplify(e);
-  if (ex_size(x) < 400) {
+  if (ex_size(x) < 1500) {
     ex n = normal(x);
     if (ex_size(n) <= ex_size(x) + 4) x = n;
   }
   return x;
+}
+
+ex factor_any(const ex& e) {
+  // factor() works on polynomials: functions (cos β, √…) stand in as temporary symbols
+  exmap repl;
+  ex p = e.to_polynomial(repl);
+  ex f = factor(p);
+  exmap back;
+  for (auto& [sym, orig] : repl) back[sym] = orig;
+  return f.subs(back);
+}
+
+namespace {
+struct tidy_arguments : public map_function {
+  ex operator()(const ex& e) override {
+    ex m = e.map(*this);
+    if (!is_a<function>(m)) return m;
+    exvector args;
+    for (std::size_t i = 0; i < m.nops(); ++i) args.push_back(factored(tidy(m.op(i))));
+    return ex_to<function>(m).thiscontainer(args);
+  }
+};
+}  // namespace
+
+ex tidy_function_arguments(const ex& e) { return tidy_arguments()(e); }
+
+ex factored(const ex& e) {
+  // numerator and denominator factored apart, kept only when that is shorter
+  if (ex_size(e) > 1500) return e;
+  try {
+    ex nd = numer_denom(e);
+    ex f = factor_any(nd.op(0)) / factor_any(nd.op(1));
+    return ex_size(f) < ex_size(e) ? f : e;
+  } catch (const std::exception&) {
+    return e;  // not a rational function GiNaC can factor
+  }
 }
 
 exvector factors_of(const ex& e) {
@@ -115,7 +151,7 @@ struct unroot : public map_function {
     if (ex_size(b) > 300) return m;  // factoring large expressions costs more than it gives
     ex f;
     try {
-      f = factor(normal(b));
+      f = factor_any(normal(b));
     } catch (const std::exception&) {
       return m;
     }

@@ -1,5 +1,6 @@
 /// @file emit.hpp  Results as text for terminals and as JSON for tools.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,15 @@ struct Options {
   int digits = 15;  ///< significant digits of values
 };
 
+/// Texts to print in place of symbols (a parameter's value with its unit, say).
+using SymbolTexts = std::map<GiNaC::ex, std::string, GiNaC::ex_is_less>;
+
 /// A closed form in plain text, as a person writes it ("sqrt(3*g*sin(theta2)/l)").
 std::string plain(const GiNaC::ex& e);
+
+/// The same with some symbols replaced by texts ("sqrt(3*(9.81 m/s^2)*sin(30 deg)/(1.2 m))");
+/// terms and factors keep the order of the form without the replacements.
+std::string plain(const GiNaC::ex& e, const SymbolTexts& names);
 
 /// Each result's closed form and value with its unit.
 std::string text(const Solution& s, const Options& o);

@@ -29,6 +29,15 @@ std::optional<GiNaC::ex> antiderivative(const GiNaC::ex& f, const GiNaC::symbol&
 /// the expression is small enough for that to stay cheap (and it does not grow).
 GiNaC::ex tidy(const GiNaC::ex& e);
 
+/// factor() of any expression: non-polynomial parts (functions, roots) stand in as symbols.
+GiNaC::ex factor_any(const GiNaC::ex& e);
+
+/// Numerator and denominator factored, when that gives a shorter form.
+GiNaC::ex factored(const GiNaC::ex& e);
+
+/// tidy() and factored() applied inside every function's arguments (acos(…), sin(…)).
+GiNaC::ex tidy_function_arguments(const GiNaC::ex& e);
+
 /// The factors of a product (the expression itself when it is not a product).
 GiNaC::exvector factors_of(const GiNaC::ex& e);
 
