@@ -1058,7 +1058,7 @@ private:
       double d = std::hypot(ex_to<numeric>(gx).to_double(), ex_to<numeric>(gy).to_double());
       if (d > 1e-9)
         throw SceneError(pos, "pin '" + e.name + "': " + e.a.text + " and " + e.b.text +
-                                  " do not coincide (apart by " + std::to_string(d) + " m at some position)",
+                                  " do not coincide (apart by " + numerics::format(numeric(d), 6) + " m at some position)",
                          "fix the body's position/angle or the point so the pinned points stay together");
     }
   }

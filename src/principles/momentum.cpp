@@ -6,6 +6,7 @@
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 
 namespace kinergy::principles {
 
@@ -371,7 +372,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
         double scale = 1;
         if (auto s = k.value(before(pa.r.first))) scale = std::max(scale, std::abs(s->to_double()));
         if (d > 1e-9 * scale)
-          throw SceneError(e.pos, "contact '" + e.name + "': " + e.a.text + " and " + e.b.text + " are " + std::to_string(d) +
+          throw SceneError(e.pos, "contact '" + e.name + "': " + e.a.text + " and " + e.b.text + " are " + numerics::format(numeric(d), 6) +
                                       " m apart at state '" + SB + "', so they cannot strike each other there",
                            "give positions at '" + SB + "' that bring the two points together");
       }
@@ -381,7 +382,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
     ex vn_before = before(vn_after);
     if (auto v = k.value(vn_before); v && !v->is_negative())
       throw SceneError(e.pos, "contact '" + e.name + "': the parties are not approaching along the normal at state '" + SB +
-                                  "' (relative normal velocity " + std::to_string(v->to_double()) + " m/s), so no impact happens",
+                                  "' (relative normal velocity " + numerics::format(*v, 6) + " m/s), so no impact happens",
                        "check the normal: it points from the first party (" + e.a.text + ") into the second (" + e.b.text + ")");
     out.restitution.push_back({after(vn_after), -e.e * vn_before, "restitution",
                                "restitution at contact " + e.name + " in the impact " + SB + " -> " + SA, e.pos});
