@@ -290,9 +290,28 @@ Solution solve_scene(const scene::SceneDef& def) {
     for (auto& u : unknowns)
       if (c.has(u)) {
         std::size_t n = sol.equations.size();
-        throw SceneError(f.pos, "'" + f.name + "' is not determined: " + model::text(u) + " is unknown (the analyses give " +
-                                    std::to_string(n) + (n == 1 ? " equation" : " equations") + " for more unknowns)",
-                         "give " + model::text(u) + " at its state, or add an analysis or a 'where' condition that fixes it");
+        // an impulse left free means the state values around it are missing, not the impulse
+        bool impulse = false;
+        for (auto& a : m.analyses)
+          for (auto& x : a.unknowns) impulse = impulse || x.is_equal(u);
+        // the state values that nothing fixed are what is missing
+        // the state values that were solved only in terms of the free impulse are what is missing
+        std::string missing;
+        if (impulse)
+          for (auto& x : unknowns) {
+            bool is_impulse = false;
+            for (auto& a : m.analyses)
+              for (auto& y : a.unknowns) is_impulse = is_impulse || y.is_equal(x);
+            auto it = sol.branch.sol.find(x);
+            if (!is_impulse && it != sol.branch.sol.end() && it->second.has(u))
+              missing += (missing.empty() ? "" : ", ") + model::text(x);
+          }
+        throw SceneError(f.pos, "'" + f.name + "' is not determined: " + model::text(u) + (impulse ? " (an impulse)" : "") +
+                                    " is unknown (the analyses give " + std::to_string(n) +
+                                    (n == 1 ? " equation" : " equations") + " for more unknowns)",
+                         impulse ? "give " + (missing.empty() ? std::string("the missing values at the states around that analysis") : missing) +
+                                       " (velocities before an impact, a time), or add an analysis"
+                                 : "give " + model::text(u) + " at its state, or add an analysis or a 'where' condition that fixes it");
       }
     // a float in the result comes only from a numeric root: no closed form
     r.closed_form = !has_float(c);

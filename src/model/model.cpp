@@ -413,6 +413,7 @@ public:
     if (level_ == Quantities) {
       if (id == "T") return m_.kinetic_energy();
       if (id == "V") return m_.potential_energy();
+      if (id == "px" || id == "py") return quantity(id, {});
     }
     std::vector<std::string> names;
     for (auto& [k, v] : m_.names_) names.push_back(k);
@@ -648,6 +649,14 @@ private:
     return ex_to<numeric>(v);
   }
 
+  /// Where a value is written: a lone parameter's value, else the place that uses it.
+  SourcePos value_place(const ex& e, const SourcePos& use) {
+    if (is_a<symbol>(e))
+      for (auto& pd : d_.parameters)
+        if (const Parameter* p = m_.parameter(pd.name); p && p->sym.is_equal(e)) return pd.value.pos;
+    return use;
+  }
+
   void positive(const ex& e, const SourcePos& pos, const std::string& what, bool allow_zero = false) {
     auto v = value_of(e, pos, what);
     if (!v || !(allow_zero ? v->is_negative() : !v->is_positive())) return;
@@ -868,9 +877,15 @@ private:
   }
   std::pair<ex, ex> vec(const Node& n, const std::string& key, const Dimension& d, SceneContext::Level lv,
                         const std::string& fix) {
+    const std::string example = key == "along" ? "along: x, y or a direction [nx, ny] such as [1, 1]"
+                                : key == "normal" || key == "direction" ? key + ": [0, 1]"
+                                : key == "J" ? "J: [J0, 0]" : key + ": [0, -P]";
     if (!n.is_list() || n.items.size() != 2) {
       for (auto& it : n.items) check_cut(it);
-      throw SceneError(n.pos, "'" + key + "' must be a list [x, y]", "write e.g. " + key + ": [0, -P]");
+      if (n.is_list())
+        throw SceneError(n.pos, "'" + key + "' must have 2 entries [x, y], not " + std::to_string(n.items.size()),
+                         "write e.g. " + example);
+      throw SceneError(n.pos, "'" + key + "' must be a list [x, y], not " + n.kind_name(), "write e.g. " + example);
     }
     ex x = checked(text_of(n.items[0], key, "0"), lv, d, key + "[0]", fix);
     ex y = checked(text_of(n.items[1], key, "0"), lv, d, key + "[1]", fix);
@@ -1002,8 +1017,9 @@ private:
         e.e = checked(text_of(en, "e", "0.5"), SceneContext::ParamsOnly, Dimension{}, "e",
                       "a coefficient of restitution is a pure number");
         if (auto v = value_of(e.e, en.pos, "the coefficient of restitution"); v && (v->is_negative() || *v > 1))
-          throw SceneError(en.pos, "the coefficient of restitution of '" + ed.name + "' is " + text(*v) + ", outside [0, 1]",
-                           "give e between 0 (plastic: the parties move together) and 1 (elastic)");
+          throw SceneError(value_place(e.e, en.pos), "the coefficient of restitution of '" + ed.name + "' is " + text(*v) + ", outside [0, 1]",
+                           std::string("give ") + (is_a<symbol>(e.e) ? "'" + text(e.e) + "' a value" : std::string("e")) +
+                               " between 0 (plastic: the parties move together) and 1 (elastic)");
         if (auto* tg = ed.options.get("tangential")) {
           if (!tg->is_scalar() || (tg->scalar != "stick" && tg->scalar != "smooth"))
             throw SceneError(tg->pos, "'tangential' must be stick or smooth",
@@ -1230,6 +1246,12 @@ private:
         a.about = point_ref(*ab, "about");
         // H_P₂ − H_P₁ = ∫M_P dt holds about a fixed point, or about the mass centre of the body
         bool fixed = a.about.body < 0;
+        if (!fixed) {  // a body point that the coordinates never move (a pulley's centre) is fixed too
+          auto [ax, ay] = m_.position(a.about);
+          fixed = true;
+          for (auto& co : m_.coords) fixed = fixed && !ax.has(co.q) && !ay.has(co.q);
+          fixed = fixed && !ax.has(m_.t) && !ay.has(m_.t);
+        }
         bool own_centre = a.about.body >= 0 && a.about.lx.is_zero() && a.about.ly.is_zero() && !a.about.world_place &&
                           a.bodies.size() == 1 && a.bodies[0] == a.about.body;
         if (!fixed && !own_centre)
@@ -1354,6 +1376,7 @@ private:
         } catch (const InputError& e) {
           rethrow_at(fd.unit->pos, e);
         }
+        if (f.value.is_zero()) f.dim = u.dim;  // an exact 0 has every dimension: take the unit's
         if (u.dim != f.dim)
           throw SceneError(fd.unit->pos, "the unit '" + u.text + "'" +
                                              (u.text == u.dim.str() ? std::string() : " (" + u.dim.str() + ")") +

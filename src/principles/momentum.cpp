@@ -188,6 +188,35 @@ std::string set_name(const Model& m, const Analysis& a) {
   return s;
 }
 
+/// A constraint's force is internal to the set when every body it couples is in the set and
+/// it couples two or more (a cord, a gear mesh, rolling on another body). A constraint on one
+/// body alone is with the ground (rolling), and one that reaches outside the set pulls from
+/// outside: both forces are unknown, so over a duration the analysis cannot hold them.
+void check_constraints(const Model& m, const Analysis& a) {
+  for (auto& [c, pos] : m.constraints) {
+    std::vector<int> coupled;
+    for (std::size_t b = 0; b < m.bodies.size(); ++b)
+      for (auto& co : m.coords)
+        if (c.has(co.q) && (m.bodies[b].x.has(co.q) || m.bodies[b].y.has(co.q) || m.bodies[b].angle.has(co.q))) {
+          coupled.push_back(static_cast<int>(b));
+          break;
+        }
+    bool touches = false, all_in = true;
+    for (int b : coupled) {
+      if (in_set(a.bodies, b)) touches = true;
+      else all_in = false;
+    }
+    if (!touches || (all_in && coupled.size() >= 2)) continue;
+    std::string names;
+    for (int b : coupled) names += (names.empty() ? "" : ", ") + m.bodies[b].name;
+    throw SceneError(a.pos, "the constraint '" + model::text(c) + " = 0' (line " + std::to_string(pos.line) + ") pushes on " + names +
+                                " with a force this " + a.kind + " analysis cannot include (" +
+                                (coupled.size() == 1 ? "a contact with the ground, such as rolling" : "a cord, a gear or a link to a body outside it") + ")",
+                     coupled.size() == 1 ? "model that force as an effect, or use an energy analysis"
+                                         : "list every body it couples in 'bodies' (" + names + "), or use an energy analysis");
+  }
+}
+
 }  // namespace
 
 MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
@@ -204,6 +233,28 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
     ex L = 0;
     for (int b : a.bodies) L += m.bodies[b].mass * dot(m.rate(m.bodies[b].x), m.rate(m.bodies[b].y), nx, ny);
     L = model::collect_simplify(L, [&] { lst l; for (auto& co : m.coords) l.append(co.qd); return l; }());
+    if (vanishes(m, L)) {
+      // the coordinates never move these bodies along n: their supports (a floor, a guide, a
+      // cord held fixed) take every impulse along n, so the balance says nothing there — and
+      // an effect pushing along n would be met by a support force the analysis cannot know
+      for (auto& e : m.effects)
+        for (auto& p : pushes(m, e, a, k)) {
+          if (a.conserved && !p.unknown && !vanishes(m, dot(p.Fx, p.Fy, nx, ny)))
+            throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
+                                        state_pair(m, a) + ": effect '" + e.name + "' has an impulse along it",
+                             "remove 'conserved: true', or choose another direction");
+          if (p.unknown && e.kind == "pin" && a.conserved)
+            throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
+                                        state_pair(m, a) + ": effect '" + e.name + "' has an impulse along it (its reaction is unknown)",
+                             "remove 'conserved: true', or choose bodies the pin does not hold");
+          if (!p.unknown && !vanishes(m, dot(p.Fx, p.Fy, nx, ny)))
+            throw SceneError(a.pos, "the bodies of this momentum analysis (" + set_name(m, a) + ") cannot move along " + name +
+                                        ", so a support holds them against '" + e.name + "' with a force the analysis does not know",
+                             "take the momentum along a direction they can move (e.g. 'along: x'), or give them a coordinate along " + name);
+        }
+      continue;
+    }
+    check_constraints(m, a);
     c.before = m.bind(L, a.from);
     c.after = m.bind(L, a.to);
     ex I = 0;
@@ -217,6 +268,11 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
         } else {
           ex Fn = dot(p.Fx, p.Fy, nx, ny);
           if (vanishes(m, Fn)) continue;
+          if (a.conserved)
+            throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
+                                        state_pair(m, a) + ": effect '" + e.name + "' has an impulse along it (its force along " + name + " is " +
+                                        model::text(model::trig_simplify(Fn)) + ")",
+                             "remove 'conserved: true' so its impulse is included, or choose another direction");
           if (!motion_free(m, model::trig_simplify(Fn)))
             throw SceneError(e.pos, "the force of '" + e.name + "' along " + name + " changes with the motion; its impulse has no closed form",
                              "use an energy analysis, or a force that is constant or a function of t");
@@ -242,6 +298,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
 }
 
 MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
+  check_constraints(m, a);
   MomentumBalance out;
   out.conserved = a.conserved;
   MomentumBalance::Component c;
@@ -270,6 +327,11 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       } else {
         Mp = model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
         if (vanishes(m, Mp)) continue;
+        if (a.conserved)
+          throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about.text + " is not conserved between " +
+                                      state_pair(m, a) + ": effect '" + e.name + "' has a moment about " + a.about.text + " (" +
+                                      model::text(Mp) + ")",
+                           "remove 'conserved: true' so its angular impulse is included, or take moments about another point");
         if (!motion_free(m, Mp))
           throw SceneError(e.pos, "the moment of '" + e.name + "' about " + a.about.text + " changes with the motion (" + model::text(Mp) +
                                       "); its angular impulse has no closed form",
