@@ -1,6 +1,7 @@
 #include "kinergy/problem.hpp"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -206,8 +207,19 @@ Solution solve_scene(const scene::SceneDef& def) {
                        "check the units of the parameters in these terms");
     }
   };
+  // a result that is one unknown with a root range says where to look for a numeric root
+  std::map<ex, std::pair<ex, ex>, ex_is_less> ranges;
+  for (auto& f : m.finds) {
+    if (f.root.kind != model::RootSpec::Kind::Interval) continue;
+    try {
+      ex v = f.value.subs(given);
+      if (is_a<symbol>(v)) ranges[v] = {f.root.lo, f.root.hi};
+    } catch (const std::exception&) {
+      // undefined at the given values: reported with the result itself
+    }
+  }
   auto run_solver = [&](const std::vector<principles::Equation>& eqs) {
-    solve::Problem p{eqs, unknowns, given, env, reference};
+    solve::Problem p{eqs, unknowns, given, env, reference, ranges};
     try {
       return solve::solve(p);
     } catch (const solve::SolveError& e) {

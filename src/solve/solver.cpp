@@ -329,6 +329,14 @@ private:
     if (auto it = p_.reference.find(u); it != p_.reference.end())
       if (auto v = num(it->second, p_.env)) ref = v->to_double();
     double span = 10 * (1 + std::abs(ref));
+    if (auto it = p_.ranges.find(u); it != p_.ranges.end()) {
+      // the result's root range is where to look
+      auto lo = num(it->second.first, p_.env), hi = num(it->second.second, p_.env);
+      if (lo && hi && *lo < *hi) {
+        ref = ((*lo + *hi) / 2).to_double();
+        span = ((*hi - *lo) / 2).to_double();
+      }
+    }
     const int n = 2000;
     std::vector<ex> roots;
     long saved = Digits;

@@ -244,7 +244,7 @@ effects:
   }
 }
 
-TEST_CASE("a body that translates and turns independently: T = 1/2 m (xd^2 + yd^2) + 1/2 Ibar w^2",
+TEST_CASE("free body, T = 1/2 m (xd^2 + yd^2) + 1/2 Ibar w^2 (diagonal mass matrix)",
           "[model][kinetic]") {
   // three coordinates, no coupling: the mass matrix is diag(m, m, Ī)
   Model m = kt::model_of(R"(title: free body

@@ -52,9 +52,8 @@ TEST_CASE("antiderivative: polynomials", "[principles][antiderivative]") {
 
 TEST_CASE("antiderivative: a first-degree term s (bare symbol, k*s, polynomials with a linear term)",
           "[principles][antiderivative]") {
-  // BUG (src/principles/work.cpp, antiderivative): a bare symbol s is neither add, mul, power
-  // nor function, so no rule applies and the result is empty; every polynomial with a linear
-  // term (k*s, s^2 + s, k*(s - L0)) therefore has no antiderivative.
+  // Regression: antiderivative() once had no rule for a bare symbol s (neither add, mul, power
+  // nor function), so every polynomial with a linear term (k*s, s^2 + s, k*(s - L0)) had none.
   symbol s("s"), k("k"), L0("L0");
   std::vector<ex> fs = {s, k * s, pow(s, 2) + s, 3 * pow(s, 2) + 2 * s + 1, -k * (s - L0), s * (s + 1) * (s - 2)};
   for (auto& f : fs) {
@@ -159,8 +158,8 @@ TEST_CASE("couple on one of two geared wheels: U = M (phiA2 - phiA1)", "[princip
 }
 
 TEST_CASE("couple proportional to the angle: U = c (phi2^2 - phi1^2)/2", "[principles][work]") {
-  // BUG: fails through antiderivative(c*phi, phi) (see the antiderivative test above):
-  // work() throws "the work of 'winder' has no closed form integral along phi".
+  // Regression: through antiderivative(c*phi, phi) (see above) work() used to throw
+  // "the work of 'winder' has no closed form integral along phi".
   Model m = kt::model_of(R"(title: winding couple
 parameters:
   m: kg
@@ -340,9 +339,8 @@ states:
 }
 
 TEST_CASE("a force F = -k x agrees with the spring potential", "[principles][work]") {
-  // BUG: the applied force -k*x has the generalized force -k*x; its antiderivative is not found
-  // (antiderivative() has no rule for a bare symbol), so work() throws a SceneError
-  // "the work of 'hand' has no closed form integral along x" for the simplest conservative force.
+  // Regression: the generalized force -k*x had no antiderivative (no rule for a bare symbol),
+  // so work() threw "the work of 'hand' has no closed form integral along x".
   const std::string head = R"(title: linear restoring force
 parameters:
   m: 2 kg
@@ -486,4 +484,50 @@ TEST_CASE("energy balance: a conservative scene has no works and T1 + V1 = T2 + 
   CHECK(!bf.conservative);
   REQUIRE(bf.works.size() == 1);
   CHECK(kt::symbolically_zero(bf.works[0].U - kt::param(mf, "M") * (kt::at(mf, "theta", "2") - kt::at(mf, "theta", "1"))));
+}
+
+TEST_CASE("rolling disk pulled by a cord at its top: U = 2 P d, no work at the contact", "[principles][work][rolling]") {
+  // the material point at the top moves at 2 v, so a cord pulled with P over a distance d of
+  // the centre does 2 P d; friction at the contact point (no sliding) does no work.
+  const std::string scene = R"(title: cord over the top of a rolling disk
+parameters:
+  m: 10 kg
+  r: 0.25 m
+  P: 30 N
+  d: 2 m
+  mu: 0.5
+  g: 9.81 m/s^2
+coordinates:
+  x: m
+bodies:
+  disk:
+    mass: m
+    inertia: {disk: r}
+    position: [x, r]
+    angle: -x/r
+effects:
+  gravity: {g: g}
+  cord: {force: disk, at: [x, 2*r], F: [P, 0]}
+  contact: {friction: disk, at: [x, 0], mu: mu, normal: m*g}
+states:
+  1: {x: 0, x_dot: 0}
+  2: {x: d}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  v2: {value: x_dot@2, root: positive, unit: m/s}
+)";
+  Model m = kt::model_of(scene);
+  Knowledge know(m);
+  auto wc = work(m, kt::effect(m, "cord"), 0, 1, know);
+  ex P = kt::param(m, "P");
+  CHECK(kt::symbolically_zero(wc.U - 2 * P * (kt::at(m, "x", "2") - kt::at(m, "x", "1"))));
+  // the contact point is at rest: no power, no work
+  CHECK(kt::symbolically_zero(m.power(kt::effect(m, "contact"))));
+  auto wf = work(m, kt::effect(m, "contact"), 0, 1, know);
+  CHECK(kt::symbolically_zero(wf.U));
+  // (3/4) m v² = 2 P d  →  v = sqrt(8 P d / (3 m)) = sqrt(16) = 4 m/s
+  auto sol = kinergy::solve_scene(kinergy::scene::load_string(scene));
+  REQUIRE(sol.results[0].si);
+  CHECK(kt::close(*sol.results[0].si, numeric(4), kt::tol(28)));
 }

@@ -186,8 +186,8 @@ TEST_CASE("solver: u + sin(u) = c has no closed form: a numeric root, flagged", 
 
 TEST_CASE("solver: a transcendental equation with several roots gives them all", "[solve][numeric-root]") {
   // (u − 1/3)² − 4 sin(u − 1/3) = 0 has the roots 1/3 and 1/3 + 1.9337537628270212…
-  // Fails through BUG 1 below: the root 2.2670870961603545866… is found by fsolve (residual
-  // 6.4e-58) and then dropped because its residual is not exactly 0.0.
+  // Regression: the second root (residual 6.4e-58 after refinement) used to be dropped
+  // because a residual folded to one float was judged against itself (fixed in 6a03d24).
   realsymbol u("u");
   ex v3 = u - numeric(1, 3);
   Problem p;
@@ -205,16 +205,10 @@ TEST_CASE("solver: a transcendental equation with several roots gives them all",
 
 TEST_CASE("solver: u + sin(u) = c for a range of c (numeric roots are kept and the search ends)",
           "[solve][numeric-root]") {
-  // BUG 1 (src/solve/solver.cpp, Solver::numeric_roots and numerically_zero): the root found
-  // by fsolve is checked with numerically_zero(r.subs(u == root), env, known). With a float
-  // root GiNaC folds the residual to a single float (e.g. −9.96e-60 for c = 1/10), so the
-  // "scale of its terms" is the value itself and |v| <= 1e-28·|v| holds only for v == 0.0
-  // exactly: every root whose residual is not exactly zero is thrown away and solve() reports
-  // "no closed form for u and no root was found near 0". For c = k/10, k = 1..30, only 13 of
-  // 30 solve (c = 1/10, 2/5, 1/2, 3/5, 7/10, 9/10, 6/5, 13/10, 7/5, 8/5, 17/10, … fail).
-  // The same check in prune() would also kill the branch for the same reason.
-  // BUG 2: for c = 1/5 solve() never returns (GiNaC::fsolve, called with double-precision
-  // bounds numeric(x0), numeric(x1) while Digits = 40, loops; seen running > 10 min).
+  // Regression for two solver faults fixed in 6a03d24 (src/solve/solver.cpp, numeric_roots):
+  // roots whose residual was not exactly 0.0 were thrown away (numerically_zero judged a
+  // residual folded to one float against itself: 17 of 30 values c = k/10 failed), and for
+  // c = 1/5 GiNaC::fsolve, called with double-precision bounds at Digits = 40, never returned.
   // Each solve runs in a child process killed after 10 s, so this test cannot hang.
   for (int k : {1, 2, 4, 5, 10, 15, 20, 29}) {
     ex c = numeric(k, 10);
@@ -241,13 +235,9 @@ TEST_CASE("solver: u + sin(u) = c for a range of c (numeric roots are kept and t
 }
 
 TEST_CASE("solver: a numeric root that falls on a point of the scan grid is found", "[solve][numeric-root]") {
-  // BUG (src/solve/solver.cpp, Solver::numeric_roots): the residual is sampled at
-  // ref − span + 2 span i / 2000; when it is exactly 0 at a sample, neither neighbouring
-  // interval shows a strict sign change (0 → + is taken, but GiNaC::fsolve then throws
-  // "function does not change sign at interval boundaries" and the catch treats it as a
-  // pole), so the root is lost. u + sin(u) = 1/2 + sin(1/2) has the single root u = 1/2
-  // (a grid point for ref = 0, span = 10) and solve() throws "no root was found near 0".
-  // The same drops every root equal to the reference value (the sample i = 1000 is ref).
+  // Regression (fixed in 6a03d24): the residual is sampled on a grid ref − span + 2 span i/2000;
+  // a root where it is exactly 0 (u = 1/2 here, and any root equal to the reference) showed no
+  // strict sign change on either side and was lost ("no root was found near 0").
   realsymbol u("u");
   Problem p;
   p.equations = {eq(u + sin(u), numeric(1, 2) + sin(ex(numeric(1, 2))))};

@@ -2,6 +2,7 @@
 /// elimination, then single-unknown quadratics and trigonometric equations in closed form,
 /// a numeric root where no closed form exists. Two roots make two branches.
 #pragma once
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -34,6 +35,8 @@ struct Problem {
   GiNaC::exmap env;          ///< numeric values of parameters, for decisions
   /// Reference values for a numeric root search (same coordinate at another state).
   GiNaC::exmap reference;
+  /// Ranges to search for a numeric root, from results' `root: {in: [lo, hi]}` (SI values).
+  std::map<ex, std::pair<ex, ex>, GiNaC::ex_is_less> ranges;
 };
 
 /// One consistent solution.
