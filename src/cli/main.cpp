@@ -1,12 +1,15 @@
 // kinergy — command line: a thin window onto the library.
 //   kinergy solve SCENE [--digits N] [--json]
+//   kinergy derive SCENE [--latex FILE.tex] [--pdf FILE.pdf] [--digits N]
 //   kinergy verify SCENE... [--json]
 // Exit status: 0 ok, 1 bad scene / no solution / a claim fails, 2 usage.
+#include <fstream>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/emit/derive.hpp"
 #include "kinergy/emit/emit.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/verify/verify.hpp"
@@ -41,6 +44,16 @@ int main(int argc, char** argv) {
   solve->add_option("--digits", digits, "significant digits of the values (default 15)")->check(CLI::Range(1, 10000));
   solve->add_flag("--json", as_json, "print JSON for tools");
 
+  std::string tex_out, pdf_out;
+  int derive_digits = 4;
+  bool no_checks = false;
+  auto* derive = app.add_subcommand("derive", "the worked solution step by step: text, or LaTeX / PDF");
+  derive->add_option("SCENE", scene, "scene file (YAML)")->required();
+  derive->add_option("--latex", tex_out, "write a standalone LaTeX document to FILE ('-': standard output)");
+  derive->add_option("--pdf", pdf_out, "write a PDF (runs pdflatex in a temporary directory)");
+  derive->add_option("--digits", derive_digits, "significant digits of the numbers (default 4)")->check(CLI::Range(1, 1000));
+  derive->add_flag("--no-checks", no_checks, "leave out the checks of the scene's 'expect' claims");
+
   auto* verify = app.add_subcommand("verify", "check every 'expect' claim of the scenes");
   verify->add_option("SCENE", scenes, "scene files (YAML)")->required();
   verify->add_flag("--json", as_json, "print JSON for tools");
@@ -58,6 +71,40 @@ int main(int argc, char** argv) {
       kinergy::emit::Options o;
       o.digits = digits;
       std::cout << (as_json ? kinergy::emit::json(s, o) : kinergy::emit::text(s, o));
+      return 0;
+    });
+  }
+  if (*derive) {
+    return guarded(scene, [&] {
+      kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
+      kinergy::Solution s = kinergy::solve_scene(def);
+      kinergy::emit::DeriveOptions o;
+      o.digits = derive_digits;
+      o.checks = !no_checks;
+      kinergy::emit::Derivation d = kinergy::emit::derive(s, def, o);
+      if (tex_out.empty() && pdf_out.empty()) {
+        std::cout << kinergy::emit::text(d);
+        return 0;
+      }
+      std::string tex = kinergy::emit::latex(d);
+      if (tex_out == "-") {
+        std::cout << tex;
+      } else if (!tex_out.empty()) {
+        std::ofstream out(tex_out, std::ios::binary);
+        out << tex;
+        out.close();
+        if (!out) {
+          std::cerr << tex_out << ": cannot write the LaTeX file\n";
+          return 1;
+        }
+      }
+      if (!pdf_out.empty()) {
+        auto r = kinergy::emit::run_pdflatex(tex, pdf_out);
+        if (!r.ok) {
+          std::cerr << pdf_out << ": " << r.error << "\n";
+          return 1;
+        }
+      }
       return 0;
     });
   }

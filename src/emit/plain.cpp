@@ -254,8 +254,19 @@ std::string print(const ex& e, int ctx) {
     };
     by_text(pos, false);
     by_text(negs, true);
-    for (auto& t : pos) s += (s.empty() ? "" : " + ") + print(t, kSum);
-    for (auto& t : negs) s += (s.empty() ? "-" : " - ") + print(-t, kSum);
+    // a term may print with a sign of its own (a product that flipped a sum): "a - m*(x - y)",
+    // never "a + -m*(y - x)"
+    auto put = [&](const ex& t, bool minus) {
+      std::string x = print(t, kSum);
+      if (!x.empty() && x[0] == '-') {
+        x = x.substr(1);
+        minus = !minus;
+      }
+      s += s.empty() ? (minus ? "-" : "") : (minus ? " - " : " + ");
+      s += x;
+    };
+    for (auto& t : pos) put(t, false);
+    for (auto& t : negs) put(-t, true);
     return ctx > kSum ? "(" + s + ")" : s;
   }
   if (is_a<mul>(e)) return product(e, ctx);

@@ -3,6 +3,7 @@
 #include <random>
 #include <sstream>
 
+#include "kinergy/emit/emit.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
@@ -38,6 +39,7 @@ Check form_check(const Solution& s, const Result& r, const model::Expect& x) {
   int points = 0, tries = 0;
   numeric worst = 0;
   std::string where;
+  bool equal_at_scene = false;  // the claim holds at the scene's own values
   const int want = 24;
   while (points < want && tries < 400) {
     exmap at = env;
@@ -50,18 +52,19 @@ Check form_check(const Solution& s, const Result& r, const model::Expect& x) {
       }
     ++tries;
     auto d = numerics::evaluate(derived, at, kDigits), cl = numerics::evaluate(claimed, at, kDigits);
+    if (tries == 1 && d && !cl) {
+      c.detail = "FAILS: derived " + emit::plain(derived) + ", claimed " + emit::plain(claimed) +
+                 ", at the scene's values (derived " + numerics::format(*d, 12) + ", claimed: no real value)";
+      return c;
+    }
     if (!d || !cl) {
       if (tries == 1 && !d) break;
       continue;  // outside the admissible region (complex or undefined): not a test point
     }
-    if (tries == 1 && !cl) {
-      c.detail = "FAILS: the claimed form has no real value at the scene's parameters (derived " +
-                 numerics::format(*d, 15) + ")";
-      return c;
-    }
     ++points;
     numeric scale = std::max(abs(*d), abs(*cl));
     numeric rel = scale.is_zero() ? numeric(0) : abs(*d - *cl) / scale;
+    if (tries == 1) equal_at_scene = rel <= GiNaC::pow(numeric(10), numeric(-(kDigits - 10)));
     if (rel > worst) {
       worst = rel;
       std::ostringstream os;
@@ -71,7 +74,8 @@ Check form_check(const Solution& s, const Result& r, const model::Expect& x) {
           os << (first ? "" : ", ") << p.name << " = " << numerics::format(*numerics::evaluate(at[p.sym], {}, 20), 6);
           first = false;
         }
-      where = os.str() + " (derived " + numerics::format(*d, 12) + ", claimed " + numerics::format(*cl, 12) + ")";
+      where = (os.str().empty() ? std::string("the scene's values") : os.str()) + " (derived " + numerics::format(*d, 12) +
+              ", claimed " + numerics::format(*cl, 12) + ")";
     }
     if (!r.closed_form) break;  // a numeric root holds at the scene's values only
   }
@@ -81,7 +85,8 @@ Check form_check(const Solution& s, const Result& r, const model::Expect& x) {
     return c;
   }
   if (worst > tol) {
-    c.detail = "FAILS: derived " + model::text(derived) + ", claimed " + model::text(claimed) + "; they differ at " + where;
+    c.detail = "FAILS: derived " + emit::plain(derived) + ", claimed " + emit::plain(claimed) + ", at " + where;
+    if (equal_at_scene) c.detail += "; they agree at the scene's values only";
     return c;
   }
   c.status = Check::Status::Checked;
@@ -106,19 +111,39 @@ Check value_check(const Solution& s, const Result& r, const model::Expect& x) {
     return c;
   }
   numeric rounded = numerics::round_sig(*v, q.sig_figs);
+  std::string figs = std::to_string(q.sig_figs) + (q.sig_figs == 1 ? " significant figure" : " significant figures");
   if (rounded == q.number) {
     c.status = Check::Status::Checked;
-    c.detail = "matches to " + std::to_string(q.sig_figs) + " significant figures (derived " +
-               numerics::format(*v, std::max(q.sig_figs + 3, 6)) + unit + ")";
+    c.detail = "matches to " + figs + " (derived " + numerics::format(*v, std::max(q.sig_figs + 3, 6)) + unit + ")";
   } else {
-    c.detail = "FAILS: derived " + numerics::format(*v, std::max(q.sig_figs + 3, 6)) + unit + ", which is " +
-               numerics::format(rounded, q.sig_figs) + unit + " to " + std::to_string(q.sig_figs) +
-               " significant figures; claimed " + numerics::format(q.number, q.sig_figs) + unit;
+    // the derived value to the claim's figures, trailing zeros kept: 3.50, not 3.5
+    c.detail = "FAILS: derived " + figures(*v, q.sig_figs) + unit + ", claimed " + figures(q.number, q.sig_figs) + unit +
+               ", at the scene's values (to " + figs + "; derived " +
+               numerics::format(*v, std::max(q.sig_figs + 3, 6)) + unit + ")";
   }
   return c;
 }
 
 }  // namespace
+
+std::string figures(const numeric& v, int n) {
+  if (n < 1) n = 1;
+  numeric r = numerics::round_sig(v, n);
+  if (r.is_zero()) return n > 1 ? "0." + std::string(static_cast<std::size_t>(n - 1), '0') : "0";
+  std::string s = numerics::format(r, n);
+  auto e = s.find('e');
+  std::string mant = e == std::string::npos ? s : s.substr(0, e), tail = e == std::string::npos ? "" : s.substr(e);
+  int shown = 0;
+  bool started = false;
+  for (char ch : mant) {
+    if (ch < '0' || ch > '9') continue;
+    if (ch != '0') started = true;
+    if (started) ++shown;
+  }
+  if (shown >= n) return s;
+  if (mant.find('.') == std::string::npos) mant += ".";
+  return mant + std::string(static_cast<std::size_t>(n - shown), '0') + tail;
+}
 
 std::vector<Check> verify(const Solution& s) {
   std::vector<Check> out;

@@ -19,4 +19,8 @@ struct Check {
 /// Every `expect` claim of the scene, checked.
 std::vector<Check> verify(const Solution& s);
 
+/// v rounded to n significant figures, written with its trailing zeros: "3.50", "20.00",
+/// "0.0120", "1.50e-12" (as a claim to n figures is written).
+std::string figures(const GiNaC::numeric& v, int n);
+
 }  // namespace kinergy::verify

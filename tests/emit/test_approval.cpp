@@ -1,0 +1,111 @@
+// Approval of the derivations: `kinergy derive` on every scene of derivations/ must print
+// exactly the approved text and LaTeX kept beside it,
+//   derivations/<dir>/<name>.approved.txt   (kinergy derive SCENE)
+//   derivations/<dir>/<name>.approved.tex   (kinergy derive SCENE --latex -)
+// Any difference fails until the approved file is updated on purpose:
+//   KINERGY_APPROVE=1 ctest --test-dir build -R approval
+// rewrites the files that differ (then review them with git diff before committing).
+// The command line runs from the source directory with the scene's relative path, so the
+// files do not depend on where the tree is; it runs with address randomisation off, so its
+// output is reproducible.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> scenes() {
+  std::vector<std::string> out;
+  for (auto& e : fs::recursive_directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "derivations"))
+    if (e.path().extension() == ".yaml") out.push_back(fs::relative(e.path(), KINERGY_SOURCE_DIR).generic_string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string shell_quoted(const std::string& s) {
+  std::string o = "'";
+  for (char c : s) o += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return o + "'";
+}
+
+/// Standard output of `kinergy ARGS` run in the source directory; exit status in `status`.
+std::string run(const std::string& args, int& status) {
+  std::string cmd = "cd " + shell_quoted(KINERGY_SOURCE_DIR) + " && " + shell_quoted(KINERGY_CLI) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) {
+    status = -1;
+    return "";
+  }
+  std::string out;
+  char buf[8192];
+  std::size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+  int st = pclose(p);
+  status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return out;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+/// Where two texts first differ: line number and both lines.
+std::string first_difference(const std::string& a, const std::string& b) {
+  std::istringstream x(a), y(b);
+  std::string la, lb;
+  for (int line = 1;; ++line) {
+    bool ga = static_cast<bool>(std::getline(x, la)), gb = static_cast<bool>(std::getline(y, lb));
+    if (!ga && !gb) return "they differ only in line endings";
+    if (!ga || !gb || la != lb)
+      return "line " + std::to_string(line) + ":\n  approved: " + (ga ? la : "(end of file)") +
+             "\n  now:      " + (gb ? lb : "(end of output)");
+  }
+}
+
+bool approving() {
+  const char* a = std::getenv("KINERGY_APPROVE");
+  return a && std::string(a) == "1";
+}
+
+void compare(const std::string& scene, const std::string& args, const std::string& ext) {
+  int status = 0;
+  std::string now = run(args, status);
+  INFO("kinergy " << args);
+  REQUIRE(status == 0);
+  fs::path approved = fs::path(KINERGY_SOURCE_DIR) / fs::path(scene).replace_extension(ext);
+  bool exists = fs::exists(approved);
+  std::string before = exists ? read(approved) : "";
+  if (exists && before == now) return;
+  if (approving()) {
+    std::ofstream(approved, std::ios::binary) << now;
+    WARN((exists ? "updated " : "wrote ") << approved.string());
+    return;
+  }
+  INFO((exists ? first_difference(before, now) : "no approved file " + approved.string()));
+  INFO("if the new output is right: KINERGY_APPROVE=1 ctest --test-dir <build> -R approval, then review git diff");
+  FAIL("the derivation differs from its approved " << ext << " file");
+}
+
+}  // namespace
+
+TEST_CASE("approval: every derivation prints its approved text and LaTeX", "[approval]") {
+  auto files = scenes();
+  REQUIRE(files.size() >= 12);
+  for (auto& f : files) {
+    DYNAMIC_SECTION(f) {
+      compare(f, "derive " + shell_quoted(f), ".approved.txt");
+      compare(f, "derive " + shell_quoted(f) + " --latex -", ".approved.tex");
+    }
+  }
+}
