@@ -851,6 +851,16 @@ private:
       rethrow_at(n.pos, err);
     }
   }
+  /// `direction: positive|negative` of a friction effect: the sign of the motion it opposes.
+  std::optional<int> direction_of(const scene::EffectDef& ed) {
+    const Node* d = ed.options.get("direction");
+    if (!d) return std::nullopt;
+    if (!d->is_scalar() || (d->scalar != "positive" && d->scalar != "negative"))
+      throw SceneError(d->pos, "'direction' must be positive or negative",
+                       "write 'direction: positive' (the motion the friction opposes goes the positive way)");
+    return d->scalar == "positive" ? 1 : -1;
+  }
+
   // A contact party: a point, a body, or the ground (a line, no point).
   PointRef party(const Node& n) {
     if (n.is_scalar() && n.scalar == "ground") {
@@ -948,12 +958,16 @@ private:
           e.free = checked(text_of(*f, "free_angle", "0"), SceneContext::ParamsOnly, Dimension{},
                            "free_angle", "an angle is a pure number (rad)");
       } else if (k == "couple" || k == "friction_couple") {
-        only(ed, {"M"});
+        if (k == "couple") only(ed, {"M"});
+        else only(ed, {"M", "direction"});
         e.body = body_ref(ed.arg, k);
         e.M = checked(text_of(option(ed, "M", "M0"), "M", "M0"),
                       k == "couple" ? SceneContext::Geometry : SceneContext::ParamsOnly, E, "M",
                       "a couple is in N·m (or lb·ft)");
-        if (k == "friction_couple") positive(e.M, option(ed, "M", "M").pos, "a friction couple", true);
+        if (k == "friction_couple") {
+          positive(e.M, option(ed, "M", "M").pos, "a friction couple", true);
+          e.direction = direction_of(ed);
+        }
       } else if (k == "force" || k == "friction") {
         if (k == "force") only(ed, {"F", "at"});
         else only(ed, {"mu", "normal", "at", "direction"});
@@ -981,12 +995,7 @@ private:
           e.normal = checked(text_of(option(ed, "normal", "m*g"), "normal", "m*g"),
                              SceneContext::ParamsOnly, F, "normal", "a normal force is in N (or lb)");
           positive(e.normal, option(ed, "normal", "N").pos, "the normal force", true);
-          if (auto* d = ed.options.get("direction")) {
-            if (!d->is_scalar() || (d->scalar != "positive" && d->scalar != "negative"))
-              throw SceneError(d->pos, "'direction' must be positive or negative",
-                               "write 'direction: positive' (the coordinate increases while sliding)");
-            e.direction = d->scalar == "positive" ? 1 : -1;
-          }
+          e.direction = direction_of(ed);
         }
       } else if (k == "power") {
         only(ed, {"P"});

@@ -62,14 +62,20 @@ std::string state_pair(const Model& m, const Analysis& a) {
   return "states " + m.states[a.from].name + " -> " + m.states[a.to].name;
 }
 
-/// Sign of an expression at a state, from what is known there.
-int sign_at(const Model& m, const Effect& e, const ex& bound, const Knowledge& k, const std::string& what,
-            const std::string& state) {
-  auto v = k.value(bound);
-  if (v && !v->is_zero()) return v->is_positive() ? 1 : -1;
-  throw SceneError(e.pos, "the direction of " + what + " under '" + e.name + "' at state '" + state + "' is not known",
-                   "give the velocities at state '" + state + "'");
-  (void)m;
+/// Direction of sliding (or turning) over the interval: at the first state, or — starting from
+/// rest — at the second (friction does not reverse a motion within one interval), or as declared.
+int motion_direction(const Model& m, const Effect& e, const ex& generic, const Analysis& a, const Knowledge& k,
+                     const std::string& what) {
+  for (int s : {a.from, a.to}) {
+    auto v = k.value(m.bind(generic, s));
+    if (v && !v->is_zero()) return v->is_positive() ? 1 : -1;
+  }
+  if (e.direction) return *e.direction;
+  const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;
+  throw SceneError(e.pos, "the direction of " + what + " under '" + e.name + "' between states " + S1 + " and " + S2 +
+                              " is not known (no velocity there tells it)",
+                   "give a nonzero velocity at state '" + S1 + "' or '" + S2 + "', or 'direction: positive|negative' on '" +
+                       e.name + "' (the sign of the " + what + ")");
 }
 
 /// A force (and where it acts) that an effect exerts on the body set over the interval.
@@ -117,13 +123,12 @@ std::vector<Push> pushes(const Model& m, const Effect& e, const Analysis& a, con
     auto [vx, vy] = m.velocity(e.a);
     ex ux, uy;
     bool x0 = vanishes(m, vy), y0 = vanishes(m, vx);
-    const std::string S1 = m.states[a.from].name;
     if (x0 && !y0) {
-      ux = sign_at(m, e, m.bind(vx, a.from), k, "sliding", S1);
+      ux = motion_direction(m, e, vx, a, k, "sliding");
       uy = 0;
     } else if (y0 && !x0) {
       ux = 0;
-      uy = sign_at(m, e, m.bind(vy, a.from), k, "sliding", S1);
+      uy = motion_direction(m, e, vy, a, k, "sliding");
     } else {
       throw SceneError(e.pos, "friction '" + e.name + "' slides along a changing direction; its impulse needs the motion in time",
                        "use friction whose contact slides along a fixed line (x or y)");
@@ -138,7 +143,7 @@ std::vector<Push> pushes(const Model& m, const Effect& e, const Analysis& a, con
   } else if (kind == "friction_couple") {
     if (!on(e.body)) return out;
     Push p;
-    p.M = -e.M * sign_at(m, e, m.bind(m.omega(e.body), a.from), k, "rotation", m.states[a.from].name);
+    p.M = -e.M * motion_direction(m, e, m.omega(e.body), a, k, "rotation");
     out.push_back(p);
   } else if (kind == "pin") {
     bool ia = on(e.a.body), ib = on(e.b.body);
