@@ -3,6 +3,7 @@
 // GiNaC's own term order changes from run to run, so the order of terms and factors is decided
 // here, by the text the plain printer gives them (itself independent of GiNaC's order).
 #include "kinergy/emit/latex.hpp"
+#include "factors.hpp"
 
 #include <algorithm>
 #include <array>
@@ -394,21 +395,9 @@ namespace {
 
 enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
 
-struct Factor {
-  ex base;
-  numeric k = 1;
-};
-
-struct Factors {
-  numeric coef = 1;
-  std::vector<Factor> num, den;
-  exvector root_num, root_den;
-};
-
-bool negative_term(const ex& t) {
-  return (is_a<numeric>(t) && ex_to<numeric>(t).is_negative()) ||
-         (is_a<mul>(t) && is_a<numeric>(t.op(t.nops() - 1)) && ex_to<numeric>(t.op(t.nops() - 1)).is_negative());
-}
+using detail::Factor;
+using detail::Factors;
+using detail::negative_term;
 
 /// Parentheses that grow with what they hold.
 std::string paren(const std::string& s) {
@@ -531,64 +520,9 @@ private:
     return k == 1 ? s : paren(s) + power;
   }
 
-  // A sum and its negative print alike but for the sign: the plain printer's choice.
-  bool flip_sum(const ex& b) const {
-    if (!is_a<add>(b)) return false;
-    int pos = 0, neg = 0;
-    std::string first;
-    bool first_neg = false;
-    for (std::size_t i = 0; i < b.nops(); ++i) {
-      bool n = negative_term(b.op(i));
-      (n ? neg : pos)++;
-      std::string k = key(n ? ex(-b.op(i)) : b.op(i));
-      if (first.empty() || k < first) {
-        first = k;
-        first_neg = n;
-      }
-    }
-    return neg > pos || (neg == pos && first_neg);
-  }
-
-  void classify(const ex& f, Factors& out) const {
-    if (is_a<numeric>(f)) {
-      out.coef *= ex_to<numeric>(f);
-      return;
-    }
-    ex b = f, k = 1;
-    if (is_a<power>(f)) {
-      b = f.op(0);
-      k = f.op(1);
-    }
-    if (!is_a<numeric>(k) || !ex_to<numeric>(k).is_rational()) {
-      out.num.push_back({f, 1});
-      return;
-    }
-    numeric q = ex_to<numeric>(k);
-    if (is_a<numeric>(b) && ex_to<numeric>(b).is_rational() && q.denom() == 2) {
-      numeric r = ex_to<numeric>(b);
-      bool up = q.is_positive();
-      (up ? out.root_num : out.root_den).push_back(r.numer());
-      (up ? out.root_den : out.root_num).push_back(r.denom());
-      numeric whole = (up ? q : -q) - numeric(1, 2);
-      if (!whole.is_zero()) out.coef *= ex_to<numeric>(pow(r, up ? whole : -whole));
-      return;
-    }
-    if (q.is_integer() && flip_sum(b)) {
-      b = -b;
-      if (q.is_odd()) out.coef = -out.coef;
-    }
-    bool neg = q.is_negative();
-    numeric a = neg ? -q : q;
-    auto& plain_f = neg ? out.den : out.num;
-    exvector& root = neg ? out.root_den : out.root_num;
-    if (a.denom() == 2) {
-      numeric whole = (a - numeric(1, 2));
-      if (!whole.is_zero()) plain_f.push_back({b, whole});
-      root.push_back(b);
-    } else {
-      plain_f.push_back({b, a});
-    }
-  }
+  // how a product splits, and which way a sum is turned: the plain printer's rule (factors.hpp)
+  static bool flip_sum(const ex& b) { return detail::flip_sum(b); }
+  static void classify(const ex& f, Factors& out) { detail::classify(f, out); }
 
   // Order in a product: numbers, names, sums (in parentheses), functions — so that a function
   // written without parentheses (\sin\theta) comes last and nothing reads as its argument.

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "kinergy/emit/emit.hpp"
+#include "factors.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
 namespace kinergy::emit {
@@ -11,6 +12,12 @@ namespace kinergy::emit {
 using namespace GiNaC;
 
 namespace {
+
+using detail::Factor;
+using detail::Factors;
+using detail::classify;
+using detail::flip_sum;
+using detail::negative_term;
 
 enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
 
@@ -36,86 +43,6 @@ std::string number(const numeric& n) {
     return os.str();
   }
   return numerics::format(n, 15);
-}
-
-/// A base raised to a rational power, kept apart so that GiNaC does not re-normalise it.
-struct Factor {
-  ex base;
-  numeric k = 1;
-};
-
-/// The factors of a product, sorted into numerator, denominator and square-root groups.
-struct Factors {
-  numeric coef = 1;
-  std::vector<Factor> num, den;
-  exvector root_num, root_den;
-};
-
-bool negative_term(const ex& t) {
-  return (is_a<numeric>(t) && ex_to<numeric>(t).is_negative()) ||
-         (is_a<mul>(t) && is_a<numeric>(t.op(t.nops() - 1)) && ex_to<numeric>(t.op(t.nops() - 1)).is_negative());
-}
-
-// A sum and its negative print alike but for the sign: pick the one with more positive terms
-// (ties: the one whose first term, in text order, is positive), so r − R and −(R − r) agree.
-bool flip_sum(const ex& b) {
-  if (!is_a<add>(b)) return false;
-  int pos = 0, neg = 0;
-  std::string first;
-  bool first_neg = false;
-  for (std::size_t i = 0; i < b.nops(); ++i) {
-    bool n = negative_term(b.op(i));
-    (n ? neg : pos)++;
-    std::string k = key(n ? ex(-b.op(i)) : b.op(i), kSum);
-    if (first.empty() || k < first) {
-      first = k;
-      first_neg = n;
-    }
-  }
-  return neg > pos || (neg == pos && first_neg);
-}
-
-void classify(const ex& f, Factors& out) {
-  if (is_a<numeric>(f)) {
-    out.coef *= ex_to<numeric>(f);
-    return;
-  }
-  ex b = f, k = 1;
-  if (is_a<power>(f)) {
-    b = f.op(0);
-    k = f.op(1);
-  }
-  if (!is_a<numeric>(k) || !ex_to<numeric>(k).is_rational()) {
-    out.num.push_back({f, 1});
-    return;
-  }
-  numeric q = ex_to<numeric>(k);
-  if (is_a<numeric>(b) && ex_to<numeric>(b).is_rational() && q.denom() == 2) {
-    // √(p/q) = √p / √q
-    numeric r = ex_to<numeric>(b);
-    bool up = q.is_positive();
-    (up ? out.root_num : out.root_den).push_back(r.numer());
-    (up ? out.root_den : out.root_num).push_back(r.denom());
-    numeric whole = (up ? q : -q) - numeric(1, 2);  // r^(n + 1/2) = r^n √r
-    if (!whole.is_zero()) out.coef *= ex_to<numeric>(pow(r, up ? whole : -whole));
-    return;
-  }
-  if (q.is_integer() && flip_sum(b)) {
-    b = -b;  // an add: GiNaC distributes the sign over its terms
-    if (q.is_odd()) out.coef = -out.coef;
-  }
-  bool neg = q.is_negative();
-  numeric a = neg ? -q : q;
-  auto& plain = neg ? out.den : out.num;
-  exvector& root = neg ? out.root_den : out.root_num;
-  if (a.denom() == 2) {
-    // x^(n + 1/2) = x^n · √x
-    numeric whole = (a - numeric(1, 2));
-    if (!whole.is_zero()) plain.push_back({b, whole});
-    root.push_back(b);
-  } else {
-    plain.push_back({b, a});
-  }
 }
 
 // GiNaC orders terms by hashes that change from run to run (they mix in type addresses), so
@@ -305,5 +232,76 @@ std::string plain(const ex& e, const SymbolTexts& names) {
   g_names = saved;
   return s;
 }
+
+namespace detail {
+
+bool negative_term(const ex& t) {
+  return (is_a<numeric>(t) && ex_to<numeric>(t).is_negative()) ||
+         (is_a<mul>(t) && is_a<numeric>(t.op(t.nops() - 1)) && ex_to<numeric>(t.op(t.nops() - 1)).is_negative());
+}
+
+// A sum and its negative print alike but for the sign: pick the one with more positive terms
+// (ties: the one whose first term, in text order, is positive), so r − R and −(R − r) agree.
+bool flip_sum(const ex& b) {
+  if (!is_a<add>(b)) return false;
+  int pos = 0, neg = 0;
+  std::string first;
+  bool first_neg = false;
+  for (std::size_t i = 0; i < b.nops(); ++i) {
+    bool n = negative_term(b.op(i));
+    (n ? neg : pos)++;
+    std::string k = key(n ? ex(-b.op(i)) : b.op(i), kSum);
+    if (first.empty() || k < first) {
+      first = k;
+      first_neg = n;
+    }
+  }
+  return neg > pos || (neg == pos && first_neg);
+}
+
+void classify(const ex& f, Factors& out) {
+  if (is_a<numeric>(f)) {
+    out.coef *= ex_to<numeric>(f);
+    return;
+  }
+  ex b = f, k = 1;
+  if (is_a<power>(f)) {
+    b = f.op(0);
+    k = f.op(1);
+  }
+  if (!is_a<numeric>(k) || !ex_to<numeric>(k).is_rational()) {
+    out.num.push_back({f, 1});
+    return;
+  }
+  numeric q = ex_to<numeric>(k);
+  if (is_a<numeric>(b) && ex_to<numeric>(b).is_rational() && q.denom() == 2) {
+    // √(p/q) = √p / √q
+    numeric r = ex_to<numeric>(b);
+    bool up = q.is_positive();
+    (up ? out.root_num : out.root_den).push_back(r.numer());
+    (up ? out.root_den : out.root_num).push_back(r.denom());
+    numeric whole = (up ? q : -q) - numeric(1, 2);  // r^(n + 1/2) = r^n √r
+    if (!whole.is_zero()) out.coef *= ex_to<numeric>(pow(r, up ? whole : -whole));
+    return;
+  }
+  if (q.is_integer() && flip_sum(b)) {
+    b = -b;  // an add: GiNaC distributes the sign over its terms
+    if (q.is_odd()) out.coef = -out.coef;
+  }
+  bool neg = q.is_negative();
+  numeric a = neg ? -q : q;
+  auto& plain = neg ? out.den : out.num;
+  exvector& root = neg ? out.root_den : out.root_num;
+  if (a.denom() == 2) {
+    // x^(n + 1/2) = x^n · √x
+    numeric whole = (a - numeric(1, 2));
+    if (!whole.is_zero()) plain.push_back({b, whole});
+    root.push_back(b);
+  } else {
+    plain.push_back({b, a});
+  }
+}
+
+}  // namespace detail
 
 }  // namespace kinergy::emit

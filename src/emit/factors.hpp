@@ -1,0 +1,34 @@
+/// @file factors.hpp  (internal to emit) How the printers split a product: numerator,
+/// denominator and square-root groups, with sums oriented so that r − R and −(R − r) print alike.
+/// One rule for the plain and the LaTeX printer, so their forms agree.
+#pragma once
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace kinergy::emit::detail {
+
+/// A base raised to a rational power, kept apart so that GiNaC does not re-normalise it.
+struct Factor {
+  GiNaC::ex base;
+  GiNaC::numeric k = 1;
+};
+
+/// The factors of a product, sorted into numerator, denominator and square-root groups.
+struct Factors {
+  GiNaC::numeric coef = 1;
+  std::vector<Factor> num, den;
+  GiNaC::exvector root_num, root_den;
+};
+
+/// A term with a negative numeric coefficient.
+bool negative_term(const GiNaC::ex& t);
+
+/// A sum and its negative print alike but for the sign: true when the negative is the one to
+/// print (more negative terms; ties: the first term in plain-text order is negative).
+bool flip_sum(const GiNaC::ex& b);
+
+/// Sort one factor of a product into `out`.
+void classify(const GiNaC::ex& f, Factors& out);
+
+}  // namespace kinergy::emit::detail
