@@ -28,6 +28,10 @@ bool negative_term(const GiNaC::ex& t);
 /// print (more negative terms; ties: the first term in plain-text order is negative).
 bool flip_sum(const GiNaC::ex& b);
 
+/// Multiply the integers under the root into rn (above the bar) and rd (below), take them out
+/// of the groups, and reduce rn/rd.
+void take_root_numbers(Factors& f, GiNaC::numeric& rn, GiNaC::numeric& rd);
+
 /// Sort one factor of a product into `out`.
 void classify(const GiNaC::ex& f, Factors& out);
 

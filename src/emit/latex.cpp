@@ -625,19 +625,7 @@ private:
       flatten(f.root_num, f.root_den);
       flatten(f.root_den, f.root_num);
       numeric rn = 1, rd = 1;
-      auto take = [](exvector& v, numeric& into) {
-        exvector keep;
-        for (auto& x : v) {
-          if (is_a<numeric>(x) && ex_to<numeric>(x).is_integer()) into *= ex_to<numeric>(x);
-          else keep.push_back(x);
-        }
-        v = keep;
-      };
-      take(f.root_num, rn);
-      take(f.root_den, rd);
-      numeric g = gcd(rn, rd);
-      rn = rn / g;
-      rd = rd / g;
+      detail::take_root_numbers(f, rn, rd);
       // squares come out of the root, and a number below its bar goes above:
       // √(9x/8) → (3/4)·√(2x)
       auto out = [&](numeric& n, bool up) {

@@ -100,19 +100,7 @@ std::string product(const ex& e, int ctx) {
   if (fold) {
     // (p/q)·√(a·X/b) = √(p² a X / (q² b)): one root, numbers reduced
     numeric rn = c.numer() * c.numer(), rd = c.denom() * c.denom();
-    auto take = [](exvector& v, numeric& into) {
-      exvector keep;
-      for (auto& x : v) {
-        if (is_a<numeric>(x) && ex_to<numeric>(x).is_integer()) into *= ex_to<numeric>(x);
-        else keep.push_back(x);
-      }
-      v = keep;
-    };
-    take(f.root_num, rn);
-    take(f.root_den, rd);
-    numeric g = gcd(rn, rd);
-    rn = rn / g;
-    rd = rd / g;
+    detail::take_root_numbers(f, rn, rd);
     if (rn != 1) f.root_num.insert(f.root_num.begin(), rn);
     if (rd != 1) f.root_den.insert(f.root_den.begin(), rd);
     c = 1;
@@ -300,6 +288,22 @@ void classify(const ex& f, Factors& out) {
   } else {
     plain.push_back({b, a});
   }
+}
+
+void take_root_numbers(Factors& f, numeric& rn, numeric& rd) {
+  auto take = [](exvector& v, numeric& into) {
+    exvector keep;
+    for (auto& x : v) {
+      if (is_a<numeric>(x) && ex_to<numeric>(x).is_integer()) into *= ex_to<numeric>(x);
+      else keep.push_back(x);
+    }
+    v = keep;
+  };
+  take(f.root_num, rn);
+  take(f.root_den, rd);
+  numeric g = gcd(rn, rd);
+  rn = rn / g;
+  rd = rd / g;
 }
 
 }  // namespace detail
