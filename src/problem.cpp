@@ -29,22 +29,15 @@ bool has_float(const ex& e) {
 struct Selector {
   const Model& m;
   const exmap& env;
+  const exmap& given_;  ///< every state's given values
 
   std::optional<numeric> find_value(const model::Find& f, const solve::Branch& b) const {
-    const exmap& given = given_all();
+    const exmap& given = given_;
     try {
       return numerics::evaluate(f.value.subs(given).subs(b.sol), env, 30);
     } catch (const std::exception&) {
       return std::nullopt;  // undefined on this branch (a division by zero): no value to compare
     }
-  }
-
-  const exmap& given_all() const {
-    static thread_local exmap g;
-    g.clear();
-    for (auto& s : m.states)
-      for (auto& [k, v] : s.given) g[k] = v;
-    return g;
   }
 
   bool meets(const model::RootSpec& r, const numeric& v) const {
@@ -60,7 +53,7 @@ struct Selector {
 
   // continuity: a rate keeps the sign of the motion between the states of each analysis
   bool continuous(const solve::Branch& b) const {
-    exmap g = given_all();
+    const exmap& g = given_;
     auto val = [&](const ex& s) -> std::optional<numeric> {
       try {
         return numerics::evaluate(s.subs(g).subs(b.sol), env, 30);
@@ -169,9 +162,7 @@ Solution solve_scene(const scene::SceneDef& def) {
   }
   principles::Knowledge& know = *known;
 
-  exmap given;
-  for (auto& s : m.states)
-    for (auto& [k, v] : s.given) given[k] = v;
+  const exmap given = m.given_values();
 
   std::vector<ex> unknowns;
   for (auto& s : m.states) {
@@ -191,7 +182,7 @@ Solution solve_scene(const scene::SceneDef& def) {
   for (auto& a : m.analyses)
     for (auto& c : m.coords) {
       ex q1 = m.states[a.from].sym.at(c.name).first, q2 = m.states[a.to].sym.at(c.name).first;
-      if (given.count(q1)) reference[q2] = given[q1];
+      if (auto it = given.find(q1); it != given.end()) reference[q2] = it->second;
     }
 
   std::set<int> states_in;
@@ -255,7 +246,7 @@ Solution solve_scene(const scene::SceneDef& def) {
       // what this analysis determines is known to the next (a direction of motion, say)
       try {
         auto bs = run_solver(sol.equations);
-        Selector sel{m, env};
+        Selector sel{m, env, given};
         solve::Branch b = sel.pick(bs);
         for (auto& [k, v] : b.sol)
           if (auto x = numerics::evaluate(v, env, 30)) know.set(k, *x);
@@ -272,7 +263,7 @@ Solution solve_scene(const scene::SceneDef& def) {
   for (auto& e : sol.equations) check_units(e);
 
   std::vector<solve::Branch> branches = run_solver(sol.equations);
-  Selector sel{m, env};
+  Selector sel{m, env, given};
   sol.branch = branches.size() == 1 ? branches.front() : sel.pick(branches);
 
   // a contact can only push: J ≥ 0 along its normal

@@ -79,10 +79,7 @@ struct Tags {
 class Builder {
 public:
   Builder(const Solution& s, const scene::SceneDef& def, const DeriveOptions& o)
-      : s_(s), m_(s.model), def_(def), o_(o), tag_of_(s.equations.size()) {
-    for (auto& st : m_.states)
-      for (auto& [k, v] : st.given) given_[k] = v;
-  }
+      : s_(s), m_(s.model), def_(def), o_(o), given_(s.model.given_values()), tag_of_(s.equations.size()) {}
 
   Derivation run() {
     d_.title = m_.title;

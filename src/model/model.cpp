@@ -304,6 +304,13 @@ exmap Model::parameter_values() const {
   return m;
 }
 
+exmap Model::given_values() const {
+  exmap g;
+  for (auto& s : states)
+    for (auto& [k, v] : s.given) g[k] = v;
+  return g;
+}
+
 exmap Model::numeric_environment() const {
   exmap m;
   int i = 0;

@@ -19,9 +19,7 @@ constexpr int kDigits = 50;
 Check form_check(const Solution& s, const Result& r, const model::Expect& x) {
   const model::Model& m = s.model;
   Check c{r.name, "form", Check::Status::Fails, "", x.form_pos};
-  exmap given;
-  for (auto& st : m.states)
-    for (auto& [k, v] : st.given) given[k] = v;
+  const exmap given = m.given_values();
   ex claimed = x.form->subs(given).subs(s.branch.sol);
   ex derived = r.closed;
   // symbolic: the difference reduces to zero (parameters are positive where their values are)

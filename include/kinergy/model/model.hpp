@@ -194,6 +194,7 @@ public:
   /// Positions (and t) from one state, rates from another: velocities just after an impact.
   ex bind_mixed(const ex& e, int position_state, int rate_state) const;
   GiNaC::exmap parameter_values() const;           ///< parameter symbol → exact value
+  GiNaC::exmap given_values() const;               ///< every state's given values, one map
   /// Values for numeric decisions (root choice, directions, zero tests): the parameters' values,
   /// and for a parameter given without a value (taken as positive) a fixed sample value.
   GiNaC::exmap numeric_environment() const;
