@@ -35,4 +35,7 @@ void take_root_numbers(Factors& f, GiNaC::numeric& rn, GiNaC::numeric& rd);
 /// Sort one factor of a product into `out`.
 void classify(const GiNaC::ex& f, Factors& out);
 
+/// Every factor of a product (or the one expression) sorted into its groups.
+Factors split(const GiNaC::ex& e);
+
 }  // namespace kinergy::emit::detail

@@ -520,10 +520,6 @@ private:
     return k == 1 ? s : paren(s) + power;
   }
 
-  // how a product splits, and which way a sum is turned: the plain printer's rule (factors.hpp)
-  static bool flip_sum(const ex& b) { return detail::flip_sum(b); }
-  static void classify(const ex& f, Factors& out) { detail::classify(f, out); }
-
   // Order in a product: numbers, names, sums (in parentheses), functions — so that a function
   // written without parentheses (\sin\theta) comes last and nothing reads as its argument.
   // Rates and quantities at a state come after the parameters: m r^{2} \dot{\theta}_{2}.
@@ -589,11 +585,7 @@ private:
   }
 
   std::string product(const ex& e, int ctx, bool one_fraction = false) const {
-    Factors f;
-    if (is_a<mul>(e))
-      for (std::size_t i = 0; i < e.nops(); ++i) classify(e.op(i), f);
-    else
-      classify(e, f);
+    Factors f = detail::split(e);
     bool neg = f.coef.is_negative();
     numeric c = neg ? -f.coef : f.coef;
     // the numbers under a root made one reduced fraction; the number in front stays in front

@@ -81,11 +81,7 @@ std::string join(const exvector& v) {
 }
 
 std::string product(const ex& e, int ctx) {
-  Factors f;
-  if (is_a<mul>(e))
-    for (std::size_t i = 0; i < e.nops(); ++i) classify(e.op(i), f);
-  else
-    classify(e, f);
+  Factors f = detail::split(e);
   bool neg = f.coef.is_negative();
   numeric c = neg ? -f.coef : f.coef;
   auto has_number = [](const exvector& v) {
@@ -288,6 +284,15 @@ void classify(const ex& f, Factors& out) {
   } else {
     plain.push_back({b, a});
   }
+}
+
+Factors split(const ex& e) {
+  Factors f;
+  if (is_a<mul>(e))
+    for (std::size_t i = 0; i < e.nops(); ++i) classify(e.op(i), f);
+  else
+    classify(e, f);
+  return f;
 }
 
 void take_root_numbers(Factors& f, numeric& rn, numeric& rd) {
