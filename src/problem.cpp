@@ -1,6 +1,7 @@
 #include "kinergy/problem.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
@@ -8,6 +9,9 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/evaluator.hpp"
+
+#include <cln/cln.h>
 
 namespace kinergy {
 
@@ -132,17 +136,43 @@ struct Selector {
 
 }  // namespace
 
-std::optional<numeric> Result::value(const exmap& env, int digits) const {
-  // raise the working precision until the requested digits stop changing
-  ex e = closed / unit_factor;
-  std::optional<numeric> prev;
-  for (int work = digits + 10; work <= 4 * digits + 200; work += digits + 20) {
-    auto v = numerics::evaluate(e, env, work);
-    if (!v) return std::nullopt;
-    if (prev && numerics::round_sig(*prev, digits) == numerics::round_sig(*v, digits)) return v;
-    prev = v;
+std::string Value::note() const {
+  switch (how) {
+    case How::Exact: return "exact";
+    case How::Double: return "double, |error| <= " + numerics::format(numeric(bound), 2);
+    case How::Precise: return "working precision " + std::to_string(working) + " digits";
+    case How::Zero: return "zero: |value| < " + numerics::format(numeric(bound), 2);
   }
-  return prev;
+  return "";
+}
+
+std::optional<numeric> Result::value(const exmap& env, int digits) const {
+  auto v = evaluate(env, digits, false);
+  if (!v) return std::nullopt;
+  return v->v;
+}
+
+std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_double) const {
+  if (!closed_form && digits > kRootDigits)
+    throw SceneError(pos, "'" + name + "' is a numeric root (no closed form), refined to " + std::to_string(kRootDigits) +
+                              " significant digits; " + std::to_string(digits) + " were asked",
+                     "ask for --digits " + std::to_string(kRootDigits) + " or fewer");
+  numerics::Evaluator ev(closed / unit_factor, env);
+  if (prefer_double && digits <= 15) {
+    // the double's digits are right when the whole interval value ± bound rounds to them
+    if (auto f = ev.fast(); f && std::isfinite(f->value) && std::isfinite(f->bound)) {
+      auto exact_double = [](double d) { return numeric(cln::cl_N(cln::rational(cln::cl_DF(d)))); };
+      numeric lo = numerics::round_sig(exact_double(f->value - 2 * f->bound), digits);
+      numeric hi = numerics::round_sig(exact_double(f->value + 2 * f->bound), digits);
+      if (f->bound == 0 || lo == hi)
+        return Value{exact_double(f->value), Value::How::Double, 0, f->bound};
+    }
+  }
+  auto d = ev.digits(digits);
+  if (!d) return std::nullopt;
+  if (d->exact) return Value{d->value, Value::How::Exact, 0, 0};
+  if (d->zero_bound) return Value{0, Value::How::Zero, d->working, d->bound};
+  return Value{d->value, Value::How::Precise, d->working, 0};
 }
 
 Solution solve_scene(const scene::SceneDef& def) {

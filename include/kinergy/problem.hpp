@@ -14,6 +14,15 @@
 
 namespace kinergy {
 
+/// A number for a result, and how it was obtained.
+struct Value {
+  GiNaC::numeric v;       ///< in the display unit; its rounding to the digits asked is right
+  enum class How { Exact, Double, Precise, Zero } how = How::Exact;
+  long working = 0;       ///< Precise: the working precision (decimal digits) that settled the digits
+  double bound = 0;       ///< Double: |error| bound of the double; Zero: |value| bound
+  std::string note() const;  ///< "exact", "double, |error| ≤ 4.4e-16", "working precision 120 digits", …
+};
+
 /// A named result of a scene.
 struct Result {
   std::string name;
@@ -27,7 +36,15 @@ struct Result {
   /// Value in the display unit with `digits` correct significant digits (working precision
   /// raised until stable). @returns nothing when parameters lack values.
   std::optional<GiNaC::numeric> value(const GiNaC::exmap& env, int digits) const;
+  /// The value, right when rounded to `digits` significant digits. With `prefer_double`, the compiled
+  /// double evaluator decides when its error bound fixes every one of those digits; otherwise
+  /// (or when it cannot) CLN with working precision raised until the digits settle.
+  /// @throws SceneError when more digits are asked of a numeric root than it was refined to.
+  std::optional<Value> evaluate(const GiNaC::exmap& env, int digits, bool prefer_double) const;
 };
+
+/// Significant digits a numeric root (no closed form) is refined to.
+constexpr int kRootDigits = 35;
 
 struct Solution {
   model::Model model;

@@ -8,11 +8,13 @@ namespace kinergy::emit {
 
 using namespace GiNaC;
 
-static std::string value_text(const Solution& s, const Result& r, int digits) {
-  if (!r.si) return "";
-  auto v = r.value(s.model.numeric_environment(), digits);
-  if (!v) return "";
-  return numerics::format(*v, digits);
+static std::optional<Value> value_of(const Solution& s, const Result& r, const Options& o) {
+  if (!r.si) return std::nullopt;
+  return r.evaluate(s.model.numeric_environment(), o.digits, !o.guaranteed);
+}
+
+static std::string value_text(const std::optional<Value>& v, int digits) {
+  return v ? numerics::format(v->v, digits) : std::string();
 }
 
 std::string text(const Solution& s, const Options& o) {
@@ -22,14 +24,17 @@ std::string text(const Solution& s, const Options& o) {
   for (auto& r : s.results) w = std::max(w, r.name.size());
   for (auto& r : s.results) {
     std::string pad(w - r.name.size(), ' ');
-    std::string v = value_text(s, r, o.digits);
+    auto val = value_of(s, r, o);
+    std::string v = value_text(val, o.digits);
+    // with --digits, how the digits were made sure of
+    std::string how = val && o.guaranteed ? "   (" + val->note() + ")" : "";
     if (r.closed_form) {
       os << "  " << r.name << pad << " = " << plain(r.closed) << "\n";
-      if (!v.empty()) os << "  " << std::string(w, ' ') << " = " << v << (r.unit.empty() ? "" : " " + r.unit) << "\n";
+      if (!v.empty()) os << "  " << std::string(w, ' ') << " = " << v << (r.unit.empty() ? "" : " " + r.unit) << how << "\n";
       else os << "  " << std::string(w, ' ') << "   (no number: some parameters have no value)\n";
     } else {
       os << "  " << r.name << pad << " = " << v << (r.unit.empty() ? "" : " " + r.unit)
-         << "   (no closed form: numeric root)\n";
+         << "   (no closed form: numeric root" << (val && o.guaranteed ? "; " + val->note() : std::string()) << ")\n";
     }
   }
   return os.str();
@@ -68,11 +73,13 @@ std::string json(const Solution& s, const Options& o, const std::vector<verify::
   os << "{\"file\": " << quote(s.model.file) << ", \"title\": " << quote(s.model.title) << ", \"results\": [";
   for (std::size_t i = 0; i < s.results.size(); ++i) {
     const Result& r = s.results[i];
-    std::string v = value_text(s, r, o.digits);
+    auto val = value_of(s, r, o);
+    std::string v = value_text(val, o.digits);
     os << (i ? ", " : "") << "{\"name\": " << quote(r.name) << ", \"closed_form\": "
        << (r.closed_form ? quote(plain(r.closed)) : std::string("null"))
        << ", \"value\": " << (v.empty() ? std::string("null") : quote(v)) << ", \"unit\": " << quote(r.unit)
-       << ", \"dimension\": " << quote(r.dim.str()) << "}";
+       << ", \"dimension\": " << quote(r.dim.str())
+       << ", \"evaluation\": " << (val ? quote(val->note()) : std::string("null")) << "}";
   }
   os << "]";
   if (checks) {

@@ -1,8 +1,12 @@
 #include "kinergy/numeric/tape.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
+
+#include <cln/cln.h>
 #include <stdexcept>
 
 namespace kinergy::numerics {
@@ -35,7 +39,13 @@ private:
     t_.code_.push_back(in);
     return static_cast<std::int32_t>(t_.code_.size() - 1);
   }
-  std::int32_t constant(double v) { return emit({Tape::Op::Const, -1, -1, v}); }
+  // a constant: its double, and the exact value kept for the error bound and for CLN
+  std::int32_t constant(const ex& exact) {
+    double d = to_double(exact);
+    t_.exact_.push_back(exact);
+    t_.const_err_.push_back(rounding_error(d, exact));
+    return emit({Tape::Op::Const, static_cast<std::int32_t>(t_.exact_.size() - 1), -1, d});
+  }
   std::int32_t unary(Tape::Op op, const ex& a) { return emit({op, node(a), -1, 0}); }
 
   std::int32_t build(const ex& e) {
@@ -43,9 +53,9 @@ private:
     if (is_a<numeric>(e)) {
       const numeric& n = ex_to<numeric>(e);
       if (!n.is_real()) throw std::invalid_argument("tape: a complex constant " + to_text(e));
-      return constant(n.to_double());
+      return constant(e);
     }
-    if (is_a<GiNaC::constant>(e)) return constant(ex_to<numeric>(e.evalf()).to_double());
+    if (is_a<GiNaC::constant>(e)) return constant(e);
     if (is_a<symbol>(e)) throw std::invalid_argument("tape: '" + to_text(e) + "' is not an input");
     if (is_a<add>(e) || is_a<mul>(e)) {
       // a chain of binary operations over the operands (a numeric coefficient last in GiNaC)
@@ -100,6 +110,7 @@ Tape Tape::compile(const ex& e, const std::vector<ex>& inputs) {
   TapeBuilder b(t, inputs);
   t.out_ = b.node(e);
   t.reg_.resize(t.code_.size());
+  t.err_.resize(t.code_.size());
   return t;
 }
 
@@ -107,7 +118,8 @@ double Tape::operator()(const double* x) const {
   double* r = reg_.data();
   for (std::size_t i = 0; i < code_.size(); ++i) {
     const Ins& in = code_[i];
-    const double a = in.a >= 0 && in.op != Op::Input ? r[in.a] : 0, b = in.b >= 0 ? r[in.b] : 0;
+    const bool leaf = in.op == Op::Input || in.op == Op::Const;
+    const double a = !leaf && in.a >= 0 ? r[in.a] : 0, b = in.b >= 0 ? r[in.b] : 0;
     switch (in.op) {
       case Op::Const: r[i] = in.c; break;
       case Op::Input: r[i] = x[in.a]; break;
@@ -137,6 +149,325 @@ double Tape::operator()(const double* x) const {
     }
   }
   return out_ < 0 ? 0 : r[out_];
+}
+
+void Tape::batch(const double* x, std::size_t n, double* out) const {
+  // registers laid out instruction-major: register i of point k at R[i*n + k]
+  batch_reg_.resize(code_.size() * n);
+  double* R = batch_reg_.data();
+  const std::size_t m = n_inputs_;
+  for (std::size_t i = 0; i < code_.size(); ++i) {
+    const Ins& in = code_[i];
+    double* r = R + i * n;
+    const bool leaf = in.op == Op::Input || in.op == Op::Const;
+    const double* a = !leaf && in.a >= 0 ? R + static_cast<std::size_t>(in.a) * n : nullptr;
+    const double* b = in.b >= 0 ? R + static_cast<std::size_t>(in.b) * n : nullptr;
+    auto each = [&](auto f) {
+      for (std::size_t k = 0; k < n; ++k) r[k] = f(k);
+    };
+    switch (in.op) {
+      case Op::Const: each([&](std::size_t) { return in.c; }); break;
+      case Op::Input: each([&](std::size_t k) { return x[k * m + static_cast<std::size_t>(in.a)]; }); break;
+      case Op::Add: each([&](std::size_t k) { return a[k] + b[k]; }); break;
+      case Op::Mul: each([&](std::size_t k) { return a[k] * b[k]; }); break;
+      case Op::Div: each([&](std::size_t k) { return a[k] / b[k]; }); break;
+      case Op::Neg: each([&](std::size_t k) { return -a[k]; }); break;
+      case Op::Sq: each([&](std::size_t k) { return a[k] * a[k]; }); break;
+      case Op::Cube: each([&](std::size_t k) { return a[k] * a[k] * a[k]; }); break;
+      case Op::Powi: each([&](std::size_t k) { return std::pow(a[k], in.c); }); break;
+      case Op::Sqrt: each([&](std::size_t k) { return std::sqrt(a[k]); }); break;
+      case Op::Rsqrt: each([&](std::size_t k) { return 1 / std::sqrt(a[k]); }); break;
+      case Op::Pow: each([&](std::size_t k) { return std::pow(a[k], b[k]); }); break;
+      case Op::Sin: each([&](std::size_t k) { return std::sin(a[k]); }); break;
+      case Op::Cos: each([&](std::size_t k) { return std::cos(a[k]); }); break;
+      case Op::Tan: each([&](std::size_t k) { return std::tan(a[k]); }); break;
+      case Op::Asin: each([&](std::size_t k) { return std::asin(a[k]); }); break;
+      case Op::Acos: each([&](std::size_t k) { return std::acos(a[k]); }); break;
+      case Op::Atan: each([&](std::size_t k) { return std::atan(a[k]); }); break;
+      case Op::Atan2: each([&](std::size_t k) { return std::atan2(a[k], b[k]); }); break;
+      case Op::Exp: each([&](std::size_t k) { return std::exp(a[k]); }); break;
+      case Op::Log: each([&](std::size_t k) { return std::log(a[k]); }); break;
+      case Op::Abs: each([&](std::size_t k) { return std::fabs(a[k]); }); break;
+      case Op::Sinh: each([&](std::size_t k) { return std::sinh(a[k]); }); break;
+      case Op::Cosh: each([&](std::size_t k) { return std::cosh(a[k]); }); break;
+      case Op::Tanh: each([&](std::size_t k) { return std::tanh(a[k]); }); break;
+    }
+  }
+  if (out_ < 0) {
+    std::fill(out, out + n, 0.0);
+    return;
+  }
+  const double* r = R + static_cast<std::size_t>(out_) * n;
+  std::copy(r, r + n, out);
+}
+
+// Running error analysis. With u = 2⁻⁵³ the unit roundoff, every register carries r̂ and a
+// bound e with |r̂ − r| ≤ e, where r is the exact value of the same operation on exact operands.
+// For r = f(a, b) computed as fl(f(â, b̂)):
+//   |r̂ − r| ≤ |f(â, b̂) − f(a, b)| + |fl(f(â, b̂)) − f(â, b̂)|
+// the first part bounded through f on the interval [â − e_a, â + e_a] (× same for b), the second
+// by u|r̂| for correctly rounded +, −, ×, ÷, √ and by 2u|r̂| for the library functions (glibc's
+// sin, cos, exp, log, pow are within one ulp).
+Bounded Tape::bounded(const double* x, const double* dx) const {
+  constexpr double u = 0x1p-53;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double* r = reg_.data();
+  double* E = err_.data();
+  for (std::size_t i = 0; i < code_.size(); ++i) {
+    const Ins& in = code_[i];
+    const bool leaf = in.op == Op::Input || in.op == Op::Const;
+    const double a = !leaf && in.a >= 0 ? r[in.a] : 0, b = in.b >= 0 ? r[in.b] : 0;
+    const double ea = !leaf && in.a >= 0 ? E[in.a] : 0, eb = in.b >= 0 ? E[in.b] : 0;
+    const double A = std::fabs(a), B = std::fabs(b);
+    double v = 0, e = 0;
+    switch (in.op) {
+      case Op::Const: v = in.c; e = const_err_[static_cast<std::size_t>(in.a)]; break;
+      case Op::Input: v = x[in.a]; e = dx ? dx[in.a] : 0; break;
+      // (a+δa) + (b+δb) − (a+b) = δa + δb
+      case Op::Add: v = a + b; e = ea + eb + u * std::fabs(v); break;
+      // (a+δa)(b+δb) − ab = a δb + b δa + δa δb
+      case Op::Mul: v = a * b; e = A * eb + B * ea + ea * eb + u * std::fabs(v); break;
+      // (a+δa)/(b+δb) − a/b = (δa − (a/b) δb)/(b + δb)
+      case Op::Div:
+        v = a / b;
+        e = B > eb ? (ea + std::fabs(v) * eb) / (B - eb) + u * std::fabs(v) : inf;
+        break;
+      case Op::Neg: v = -a; e = ea; break;
+      // (a+δ)² − a² = 2aδ + δ²
+      case Op::Sq: v = a * a; e = 2 * A * ea + ea * ea + u * v; break;
+      // (a+δ)³ − a³ = 3a²δ + 3aδ² + δ³ ; two roundings
+      case Op::Cube: v = a * a * a; e = 3 * A * A * ea + 3 * A * ea * ea + ea * ea * ea + 2 * u * std::fabs(v); break;
+      // |(a+δ)ⁿ − aⁿ| ≤ |n| max(|a|±|δ|)^(n−1) |δ|
+      case Op::Powi: {
+        v = std::pow(a, in.c);
+        const double n = std::fabs(in.c);
+        const double far = in.c > 0 ? A + ea : A - ea;  // where |x^(n−1)| is largest on the interval
+        e = far > 0 ? n * std::pow(far, in.c - 1) * ea : inf;
+        e += 2 * u * std::fabs(v);
+        break;
+      }
+      // |√(a+δ) − √a| = |δ|/(√(a+δ) + √a) ≤ |δ|/√a, and ≤ √|δ| always
+      case Op::Sqrt:
+        v = std::sqrt(a);
+        e = (a > ea ? std::min(ea / v, std::sqrt(ea)) : std::sqrt(a + ea) + v) + u * v;
+        break;
+      // |1/√(a+δ) − 1/√a| ≤ |δ| / (2 (a−|δ|)^(3/2))
+      case Op::Rsqrt:
+        v = 1 / std::sqrt(a);
+        e = a > ea ? ea / (2 * (a - ea) * std::sqrt(a - ea)) + 2 * u * v : inf;
+        break;
+      // |f(a+δ) − f(a)| ≤ |f'(a)||δ| + ½ max|f''| δ² for sin and cos (|f''| ≤ 1)
+      case Op::Sin: v = std::sin(a); e = std::min(2.0, std::fabs(std::cos(a)) * ea + ea * ea / 2) + 2 * u * std::fabs(v); break;
+      case Op::Cos: v = std::cos(a); e = std::min(2.0, std::fabs(std::sin(a)) * ea + ea * ea / 2) + 2 * u * std::fabs(v); break;
+      // tan' = 1 + tan², bounded on the interval when it holds no pole
+      case Op::Tan: {
+        v = std::tan(a);
+        const double c = std::cos(a);
+        e = std::fabs(c) > ea ? ea / ((std::fabs(c) - ea) * (std::fabs(c) - ea)) + 2 * u * std::fabs(v) : inf;
+        break;
+      }
+      // asin' = acos' = 1/√(1 − a²)
+      case Op::Asin:
+      case Op::Acos: {
+        v = in.op == Op::Asin ? std::asin(a) : std::acos(a);
+        const double far = A + ea;
+        // near ±1: |asin x − asin y| ≤ (π/√2) √|x − y|
+        e = far < 1 ? ea / std::sqrt(1 - far * far) : 2.2214414690791831 * std::sqrt(ea);
+        e += 2 * u * std::fabs(v);
+        break;
+      }
+      case Op::Atan: v = std::atan(a); e = ea + 2 * u * std::fabs(v); break;
+      // |∇atan2(y, x)| = 1/√(x² + y²)
+      case Op::Atan2: {
+        v = std::atan2(a, b);
+        const double rho = std::hypot(a, b) - ea - eb;
+        e = rho > 0 ? (ea + eb) / rho + 2 * u * std::fabs(v) : 4;
+        break;
+      }
+      // e^(a+δ) − e^a = e^a (e^δ − 1)
+      case Op::Exp: v = std::exp(a); e = v * std::expm1(ea) + 2 * u * v; break;
+      // |ln(a+δ) − ln a| ≤ |δ|/(a − |δ|)
+      case Op::Log: v = std::log(a); e = a > ea ? ea / (a - ea) + 2 * u * std::fabs(v) : inf; break;
+      case Op::Abs: v = A; e = ea; break;
+      case Op::Sinh:
+      case Op::Cosh:
+        v = in.op == Op::Sinh ? std::sinh(a) : std::cosh(a);
+        e = std::cosh(A + ea) * ea + 2 * u * std::fabs(v);
+        break;
+      case Op::Tanh: v = std::tanh(a); e = ea + 2 * u * std::fabs(v); break;
+      // a^b = e^(b ln a): relative change ≤ e^(|b| δa/(a−δa) + |ln a| δb + …) − 1
+      case Op::Pow: {
+        v = std::pow(a, b);
+        if (a > ea) {
+          const double rel = (B + eb) * ea / (a - ea) + std::fabs(std::log(a)) * eb + ea * eb / (a - ea);
+          e = std::fabs(v) * std::expm1(rel) + 2 * u * std::fabs(v);
+        } else {
+          e = inf;
+        }
+        break;
+      }
+    }
+    r[i] = v;
+    E[i] = std::isnan(v) ? inf : e;
+  }
+  if (out_ < 0) return {0, 0};
+  return {r[out_], E[out_]};
+}
+
+namespace {
+
+using cln::cl_R;
+
+bool is_rational(const cl_R& x) { return cln::instanceof(x, cln::cl_RA_ring); }
+
+cln::cl_F as_float(const cl_R& x, const cln::float_format_t& f) { return cln::cl_float(x, f); }
+
+}  // namespace
+
+// Rationals stay rationals through +, −, ×, ÷, integer powers, and √ of a perfect square; the
+// first inexact step makes a float of the asked format, and CLN carries that format on.
+std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits) const {
+  const cln::float_format_t f = cln::float_format(digits);
+  std::vector<cl_R> r(code_.size());
+  for (std::size_t i = 0; i < code_.size(); ++i) {
+    const Ins& in = code_[i];
+    const bool leaf = in.op == Op::Input || in.op == Op::Const;
+    const cl_R a = !leaf && in.a >= 0 ? r[static_cast<std::size_t>(in.a)] : cl_R(0);
+    const cl_R b = in.b >= 0 ? r[static_cast<std::size_t>(in.b)] : cl_R(0);
+    cl_R v;
+    switch (in.op) {
+      case Op::Const: {
+        auto c = to_cln(exact_[static_cast<std::size_t>(in.a)], digits);
+        if (!c) return std::nullopt;
+        v = *c;
+        break;
+      }
+      case Op::Input: v = x.at(static_cast<std::size_t>(in.a)); break;
+      case Op::Add: v = a + b; break;
+      case Op::Mul: v = a * b; break;
+      case Op::Div:
+        if (cln::zerop(b)) return std::nullopt;
+        v = a / b;
+        break;
+      case Op::Neg: v = -a; break;
+      case Op::Sq: v = a * a; break;
+      case Op::Cube: v = a * a * a; break;
+      case Op::Powi: {
+        const long n = static_cast<long>(in.c);
+        if (n < 0 && cln::zerop(a)) return std::nullopt;
+        v = cln::expt(a, n);
+        break;
+      }
+      case Op::Sqrt:
+      case Op::Rsqrt: {
+        if (cln::minusp(a)) return std::nullopt;
+        cl_R s;
+        cln::cl_RA q, root;
+        if (is_rational(a) && cln::sqrtp(q = cln::the<cln::cl_RA>(a), &root)) s = root;
+        else s = cln::sqrt(as_float(a, f));
+        if (in.op == Op::Sqrt) {
+          v = s;
+        } else {
+          if (cln::zerop(s)) return std::nullopt;
+          v = 1 / s;
+        }
+        break;
+      }
+      case Op::Sin: v = cln::zerop(a) ? cl_R(0) : cl_R(cln::sin(as_float(a, f))); break;
+      case Op::Cos: v = cln::zerop(a) ? cl_R(1) : cl_R(cln::cos(as_float(a, f))); break;
+      case Op::Tan: {
+        if (cln::zerop(a)) {
+          v = 0;
+          break;
+        }
+        cln::cl_F c = cln::cos(as_float(a, f));
+        if (cln::zerop(c)) return std::nullopt;
+        v = cln::sin(as_float(a, f)) / c;
+        break;
+      }
+      case Op::Asin:
+      case Op::Acos: {
+        if (cln::abs(a) > 1) return std::nullopt;
+        if (in.op == Op::Asin && cln::zerop(a)) {
+          v = 0;
+          break;
+        }
+        // asin a = atan2(a, √(1 − a²)), acos a = atan2(√(1 − a²), a)
+        cln::cl_F s = cln::sqrt(as_float(1 - a * a, f));
+        v = in.op == Op::Asin ? cln::atan(s, as_float(a, f)) : cln::atan(as_float(a, f), s);
+        break;
+      }
+      case Op::Atan: v = cln::zerop(a) ? cl_R(0) : cl_R(cln::atan(as_float(a, f))); break;
+      case Op::Atan2:  // atan2(y = a, x = b); cln::atan(x, y) is the angle of the point (x, y)
+        if (cln::zerop(a) && cln::zerop(b)) return std::nullopt;
+        v = cln::atan(as_float(b, f), as_float(a, f));
+        break;
+      case Op::Exp: v = cln::zerop(a) ? cl_R(1) : cl_R(cln::exp(as_float(a, f))); break;
+      case Op::Log:
+        if (!cln::plusp(a)) return std::nullopt;
+        v = a == 1 ? cl_R(0) : cl_R(cln::ln(as_float(a, f)));
+        break;
+      case Op::Abs: v = cln::abs(a); break;
+      case Op::Sinh: v = cln::zerop(a) ? cl_R(0) : cl_R(cln::sinh(as_float(a, f))); break;
+      case Op::Cosh: v = cln::zerop(a) ? cl_R(1) : cl_R(cln::cosh(as_float(a, f))); break;
+      case Op::Tanh: v = cln::zerop(a) ? cl_R(0) : cl_R(cln::tanh(as_float(a, f))); break;
+      case Op::Pow:
+        // a^b = e^(b ln a) for a > 0; 0^b = 0 for b > 0
+        if (cln::zerop(a)) {
+          if (!cln::plusp(b)) return std::nullopt;
+          v = 0;
+        } else if (cln::minusp(a)) {
+          return std::nullopt;
+        } else {
+          v = cln::exp(as_float(b, f) * cln::ln(as_float(a, f)));
+        }
+        break;
+    }
+    r[i] = v;
+  }
+  if (out_ < 0) return cl_R(0);
+  return r[static_cast<std::size_t>(out_)];
+}
+
+double to_double(const ex& exact) {
+  if (is_a<numeric>(exact) && ex_to<numeric>(exact).is_real()) return ex_to<numeric>(exact).to_double();
+  auto v = to_cln(exact, 40);
+  return v ? cln::double_approx(*v) : std::numeric_limits<double>::quiet_NaN();
+}
+
+double rounding_error(double d, const ex& exact) {
+  if (!std::isfinite(d)) return std::numeric_limits<double>::infinity();
+  auto v = to_cln(exact, 60);
+  if (!v) return std::numeric_limits<double>::infinity();
+  cl_R diff = cln::rational(cln::cl_DF(d)) - *v;  // the double is an exact binary rational
+  // rounded up to stay a bound
+  double e = cln::double_approx(cln::abs(diff));
+  return e == 0 ? 0 : std::nextafter(e, std::numeric_limits<double>::infinity());
+}
+
+std::optional<cl_R> to_cln(const ex& exact, long digits) {
+  if (is_a<numeric>(exact)) {
+    const numeric& n = ex_to<numeric>(exact);
+    if (!n.is_real()) return std::nullopt;
+    cln::cl_N c = n.to_cl_N();
+    cl_R r = cln::the<cl_R>(c);
+    if (is_rational(r)) return r;
+    return cl_R(cln::cl_float(r, cln::float_format(digits)));  // a float given as a constant
+  }
+  if (exact.is_equal(Pi)) return cl_R(cln::pi(cln::float_format(digits)));
+  // any other exact form (π/6, √2, e^…): GiNaC's evaluation with guard digits
+  long saved = Digits;
+  Digits = digits + 10;
+  std::optional<cl_R> out;
+  try {
+    ex v = exact.evalf();
+    if (is_a<numeric>(v) && ex_to<numeric>(v).is_real())
+      out = cl_R(cln::cl_float(cln::the<cl_R>(ex_to<numeric>(v).to_cl_N()), cln::float_format(digits)));
+  } catch (const std::exception&) {
+    out.reset();
+  }
+  Digits = saved;
+  return out;
 }
 
 }  // namespace kinergy::numerics

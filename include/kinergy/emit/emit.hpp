@@ -11,6 +11,10 @@ namespace kinergy::emit {
 
 struct Options {
   int digits = 15;  ///< significant digits of values
+  /// false: the compiled double evaluator where its error bound fixes every digit printed (else
+  /// CLN); true (`--digits N`): CLN with the working precision raised until the N digits settle,
+  /// and that precision reported beside each value.
+  bool guaranteed = false;
 };
 
 /// Texts to print in place of symbols (a parameter's value with its unit, say).

@@ -1,13 +1,24 @@
-/// @file tape.hpp  A closed form compiled to a tape of double operations: every distinct
-/// subexpression computed once (sin θ, √(…) shared), no GiNaC on the hot path.
+/// @file tape.hpp  A closed form compiled to a tape of operations: every distinct subexpression
+/// computed once (sin θ, √(…) shared), no GiNaC on the hot path. The same tape runs in IEEE
+/// double (plain, over a batch of points, or with a running error bound) and in CLN at any
+/// precision (exact rationals where the operations allow, floats of the asked precision after).
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <cln/real.h>
 #include <ginac/ginac.h>
 
 namespace kinergy::numerics {
+
+/// A double with a bound on its distance from the exact value of the same form at the same
+/// exact inputs: |value − exact| ≤ bound.
+struct Bounded {
+  double value = 0;
+  double bound = 0;
+};
 
 class Tape {
 public:
@@ -20,6 +31,20 @@ public:
   double operator()(const double* x) const;
   double operator()(const std::vector<double>& x) const { return (*this)(x.data()); }
 
+  /// Values at n points: x holds point i at x[i*inputs() .. i*inputs()+inputs()-1]. Each
+  /// instruction runs over the whole batch (the dispatch is paid once per instruction).
+  void batch(const double* x, std::size_t n, double* out) const;
+
+  /// Value with a running error bound (Wilkinson's running error analysis, carried through
+  /// every instruction): dx[i] bounds the error of input i (0 for an exact input).
+  Bounded bounded(const double* x, const double* dx) const;
+
+  /// Value in CLN: rationals stay exact through +, −, ×, ÷ and integer powers, and every
+  /// inexact step works with floats of `digits` decimal digits. The inputs are exact
+  /// rationals or floats of at least that precision. @returns nothing where the form is
+  /// undefined (division by zero, √ of a negative, log of a non-positive number, …).
+  std::optional<cln::cl_R> precise(const std::vector<cln::cl_R>& x, long digits) const;
+
   std::size_t instructions() const { return code_.size(); }  ///< after sharing
   std::size_t inputs() const { return n_inputs_; }
 
@@ -30,14 +55,26 @@ private:
   };
   struct Ins {
     Op op;
-    std::int32_t a = -1, b = -1;  ///< operand registers
+    std::int32_t a = -1, b = -1;  ///< operand registers (Input: the input's index; Const: its exact value's index)
     double c = 0;                 ///< constant, or an integer exponent
   };
   std::vector<Ins> code_;
+  std::vector<GiNaC::ex> exact_;     ///< each constant exactly (a rational, or π, …)
+  std::vector<double> const_err_;    ///< |double constant − exact constant|
   std::size_t n_inputs_ = 0;
   std::int32_t out_ = -1;  ///< the register holding the value
   mutable std::vector<double> reg_;
+  mutable std::vector<double> err_;
+  mutable std::vector<double> batch_reg_;
   friend class TapeBuilder;
 };
+
+/// The double nearest an exact value (a rational, or an exact form such as π/6).
+double to_double(const GiNaC::ex& exact);
+/// |d − exact| for the double d of an exact value, as a double (0 when d is exact).
+double rounding_error(double d, const GiNaC::ex& exact);
+/// An exact value as a CLN real: a rational exactly, anything else (π/6, √2) as a float of
+/// `digits` decimal digits. @returns nothing when it is not a real number.
+std::optional<cln::cl_R> to_cln(const GiNaC::ex& exact, long digits);
 
 }  // namespace kinergy::numerics

@@ -1,0 +1,59 @@
+/// @file evaluator.hpp  The value of one closed form at one set of exact inputs, three ways:
+/// compiled double with an error bound, CLN at a given precision, and N guaranteed digits.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "kinergy/numeric/tape.hpp"
+
+namespace kinergy::numerics {
+
+/// A value with N correct significant digits, and how it was obtained.
+struct Precise {
+  GiNaC::numeric value;      ///< exact rational, or a float of `working` digits
+  long working = 0;          ///< working precision (decimal digits) of the last evaluation; 0 when exact
+  bool exact = false;        ///< the value is exact (a rational)
+  bool zero_bound = false;   ///< not settled, but shrinking with precision: zero, |value| < bound
+  double bound = 0;          ///< |value| bound when zero_bound
+};
+
+class Evaluator {
+public:
+  /// e: the closed form; values: an exact value (rational, or an exact form such as π/6) for
+  /// every free symbol of e.
+  Evaluator(const GiNaC::ex& e, const GiNaC::exmap& values);
+
+  /// Compiled double. Candidates: e itself and its stable form; in each, the subexpressions
+  /// that are rational in the inputs (no function, no fractional power: 2L − 3d, 1 − e, m₂ − m₁)
+  /// are computed exactly once and rounded once. The candidate with the smaller running error
+  /// bound is kept. @returns nothing when no candidate compiles (an unsupported function).
+  std::optional<Bounded> fast() const;
+
+  /// CLN directly at `working` decimal digits (exact rationals where the operations allow).
+  std::optional<GiNaC::numeric> at(long working) const;
+
+  /// `digits` correct significant digits: exact when the value is rational; else evaluated at
+  /// a working precision that grows until the rounding to `digits` stops changing.
+  /// @returns nothing when the form is undefined at the values.
+  std::optional<Precise> digits(int digits) const;
+
+  /// The form fast() evaluates, with its exactly computed parts written out (for reports).
+  GiNaC::ex fast_form() const { return fast_form_; }
+  /// The running error bound of e itself in double (no rewrite, no exact parts): what naive
+  /// evaluation would give. @returns nothing when it does not compile.
+  std::optional<Bounded> naive() const;
+
+private:
+  GiNaC::ex e_, stable_;
+  std::vector<GiNaC::ex> syms_;   ///< free symbols of e, in a fixed order
+  std::vector<GiNaC::ex> exact_;  ///< their exact values
+  std::optional<Tape> precise_tape_;
+  std::optional<Tape> fast_tape_;
+  std::vector<double> fast_x_, fast_dx_;
+  GiNaC::ex fast_form_;
+};
+
+}  // namespace kinergy::numerics

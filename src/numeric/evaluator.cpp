@@ -1,0 +1,196 @@
+#include "kinergy/numeric/evaluator.hpp"
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <cln/cln.h>
+
+#include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/stable.hpp"
+
+namespace kinergy::numerics {
+
+using namespace GiNaC;
+
+namespace {
+
+/// Rational in the inputs: numbers, input symbols and π combined by +, −, ×, ÷ and integer powers.
+bool rational_in(const ex& e, const exmap& values) {
+  if (is_a<numeric>(e)) return ex_to<numeric>(e).is_real();
+  if (is_a<symbol>(e)) return values.count(e) > 0;
+  if (is_a<constant>(e)) return true;
+  if (is_a<add>(e) || is_a<mul>(e)) {
+    for (const ex& x : e)
+      if (!rational_in(x, values)) return false;
+    return true;
+  }
+  if (is_a<power>(e)) return is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer() && rational_in(e.op(0), values);
+  return false;
+}
+
+/// The largest subexpressions of e that are rational in the inputs (and not a single symbol or
+/// number), replaced by new symbols; `parts` receives symbol → subexpression.
+struct Promote : map_function {
+  const exmap& values;
+  std::map<ex, ex, ex_is_less> seen;
+  std::vector<std::pair<ex, ex>> parts;
+  explicit Promote(const exmap& v) : values(v) {}
+  ex operator()(const ex& e) override {
+    if (is_a<symbol>(e) || is_a<numeric>(e) || is_a<constant>(e)) return e;
+    if (rational_in(e, values)) {
+      auto it = seen.find(e);
+      if (it != seen.end()) return it->second;
+      symbol s("exact" + std::to_string(parts.size()));
+      seen[e] = s;
+      parts.emplace_back(s, e);
+      return s;
+    }
+    return e.map(*this);
+  }
+};
+
+/// An exact value as a double, with a bound on its distance from the exact value.
+std::pair<double, double> rounded(const ex& exact) {
+  if (is_a<numeric>(exact) && ex_to<numeric>(exact).is_rational()) {
+    double d = to_double(exact);
+    return {d, rounding_error(d, exact)};
+  }
+  // π/6, √2 …: two precisions; their difference bounds the error of the lower one
+  auto lo = to_cln(exact, 40), hi = to_cln(exact, 80);
+  if (!lo || !hi) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()};
+  double d = cln::double_approx(*hi);
+  double e = cln::double_approx(cln::abs(*hi - *lo)) + rounding_error(d, numeric(cln::cl_N(*hi)));
+  return {d, e};
+}
+
+}  // namespace
+
+Evaluator::Evaluator(const ex& e, const exmap& values) : e_(e) {
+  stable_ = stable_form(e);
+  for (auto& [s, v] : values)
+    if (e.has(s)) {
+      syms_.push_back(s);
+      exact_.push_back(v);
+    }
+  try {
+    precise_tape_ = Tape::compile(stable_, syms_);
+  } catch (const std::invalid_argument&) {
+    precise_tape_.reset();
+  }
+  exmap own;
+  for (std::size_t i = 0; i < syms_.size(); ++i) own[syms_[i]] = exact_[i];
+  // the candidates for double evaluation, each with its exact parts
+  double best = std::numeric_limits<double>::infinity();
+  for (const ex& form : {stable_, e_}) {
+    Promote p(own);
+    ex f = p(form);
+    std::vector<ex> in = syms_;
+    std::vector<double> x, dx;
+    for (auto& v : exact_) {
+      auto [d, err] = rounded(v);
+      x.push_back(d);
+      dx.push_back(err);
+    }
+    try {
+      for (auto& [s, part] : p.parts) {
+        in.push_back(s);
+        auto [d, err] = rounded(part.subs(own));  // GiNaC's exact arithmetic: 2L − 3d = 0 exactly
+        x.push_back(d);
+        dx.push_back(err);
+      }
+      Tape t = Tape::compile(f, in);
+      Bounded b = t.bounded(x.data(), dx.data());
+      // the error estimate decides; the stable form (tried first) wins a tie
+      double rel = b.value != 0 ? b.bound / std::fabs(b.value) : b.bound;
+      if (!(rel >= best) && !std::isnan(rel)) {
+        best = rel;
+        fast_tape_ = std::move(t);
+        fast_x_ = x;
+        fast_dx_ = dx;
+        exmap back;
+        for (auto& [s, part] : p.parts) back[s] = part;
+        fast_form_ = f.subs(back);
+      }
+    } catch (const std::exception&) {
+      // a function the tape has no instruction for, or a part undefined at the values
+      // (a division by zero): not this candidate
+    }
+  }
+}
+
+std::optional<Bounded> Evaluator::fast() const {
+  if (!fast_tape_) return std::nullopt;
+  return fast_tape_->bounded(fast_x_.data(), fast_dx_.data());
+}
+
+std::optional<Bounded> Evaluator::naive() const {
+  try {
+    Tape t = Tape::compile(e_, syms_);
+    std::vector<double> x, dx;
+    for (auto& v : exact_) {
+      auto [d, err] = rounded(v);
+      x.push_back(d);
+      dx.push_back(err);
+    }
+    return t.bounded(x.data(), dx.data());
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+std::optional<numeric> Evaluator::at(long working) const {
+  if (!precise_tape_) {
+    // no tape for this form: GiNaC's own evaluation at that precision
+    exmap m;
+    for (std::size_t i = 0; i < syms_.size(); ++i) m[syms_[i]] = exact_[i];
+    return evaluate(e_, m, static_cast<int>(working));
+  }
+  std::vector<cln::cl_R> x;
+  for (auto& v : exact_) {
+    auto c = to_cln(v, working);
+    if (!c) return std::nullopt;
+    x.push_back(*c);
+  }
+  auto r = precise_tape_->precise(x, working);
+  if (!r) return std::nullopt;
+  return numeric(cln::cl_N(*r));
+}
+
+// N digits: evaluate at p and at a higher precision until both round to the same N digits.
+std::optional<Precise> Evaluator::digits(int n) const {
+  // an exact value first: GiNaC's exact arithmetic (sin(π) = 0, √4 = 2, 2L − 3d = 0)
+  try {
+    exmap m;
+    for (std::size_t i = 0; i < syms_.size(); ++i) m[syms_[i]] = exact_[i];
+    ex v = e_.subs(m);
+    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) return Precise{ex_to<numeric>(v), 0, true, false, 0};
+  } catch (const std::exception&) {
+    return std::nullopt;  // a division by zero at the exact values
+  }
+  long p = n + 10;
+  auto prev = at(p);
+  if (!prev) return std::nullopt;
+  if (prev->is_rational()) return Precise{*prev, 0, true, false, 0};
+  int shrinking = 0;
+  const long limit = std::max<long>(20000, 8L * n);
+  while (p < limit) {
+    long q = std::min(limit, p + std::max(20L, p / 2));
+    auto cur = at(q);
+    if (!cur) return std::nullopt;
+    if (!prev->is_zero() && !cur->is_zero() && round_sig(*prev, n) == round_sig(*cur, n)) return Precise{*cur, q, false, false, 0};
+    if (prev->is_zero() && cur->is_zero()) return Precise{*cur, q, false, false, 0};
+    // a value that is zero in exact arithmetic comes out as noise of the working precision,
+    // and the noise falls as the precision rises
+    double lp = std::log10(std::fabs(prev->to_double()) + 1e-300), lc = std::log10(std::fabs(cur->to_double()) + 1e-300);
+    if (cur->is_zero() || lc < lp - 0.5 * static_cast<double>(q - p)) ++shrinking;
+    else shrinking = 0;
+    if (shrinking >= 3 || (cur->is_zero() && shrinking >= 1))
+      return Precise{0, q, false, true, std::max(std::fabs(cur->to_double()), std::pow(10.0, -static_cast<double>(std::min(q, 300L))))};
+    prev = cur;
+    p = q;
+  }
+  return std::nullopt;
+}
+
+}  // namespace kinergy::numerics

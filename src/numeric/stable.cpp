@@ -1,0 +1,135 @@
+#include "kinergy/numeric/stable.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace kinergy::numerics {
+
+using namespace GiNaC;
+
+namespace {
+
+std::vector<ex> factors(const ex& t) {
+  if (is_a<mul>(t)) return std::vector<ex>(t.begin(), t.end());
+  return {t};
+}
+
+bool same(const ex& a, const ex& b) { return a.is_equal(b) || (a - b).expand().is_zero(); }
+
+bool is_fn(const ex& f, const char* name) { return is_a<function>(f) && ex_to<function>(f).get_name() == name; }
+
+bool is_sqrt(const ex& f) { return is_a<power>(f) && f.op(1).is_equal(numeric(1, 2)); }
+bool is_square(const ex& f) { return is_a<power>(f) && f.op(1).is_equal(2); }
+
+/// t = A·g for a factor g of t with `pred`: the pairs (g, A).
+template <class Pred>
+std::vector<std::pair<ex, ex>> split_by(const ex& t, Pred pred) {
+  std::vector<std::pair<ex, ex>> out;
+  for (const ex& g : factors(t))
+    if (pred(g)) out.emplace_back(g, t / g);
+  return out;
+}
+
+/// The rewrite of ti + tj when the pair is one of the cancelling patterns.
+std::optional<ex> pair_rewrite(const ex& ti, const ex& tj) {
+  // tj = B·f with f = cos x, sin x, √b or q²
+  for (const ex& f : factors(tj)) {
+    const ex B = tj / f;  // tj = B f
+    const ex A = -B;      // the pattern A (… − f): ti must be built on A
+    if (is_fn(f, "cos")) {
+      const ex& x = f.op(0);
+      // A − A cos x = 2A sin²(x/2)
+      if (same(ti, A)) return 2 * A * pow(sin(x / 2), 2);
+      // A + A cos x = 2A cos²(x/2)   (here ti = B)
+      if (same(ti, B)) return 2 * B * pow(cos(x / 2), 2);
+      // A cos y − A cos x = −2A sin((y+x)/2) sin((y−x)/2)
+      for (auto& [g, C] : split_by(ti, [](const ex& g) { return is_fn(g, "cos"); }))
+        if (same(C, A) && !g.op(0).is_equal(x)) {
+          const ex& y = g.op(0);
+          return -2 * A * sin((y + x).expand() / 2) * sin((y - x).expand() / 2);
+        }
+    }
+    if (is_fn(f, "sin")) {
+      const ex& x = f.op(0);
+      // A − A sin x = 2A sin²(π/4 − x/2)
+      if (same(ti, A)) return 2 * A * pow(sin(Pi / 4 - x / 2), 2);
+      // A + A sin x = 2A cos²(π/4 − x/2)
+      if (same(ti, B)) return 2 * B * pow(cos(Pi / 4 - x / 2), 2);
+      // A sin y − A sin x = 2A cos((y+x)/2) sin((y−x)/2)
+      for (auto& [g, C] : split_by(ti, [](const ex& g) { return is_fn(g, "sin"); }))
+        if (same(C, A) && !g.op(0).is_equal(x)) {
+          const ex& y = g.op(0);
+          return 2 * A * cos((y + x).expand() / 2) * sin((y - x).expand() / 2);
+        }
+    }
+    if (is_sqrt(f)) {
+      const ex& b = f.op(0);
+      // A √a − A √b = A (a − b)/(√a + √b)
+      for (auto& [g, C] : split_by(ti, is_sqrt))
+        if (same(C, A) && !g.is_equal(f)) {
+          const ex& a = g.op(0);
+          return A * (a - b).expand() / (sqrt(a) + sqrt(b));
+        }
+      // A c − A √b with c > 0 a number: c = √(c²)
+      ex c = ti / A;
+      if (is_a<numeric>(c) && ex_to<numeric>(c).is_positive())
+        return A * (pow(c, 2) - b).expand() / (c + sqrt(b));
+    }
+    if (is_square(f)) {
+      const ex& q = f.op(0);
+      // A p² − A q² = A (p − q)(p + q)
+      for (auto& [g, C] : split_by(ti, is_square))
+        if (same(C, A) && !g.is_equal(f)) {
+          const ex& p = g.op(0);
+          return A * (p - q) * (p + q);
+        }
+      // A c − A q² with c = p² for a rational p: 1 − e² = (1 − e)(1 + e)
+      ex c = ti / A;
+      if (is_a<numeric>(c) && ex_to<numeric>(c).is_positive()) {
+        ex p = sqrt(c);
+        if (is_a<numeric>(p) && ex_to<numeric>(p).is_rational()) return A * (p - q) * (p + q);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+ex rewrite_sum(const ex& s) {
+  std::vector<ex> terms(s.begin(), s.end());
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    for (std::size_t i = 0; i < terms.size() && !changed; ++i)
+      for (std::size_t j = 0; j < terms.size() && !changed; ++j) {
+        if (i == j) continue;
+        if (auto r = pair_rewrite(terms[i], terms[j])) {
+          // the pair becomes one product; the other terms stay
+          std::vector<ex> rest;
+          for (std::size_t k = 0; k < terms.size(); ++k)
+            if (k != i && k != j) rest.push_back(terms[k]);
+          rest.push_back(*r);
+          terms = rest;
+          changed = terms.size() > 1;
+        }
+      }
+  }
+  ex out = 0;
+  for (auto& t : terms) out += t;
+  return out;
+}
+
+struct Rewrite : map_function {
+  ex operator()(const ex& e) override {
+    ex m = e.map(*this);  // children first
+    return is_a<add>(m) ? rewrite_sum(m) : m;
+  }
+};
+
+}  // namespace
+
+ex stable_form(const ex& e) {
+  Rewrite r;
+  return r(e);
+}
+
+}  // namespace kinergy::numerics
