@@ -162,8 +162,8 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
     // the double's digits are right when the whole interval value ± bound rounds to them
     if (auto f = ev.fast(); f && std::isfinite(f->value) && std::isfinite(f->bound)) {
       auto exact_double = [](double d) { return numeric(cln::cl_N(cln::rational(cln::cl_DF(d)))); };
-      numeric lo = numerics::round_sig(exact_double(f->value - 2 * f->bound), digits);
-      numeric hi = numerics::round_sig(exact_double(f->value + 2 * f->bound), digits);
+      numeric lo = numerics::round_sig(exact_double(f->value - f->bound), digits);
+      numeric hi = numerics::round_sig(exact_double(f->value + f->bound), digits);
       if (f->bound == 0 || lo == hi)
         return Value{exact_double(f->value), Value::How::Double, 0, f->bound};
     }

@@ -30,23 +30,68 @@ bool rational_in(const ex& e, const exmap& values) {
 }
 
 /// The largest subexpressions of e that are rational in the inputs (and not a single symbol or
-/// number), replaced by new symbols; `parts` receives symbol → subexpression.
+/// number), replaced by new symbols; `parts` receives symbol → subexpression. In a sum or a
+/// product that is not rational as a whole, its rational terms (factors) make one part.
 struct Promote : map_function {
   const exmap& values;
   std::map<ex, ex, ex_is_less> seen;
   std::vector<std::pair<ex, ex>> parts;
   explicit Promote(const exmap& v) : values(v) {}
+  ex part(const ex& e) {
+    if (is_a<symbol>(e) || is_a<numeric>(e) || is_a<constant>(e)) return e;
+    auto it = seen.find(e);
+    if (it != seen.end()) return it->second;
+    symbol s("exact" + std::to_string(parts.size()));
+    seen[e] = s;
+    parts.emplace_back(s, e);
+    return s;
+  }
   ex operator()(const ex& e) override {
     if (is_a<symbol>(e) || is_a<numeric>(e) || is_a<constant>(e)) return e;
-    if (rational_in(e, values)) {
-      auto it = seen.find(e);
-      if (it != seen.end()) return it->second;
-      symbol s("exact" + std::to_string(parts.size()));
-      seen[e] = s;
-      parts.emplace_back(s, e);
-      return s;
+    if (rational_in(e, values)) return part(e);
+    if (is_a<add>(e) || is_a<mul>(e)) {
+      const bool sum = is_a<add>(e);
+      ex exact = sum ? 0 : 1, rest = sum ? 0 : 1;
+      int n_exact = 0;
+      for (const ex& x : e) {
+        if (rational_in(x, values)) {
+          exact = sum ? exact + x : exact * x;
+          ++n_exact;
+        } else {
+          ex y = (*this)(x);
+          rest = sum ? rest + y : rest * y;
+        }
+      }
+      if (n_exact >= 2) return sum ? part(exact) + rest : part(exact) * rest;
+      return sum ? (*this)(exact) + rest : (*this)(exact) * rest;
     }
     return e.map(*this);
+  }
+};
+
+/// √a √b / √c → √(ab/c) in each product, where every radicand is positive at the values
+/// (so the identity holds there): one root, one rounding, instead of three.
+struct MergeRoots : map_function {
+  const exmap& values;
+  explicit MergeRoots(const exmap& v) : values(v) {}
+  bool positive(const ex& b) const {
+    auto v = evaluate(b, values, 30);
+    return v && v->is_positive();
+  }
+  ex operator()(const ex& e) override {
+    ex m = e.map(*this);
+    if (!is_a<mul>(m)) return m;
+    ex inside = 1, rest = 1;
+    int roots = 0;
+    for (const ex& x : m) {
+      if (is_a<power>(x) && (x.op(1).is_equal(numeric(1, 2)) || x.op(1).is_equal(numeric(-1, 2))) && positive(x.op(0))) {
+        inside *= x.op(1).is_equal(numeric(1, 2)) ? x.op(0) : 1 / x.op(0);
+        ++roots;
+      } else {
+        rest *= x;
+      }
+    }
+    return roots >= 2 ? rest * sqrt(inside) : m;
   }
 };
 
@@ -82,7 +127,8 @@ Evaluator::Evaluator(const ex& e, const exmap& values) : e_(e) {
   for (std::size_t i = 0; i < syms_.size(); ++i) own[syms_[i]] = exact_[i];
   // the candidates for double evaluation, each with its exact parts
   double best = std::numeric_limits<double>::infinity();
-  for (const ex& form : {stable_, e_}) {
+  MergeRoots merge(own);
+  for (const ex& form : {stable_, merge(stable_), e_}) {
     Promote p(own);
     ex f = p(form);
     std::vector<ex> in = syms_;

@@ -246,10 +246,10 @@ Bounded Tape::bounded(const double* x, const double* dx) const {
         e += 2 * u * std::fabs(v);
         break;
       }
-      // |√(a+δ) − √a| = |δ|/(√(a+δ) + √a) ≤ |δ|/√a, and ≤ √|δ| always
+      // |√(a+δ) − √a| = |δ|/(√(a+δ) + √a) ≤ |δ|/(√(a−|δ|) + √a), and ≤ √|δ| always
       case Op::Sqrt:
         v = std::sqrt(a);
-        e = (a > ea ? std::min(ea / v, std::sqrt(ea)) : std::sqrt(a + ea) + v) + u * v;
+        e = (a > ea ? std::min(ea / (std::sqrt(a - ea) + v), std::sqrt(ea)) : std::sqrt(a + ea) + v) + u * v;
         break;
       // |1/√(a+δ) − 1/√a| ≤ |δ| / (2 (a−|δ|)^(3/2))
       case Op::Rsqrt:

@@ -10,6 +10,8 @@
 // output is reproducible.
 #include <catch2/catch.hpp>
 
+#include "../support/helpers.hpp"
+
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -27,29 +29,6 @@ std::vector<std::string> scenes() {
   for (auto& e : fs::recursive_directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "derivations"))
     if (e.path().extension() == ".yaml") out.push_back(fs::relative(e.path(), KINERGY_SOURCE_DIR).generic_string());
   std::sort(out.begin(), out.end());
-  return out;
-}
-
-std::string shell_quoted(const std::string& s) {
-  std::string o = "'";
-  for (char c : s) o += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return o + "'";
-}
-
-/// Standard output of `kinergy ARGS` run in the source directory; exit status in `status`.
-std::string run(const std::string& args, int& status) {
-  std::string cmd = "cd " + shell_quoted(KINERGY_SOURCE_DIR) + " && " + shell_quoted(KINERGY_CLI) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) {
-    status = -1;
-    return "";
-  }
-  std::string out;
-  char buf[8192];
-  std::size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-  int st = pclose(p);
-  status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return out;
 }
 
@@ -80,7 +59,7 @@ bool approving() {
 
 void compare(const std::string& scene, const std::string& args, const std::string& ext) {
   int status = 0;
-  std::string now = run(args, status);
+  std::string now = kt::run_cli(args, status);
   INFO("kinergy " << args);
   REQUIRE(status == 0);
   fs::path approved = fs::path(KINERGY_SOURCE_DIR) / fs::path(scene).replace_extension(ext);
@@ -104,8 +83,8 @@ TEST_CASE("approval: every derivation prints its approved text and LaTeX", "[app
   REQUIRE(files.size() >= 12);
   for (auto& f : files) {
     DYNAMIC_SECTION(f) {
-      compare(f, "derive " + shell_quoted(f), ".approved.txt");
-      compare(f, "derive " + shell_quoted(f) + " --latex -", ".approved.tex");
+      compare(f, "derive " + kt::shell_quoted(f), ".approved.txt");
+      compare(f, "derive " + kt::shell_quoted(f) + " --latex -", ".approved.tex");
     }
   }
 }

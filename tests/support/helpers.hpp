@@ -1,7 +1,10 @@
 /// @file helpers.hpp  Small helpers shared by the physics tests (header only: tests/CMakeLists.txt
 /// globs *.cpp, so this file adds no translation unit).
 #pragma once
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <random>
 #include <set>
@@ -186,6 +189,30 @@ inline ChildResult in_child(const std::function<bool(std::string&)>& f, int seco
   else if (WEXITSTATUS(st) == 1) r.status = ChildResult::Status::Failed;
   else r.status = ChildResult::Status::Threw;
   return r;
+}
+
+/// s in single quotes for the shell.
+inline std::string shell_quoted(const std::string& s) {
+  std::string o = "'";
+  for (char c : s) o += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return o + "'";
+}
+
+/// Standard output and error of `kinergy ARGS` run in the source directory; exit status in `status`.
+inline std::string run_cli(const std::string& args, int& status) {
+  std::string cmd = "cd " + shell_quoted(KINERGY_SOURCE_DIR) + " && " + shell_quoted(KINERGY_CLI) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) {
+    status = -1;
+    return "";
+  }
+  std::string out;
+  char buf[8192];
+  std::size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+  int st = pclose(p);
+  status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return out;
 }
 
 }  // namespace kt

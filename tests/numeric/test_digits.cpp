@@ -1,0 +1,95 @@
+// Values as `kinergy solve` gives them: the compiled double by default, N guaranteed digits with
+// --digits N; both against GiNaC's own evaluation of the same closed form at 100 digits (another
+// code path), for every derivation.
+#include <catch2/catch.hpp>
+
+#include "../support/helpers.hpp"
+#include "kinergy/common/error.hpp"
+#include "kinergy/problem.hpp"
+#include "kinergy/scene/scene.hpp"
+
+using namespace GiNaC;
+namespace fs = std::filesystem;
+
+TEST_CASE("kinergy solve --digits 50 on the sliding rod: all 50 digits, and the working precision",
+          "[numeric][digits][cli]") {
+  int status = 0;
+  std::string out = kt::run_cli("solve derivations/energy/sliding_rod.yaml --digits 50", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= 3.5017852589786256052372546604589676703245542931001 rad/s"));
+  CHECK_THAT(out, Catch::Contains("(working precision "));
+  // the default: 15 digits, nothing added to the line
+  out = kt::run_cli("solve derivations/energy/sliding_rod.yaml", status);
+  CHECK_THAT(out, Catch::Contains("= 3.50178525897863 rad/s\n"));
+  // JSON says how each value was obtained
+  out = kt::run_cli("solve derivations/impact/centre_of_percussion.yaml --json", status);
+  CHECK_THAT(out, Catch::Contains("\"evaluation\": \"double, |error| <= 0\""));
+}
+
+TEST_CASE("every derivation: default values and --digits 40 agree with 100-digit GiNaC evaluation",
+          "[numeric][digits][derivations]") {
+  int doubles = 0, values = 0;
+  for (const auto& f : kt::derivation_scenes()) {
+    kinergy::Solution s = kinergy::solve_file(f);
+    auto env = s.model.numeric_environment();
+    for (auto& r : s.results) {
+      if (!r.si) continue;
+      INFO(fs::path(f).filename().string() << ": " << r.name << " = " << r.closed);
+      auto ref = kinergy::numerics::evaluate(r.closed / r.unit_factor, env, 100);
+      REQUIRE(ref);
+      auto dflt = r.evaluate(env, 15, true);
+      REQUIRE(dflt);
+      CHECK(kinergy::numerics::format(dflt->v, 15) == kinergy::numerics::format(*ref, 15));
+      if (dflt->how == kinergy::Value::How::Double) ++doubles;
+      auto d40 = r.evaluate(env, 40, false);
+      REQUIRE(d40);
+      CHECK(d40->how != kinergy::Value::How::Double);
+      CHECK(kinergy::numerics::format(d40->v, 40) == kinergy::numerics::format(*ref, 40));
+      ++values;
+    }
+  }
+  CHECK(values >= 30);
+  // the compiled double decides most values by itself (the rest fall near a rounding boundary
+  // of the 15th digit, where its error bound cannot tell which way to round)
+  CHECK(doubles * 2 > values);
+}
+
+TEST_CASE("a numeric root is not reported to more digits than it was refined to", "[numeric][digits]") {
+  auto s = kinergy::solve_scene(kinergy::scene::load_string(R"(title: torsion spring wound far
+parameters:
+  m: 2 kg
+  L: 1 m
+  k: 10 N*m/rad
+  g: 9.81 m/s^2
+  w1: 46 rad/s
+points:
+  O: [0, 0]
+coordinates:
+  theta: rad
+bodies:
+  bar:
+    mass: m
+    inertia: {slender_rod: L}
+    position: [L/2*cos(theta), L/2*sin(theta)]
+    angle: theta
+    points: {O: [-L/2, 0]}
+effects:
+  gravity: {g: g}
+  pin: {pin: [O, bar.O]}
+  coil: {torsion_spring: bar, k: k}
+states:
+  1: {theta: 0, theta_dot: w1}
+  2: {theta_dot: 0}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  theta2: {value: theta@2, root: {in: [11, 13]}, unit: rad}
+)", "wound.yaml"));
+  const kinergy::Result& r = s.results.at(0);
+  REQUIRE(!r.closed_form);
+  auto env = s.model.numeric_environment();
+  CHECK(r.evaluate(env, kinergy::kRootDigits, false));
+  CHECK_THROWS_WITH(r.evaluate(env, kinergy::kRootDigits + 5, false),
+                    Catch::Contains("wound.yaml:") && Catch::Contains("'theta2' is a numeric root") &&
+                        Catch::Contains("--digits 35 or fewer"));
+}
