@@ -1088,7 +1088,8 @@ private:
       }
       if (!is_a<numeric>(gx) || !is_a<numeric>(gy)) return;  // symbolic parameters: trust it
       double d = std::hypot(ex_to<numeric>(gx).to_double(), ex_to<numeric>(gy).to_double());
-      if (d > 1e-9)
+      // apart, against the size of the positions themselves (a scene may be a millimetre across)
+      if (!numerics::negligible(dx, m).value_or(true) || !numerics::negligible(dy, m).value_or(true))
         throw SceneError(pos, "pin '" + e.name + "': " + e.a.text + " and " + e.b.text +
                                   " do not coincide (apart by " + numerics::format(numeric(d), 6) + " m at some position)",
                          "fix the body's position/angle or the point so the pinned points stay together");

@@ -23,6 +23,19 @@ std::optional<GiNaC::numeric> evaluate(const ex& e, const exmap& values, int dig
   return out;
 }
 
+std::optional<bool> negligible(const ex& e, const exmap& values, int digits) {
+  auto v = evaluate(e, values, digits);
+  if (!v) return std::nullopt;
+  if (v->is_zero()) return true;
+  // the largest term of the expanded form sets the scale of what cancels
+  numeric scale = abs(*v);
+  ex x = e.expand();
+  if (is_a<add>(x))
+    for (const ex& t : x)
+      if (auto tv = evaluate(t, values, digits)) scale = std::max(scale, abs(*tv));
+  return abs(*v) <= scale * pow(numeric(10), 12 - digits);
+}
+
 namespace {
 
 // Decimal digits and exponent of v: v = ±0.d1d2d3… × 10^exp10.

@@ -30,6 +30,35 @@ std::vector<std::pair<ex, ex>> split_by(const ex& t, Pred pred) {
   return out;
 }
 
+/// sin and cos of r + kπ/2 as ± sin r or ± cos r: the quarter turns leave the argument exactly,
+/// so a small r keeps its relative precision (cos(π/2 + r) = −sin r, not cos of a rounded sum).
+struct ReduceQuarterTurns : map_function {
+  ex operator()(const ex& e) override {
+    ex m = e.map(*this);
+    const bool is_sin = is_fn(m, "sin"), is_cos = is_fn(m, "cos");
+    if (!(is_sin || is_cos) || !is_a<add>(m.op(0))) return m;
+    const ex arg = m.op(0);
+    const ex k = arg.coeff(Pi, 1) * 2;  // the argument holds (k/2) π
+    if (!is_a<numeric>(k) || !ex_to<numeric>(k).is_integer() || k.is_zero()) return m;
+    const ex r = (arg - k * Pi / 2).expand();
+    if (r.has(Pi)) return m;
+    const long q = ((ex_to<numeric>(k).to_long() % 4) + 4) % 4;  // quarter turns, mod a full turn
+    // sin(r + qπ/2) = sin r, cos r, −sin r, −cos r;  cos(r + qπ/2) = cos r, −sin r, −cos r, sin r
+    const long shift = is_sin ? q : q + 1;
+    switch (shift % 4) {
+      case 0: return sin(r);
+      case 1: return cos(r);
+      case 2: return -sin(r);
+      default: return -cos(r);
+    }
+  }
+};
+
+ex reduce_quarter_turns(const ex& e) {
+  ReduceQuarterTurns f;
+  return f(e);
+}
+
 /// The rewrite of ti + tj when the pair is one of the cancelling patterns.
 std::optional<ex> pair_rewrite(const ex& ti, const ex& tj) {
   // tj = B·f with f = cos x, sin x, √b or q²
@@ -42,6 +71,9 @@ std::optional<ex> pair_rewrite(const ex& ti, const ex& tj) {
       if (same(ti, A)) return 2 * A * pow(sin(x / 2), 2);
       // A + A cos x = 2A cos²(x/2)   (here ti = B)
       if (same(ti, B)) return 2 * B * pow(cos(x / 2), 2);
+      // A sin x − A cos x = √2 A sin(x − π/4)
+      for (auto& [g, C] : split_by(ti, [](const ex& g) { return is_fn(g, "sin"); }))
+        if (g.op(0).is_equal(x) && same(C, A)) return reduce_quarter_turns(sqrt(ex(2)) * A * sin((x - Pi / 4).expand()));
       // A cos y − A cos x = −2A sin((y+x)/2) sin((y−x)/2)
       for (auto& [g, C] : split_by(ti, [](const ex& g) { return is_fn(g, "cos"); }))
         if (same(C, A) && !g.op(0).is_equal(x)) {
@@ -55,12 +87,22 @@ std::optional<ex> pair_rewrite(const ex& ti, const ex& tj) {
       if (same(ti, A)) return 2 * A * pow(sin(Pi / 4 - x / 2), 2);
       // A + A sin x = 2A cos²(π/4 − x/2)
       if (same(ti, B)) return 2 * B * pow(cos(Pi / 4 - x / 2), 2);
+      // A cos x − A sin x = √2 A cos(x + π/4)
+      for (auto& [g, C] : split_by(ti, [](const ex& g) { return is_fn(g, "cos"); }))
+        if (g.op(0).is_equal(x) && same(C, A)) return reduce_quarter_turns(sqrt(ex(2)) * A * cos((x + Pi / 4).expand()));
       // A sin y − A sin x = 2A cos((y+x)/2) sin((y−x)/2)
       for (auto& [g, C] : split_by(ti, [](const ex& g) { return is_fn(g, "sin"); }))
         if (same(C, A) && !g.op(0).is_equal(x)) {
           const ex& y = g.op(0);
           return 2 * A * cos((y + x).expand() / 2) * sin((y - x).expand() / 2);
         }
+    }
+    // a pair A sin x + A cos x (no cancellation of its own) becomes one term, which may then
+    // cancel against a third: √2 + sin x − cos x
+    if (is_fn(f, "cos")) {
+      const ex& x = f.op(0);
+      for (auto& [g, C] : split_by(ti, [](const ex& g) { return is_fn(g, "sin"); }))
+        if (g.op(0).is_equal(x) && same(C, B)) return reduce_quarter_turns(sqrt(ex(2)) * B * sin((x + Pi / 4).expand()));
     }
     if (is_sqrt(f)) {
       const ex& b = f.op(0);
@@ -120,7 +162,7 @@ ex rewrite_sum(const ex& s) {
 
 struct Rewrite : map_function {
   ex operator()(const ex& e) override {
-    ex m = e.map(*this);  // children first
+    ex m = reduce_quarter_turns(e.map(*this));  // children first
     return is_a<add>(m) ? rewrite_sum(m) : m;
   }
 };

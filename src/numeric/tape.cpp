@@ -13,6 +13,18 @@ namespace kinergy::numerics {
 
 using namespace GiNaC;
 
+namespace {
+
+// aⁿ by repeated squaring (the same in the tape, its batch and its generated C++)
+inline double powi(double a, int n) {
+  double p = 1, b = n < 0 ? 1 / a : a;
+  for (unsigned k = static_cast<unsigned>(n < 0 ? -n : n); k; k >>= 1, b *= b)
+    if (k & 1) p *= b;
+  return p;
+}
+
+}  // namespace
+
 class TapeBuilder {
 public:
   TapeBuilder(Tape& t, const std::vector<ex>& inputs) : t_(t) {
@@ -110,26 +122,33 @@ Tape Tape::compile(const ex& e, const std::vector<ex>& inputs) {
   TapeBuilder b(t, inputs);
   t.out_ = b.node(e);
   t.reg_.resize(t.code_.size());
+  for (std::size_t i = 0; i < t.code_.size(); ++i) {
+    const Ins& in = t.code_[i];
+    const auto reg = static_cast<std::uint32_t>(i);
+    if (in.op == Op::Const) t.reg_[i] = in.c;
+    else if (in.op == Op::Input) t.inputs_at_.emplace_back(reg, static_cast<std::uint32_t>(in.a));
+    else t.work_.push_back(reg);
+  }
   t.err_.resize(t.code_.size());
   return t;
 }
 
 double Tape::operator()(const double* x) const {
-  double* r = reg_.data();
-  for (std::size_t i = 0; i < code_.size(); ++i) {
+  double* r = reg_.data();  // the constants' registers were filled by compile()
+  for (auto [reg, input] : inputs_at_) r[reg] = x[input];
+  for (std::uint32_t i : work_) {
     const Ins& in = code_[i];
-    const bool leaf = in.op == Op::Input || in.op == Op::Const;
-    const double a = !leaf && in.a >= 0 ? r[in.a] : 0, b = in.b >= 0 ? r[in.b] : 0;
+    const double a = r[in.a], b = in.b >= 0 ? r[in.b] : 0;
     switch (in.op) {
-      case Op::Const: r[i] = in.c; break;
-      case Op::Input: r[i] = x[in.a]; break;
+      case Op::Const:
+      case Op::Input: break;  // not in work_
       case Op::Add: r[i] = a + b; break;
       case Op::Mul: r[i] = a * b; break;
       case Op::Div: r[i] = a / b; break;
       case Op::Neg: r[i] = -a; break;
       case Op::Sq: r[i] = a * a; break;
       case Op::Cube: r[i] = a * a * a; break;
-      case Op::Powi: r[i] = std::pow(a, in.c); break;
+      case Op::Powi: r[i] = powi(a, static_cast<int>(in.c)); break;
       case Op::Sqrt: r[i] = std::sqrt(a); break;
       case Op::Rsqrt: r[i] = 1 / std::sqrt(a); break;
       case Op::Pow: r[i] = std::pow(a, b); break;
@@ -174,7 +193,7 @@ void Tape::batch(const double* x, std::size_t n, double* out) const {
       case Op::Neg: each([&](std::size_t k) { return -a[k]; }); break;
       case Op::Sq: each([&](std::size_t k) { return a[k] * a[k]; }); break;
       case Op::Cube: each([&](std::size_t k) { return a[k] * a[k] * a[k]; }); break;
-      case Op::Powi: each([&](std::size_t k) { return std::pow(a[k], in.c); }); break;
+      case Op::Powi: each([&](std::size_t k) { return powi(a[k], static_cast<int>(in.c)); }); break;
       case Op::Sqrt: each([&](std::size_t k) { return std::sqrt(a[k]); }); break;
       case Op::Rsqrt: each([&](std::size_t k) { return 1 / std::sqrt(a[k]); }); break;
       case Op::Pow: each([&](std::size_t k) { return std::pow(a[k], b[k]); }); break;
@@ -239,11 +258,11 @@ Bounded Tape::bounded(const double* x, const double* dx) const {
       case Op::Cube: v = a * a * a; e = 3 * A * A * ea + 3 * A * ea * ea + ea * ea * ea + 2 * u * std::fabs(v); break;
       // |(a+δ)ⁿ − aⁿ| ≤ |n| max(|a|±|δ|)^(n−1) |δ|
       case Op::Powi: {
-        v = std::pow(a, in.c);
+        v = powi(a, static_cast<int>(in.c));
         const double n = std::fabs(in.c);
         const double far = in.c > 0 ? A + ea : A - ea;  // where |x^(n−1)| is largest on the interval
         e = far > 0 ? n * std::pow(far, in.c - 1) * ea : inf;
-        e += 2 * u * std::fabs(v);
+        e += (2 * std::log2(n) + 2) * u * std::fabs(v);  // repeated squaring: ≤ 2 log₂|n| + 1 roundings
         break;
       }
       // |√(a+δ) − √a| = |δ|/(√(a+δ) + √a) ≤ |δ|/(√(a−|δ|) + √a), and ≤ √|δ| always
@@ -427,6 +446,53 @@ std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits) const
   }
   if (out_ < 0) return cl_R(0);
   return r[static_cast<std::size_t>(out_)];
+}
+
+std::string Tape::cpp(const std::string& name) const {
+  std::ostringstream os;
+  auto r = [](std::int32_t i) { return "r" + std::to_string(i); };
+  os << "#include <cmath>\n"
+     << "static inline double kinergy_powi(double a, int n) {\n"
+     << "  double p = 1, b = n < 0 ? 1 / a : a;\n"
+     << "  for (unsigned k = static_cast<unsigned>(n < 0 ? -n : n); k; k >>= 1, b *= b) if (k & 1) p *= b;\n"
+     << "  return p;\n}\n"
+     << "extern \"C\" double " << name << "(const double* x) {\n";
+  for (std::size_t i = 0; i < code_.size(); ++i) {
+    const Ins& in = code_[i];
+    const std::string a = in.a >= 0 ? r(in.a) : "", b = in.b >= 0 ? r(in.b) : "";
+    std::string v;
+    char hex[64];
+    switch (in.op) {
+      case Op::Const: std::snprintf(hex, sizeof hex, "%a", in.c); v = hex; break;
+      case Op::Input: v = "x[" + std::to_string(in.a) + "]"; break;
+      case Op::Add: v = a + " + " + b; break;
+      case Op::Mul: v = a + " * " + b; break;
+      case Op::Div: v = a + " / " + b; break;
+      case Op::Neg: v = "-" + a; break;
+      case Op::Sq: v = a + " * " + a; break;
+      case Op::Cube: v = a + " * " + a + " * " + a; break;
+      case Op::Powi: v = "kinergy_powi(" + a + ", " + std::to_string(static_cast<int>(in.c)) + ")"; break;
+      case Op::Sqrt: v = "std::sqrt(" + a + ")"; break;
+      case Op::Rsqrt: v = "1 / std::sqrt(" + a + ")"; break;
+      case Op::Pow: v = "std::pow(" + a + ", " + b + ")"; break;
+      case Op::Sin: v = "std::sin(" + a + ")"; break;
+      case Op::Cos: v = "std::cos(" + a + ")"; break;
+      case Op::Tan: v = "std::tan(" + a + ")"; break;
+      case Op::Asin: v = "std::asin(" + a + ")"; break;
+      case Op::Acos: v = "std::acos(" + a + ")"; break;
+      case Op::Atan: v = "std::atan(" + a + ")"; break;
+      case Op::Atan2: v = "std::atan2(" + a + ", " + b + ")"; break;
+      case Op::Exp: v = "std::exp(" + a + ")"; break;
+      case Op::Log: v = "std::log(" + a + ")"; break;
+      case Op::Abs: v = "std::fabs(" + a + ")"; break;
+      case Op::Sinh: v = "std::sinh(" + a + ")"; break;
+      case Op::Cosh: v = "std::cosh(" + a + ")"; break;
+      case Op::Tanh: v = "std::tanh(" + a + ")"; break;
+    }
+    os << "  const double " << r(static_cast<std::int32_t>(i)) << " = " << v << ";\n";
+  }
+  os << "  return " << (out_ < 0 ? std::string("0") : r(out_)) << ";\n}\n";
+  return os.str();
 }
 
 double to_double(const ex& exact) {

@@ -35,8 +35,8 @@ bool vanishes(const Model& m, const ex& e) {
       at[c.qd] = numeric(u(rng));
     }
     at[m.t] = numeric(u(rng) + 2);
-    ex v = x.subs(at).evalf();
-    if (!is_a<numeric>(v) || std::abs(ex_to<numeric>(v).to_double()) > 1e-12) return false;
+    // zero against the size of its own terms, never against an absolute 1e-12
+    if (!numerics::negligible(x, at).value_or(false)) return false;
   }
   return true;
 }
@@ -436,8 +436,10 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
       auto dx = k.value(before(pb.r.first - pa.r.first)), dy = k.value(before(pb.r.second - pa.r.second));
       if (dx && dy) {
         double d = std::hypot(dx->to_double(), dy->to_double());
-        double scale = 1;
-        if (auto s = k.value(before(pa.r.first))) scale = std::max(scale, std::abs(s->to_double()));
+        // apart, against the size of the positions (no absolute floor: a scene may be tiny)
+        double scale = 0;
+        for (const ex& c : {pa.r.first, pa.r.second, pb.r.first, pb.r.second})
+          if (auto s = k.value(before(c))) scale = std::max(scale, std::abs(s->to_double()));
         if (d > 1e-9 * scale)
           throw SceneError(e.pos, "contact '" + e.name + "': " + e.a.text + " and " + e.b.text + " are " + numerics::format(numeric(d), 6) +
                                       " m apart at state '" + SB + "', so they cannot strike each other there",

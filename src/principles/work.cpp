@@ -2,6 +2,7 @@
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/principles/principles.hpp"
 
 namespace kinergy::principles {
@@ -69,8 +70,7 @@ std::optional<ex> potential(const Model& m, const std::vector<ex>& Q) {
       for (int k = 0; k < 3; ++k) {
         exmap at = env;
         for (auto& c : m.coords) at[c.q] = numeric(u(rng));
-        ex v = d.subs(at).evalf();
-        if (!is_a<numeric>(v) || std::abs(ex_to<numeric>(v).to_double()) > 1e-12) return std::nullopt;
+        if (!numerics::negligible(d, at).value_or(false)) return std::nullopt;
       }
     }
   ex phi = 0;

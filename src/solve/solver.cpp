@@ -23,19 +23,9 @@ std::optional<numeric> num(const ex& e, const exmap& env) { return numerics::eva
 
 /// Zero to working precision (relative to the size of its terms)?
 bool numerically_zero(const ex& e, const exmap& env, bool& known) {
-  known = false;
-  auto v = num(e, env);
-  if (!v) return false;
-  known = true;
-  double scale = 0;
-  ex x = e.expand();
-  if (is_a<add>(x)) {
-    for (std::size_t i = 0; i < x.nops(); ++i)
-      if (auto t = num(x.op(i), env)) scale = std::max(scale, std::abs(t->to_double()));
-  }
-  scale = std::max(scale, std::abs(v->to_double()));
-  if (scale == 0) return true;
-  return std::abs(v->to_double()) <= 1e-28 * scale;
+  auto z = numerics::negligible(e, env, kWork);
+  known = z.has_value();
+  return z.value_or(false);
 }
 
 struct State {

@@ -11,6 +11,11 @@ namespace kinergy::numerics {
 /// @returns nothing when e is not a real number (symbols left, complex, undefined).
 std::optional<GiNaC::numeric> evaluate(const GiNaC::ex& e, const GiNaC::exmap& values, int digits);
 
+/// Is e zero at `values`, judged against the size of its terms: |e| ≤ 10^(12−digits) · max |term|
+/// of its expansion (a lone term: only an exact zero). A small value is not a zero: a couple
+/// of 1e-12 N·m is a couple. @returns nothing when e has no value there.
+std::optional<bool> negligible(const GiNaC::ex& e, const GiNaC::exmap& values, int digits = 40);
+
 /// v rounded to n significant digits, as text: "3.50178525897863", "-0.00125", "1.5e-12".
 std::string format(const GiNaC::numeric& v, int n);
 

@@ -1,6 +1,7 @@
 /// @file evaluator.hpp  The value of one closed form at one set of exact inputs, three ways:
 /// compiled double with an error bound, CLN at a given precision, and N guaranteed digits.
 #pragma once
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,6 +55,7 @@ private:
   std::optional<Tape> fast_tape_;
   std::vector<double> fast_x_, fast_dx_;
   GiNaC::ex fast_form_;
+  mutable std::map<long, std::vector<cln::cl_R>> inputs_;  ///< the inputs converted, per precision
 };
 
 }  // namespace kinergy::numerics

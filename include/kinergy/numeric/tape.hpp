@@ -45,6 +45,10 @@ public:
   /// undefined (division by zero, √ of a negative, log of a non-positive number, …).
   std::optional<cln::cl_R> precise(const std::vector<cln::cl_R>& x, long digits) const;
 
+  /// The tape as straight-line C++: `extern "C" double NAME(const double* x)`, one `const double`
+  /// per instruction, constants as exact hexadecimal literals (for NativeFunction).
+  std::string cpp(const std::string& name) const;
+
   std::size_t instructions() const { return code_.size(); }  ///< after sharing
   std::size_t inputs() const { return n_inputs_; }
 
@@ -63,6 +67,8 @@ private:
   std::vector<double> const_err_;    ///< |double constant − exact constant|
   std::size_t n_inputs_ = 0;
   std::int32_t out_ = -1;  ///< the register holding the value
+  std::vector<std::uint32_t> work_;  ///< the instructions that compute (not constants, not inputs)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> inputs_at_;  ///< (register, input index)
   mutable std::vector<double> reg_;
   mutable std::vector<double> err_;
   mutable std::vector<double> batch_reg_;

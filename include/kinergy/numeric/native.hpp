@@ -1,0 +1,29 @@
+/// @file native.hpp  A tape turned into machine code: its straight-line C++ compiled once by the
+/// C++ compiler kinergy was built with, loaded with dlopen, cached by the hash of the source.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "kinergy/numeric/tape.hpp"
+
+namespace kinergy::numerics {
+
+class NativeFunction {
+public:
+  /// Compile (or take from the cache) the tape's C++. The cache is $KINERGY_CACHE, else
+  /// $XDG_CACHE_HOME/kinergy, else ~/.cache/kinergy.
+  /// @throws std::runtime_error naming the compiler and its first error line when there is no
+  /// compiler or the code does not compile (the tape itself still evaluates).
+  static NativeFunction build(const Tape& t);
+
+  double operator()(const double* x) const { return fn_(x); }
+  /// The compiled function itself, for loops that call it directly.
+  using Fn = double (*)(const double*);
+  Fn function() const { return fn_; }
+
+private:
+  std::shared_ptr<void> handle_;  ///< dlclose when the last copy goes
+  Fn fn_ = nullptr;
+};
+
+}  // namespace kinergy::numerics

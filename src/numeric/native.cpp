@@ -1,0 +1,90 @@
+#include "kinergy/numeric/native.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+
+#ifndef KINERGY_CXX
+#define KINERGY_CXX "c++"
+#endif
+
+namespace kinergy::numerics {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path cache_dir() {
+  if (const char* d = std::getenv("KINERGY_CACHE"); d && *d) return d;
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return fs::path(d) / "kinergy";
+  if (const char* d = std::getenv("HOME"); d && *d) return fs::path(d) / ".cache" / "kinergy";
+  return fs::temp_directory_path() / ("kinergy-" + std::to_string(getuid()));
+}
+
+std::string quoted(const std::string& s) {
+  std::string o = "'";
+  for (char c : s) o += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return o + "'";
+}
+
+std::string first_line(const fs::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.find("error") != std::string::npos) return line;
+  return "no message";
+}
+
+}  // namespace
+
+NativeFunction NativeFunction::build(const Tape& t) {
+  const std::string name = "kinergy_fn";
+  const std::string src = t.cpp(name);
+  char key[32];
+  std::snprintf(key, sizeof key, "%016zx", std::hash<std::string>{}(src + KINERGY_CXX));
+  const fs::path dir = cache_dir();
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  const fs::path so = dir / (std::string("fn_") + key + ".so");
+  if (!fs::exists(so)) {
+    // write, compile to a private name, then rename: two processes never load a half-written file
+    const std::string tag = std::to_string(getpid());
+    const fs::path cpp = dir / (std::string("fn_") + key + "." + tag + ".cpp");
+    const fs::path tmp = dir / (std::string("fn_") + key + "." + tag + ".so");
+    const fs::path log = dir / (std::string("fn_") + key + "." + tag + ".log");
+    {
+      std::ofstream out(cpp);
+      out << src;
+      if (!out) throw std::runtime_error("cannot write " + cpp.string() + " (set KINERGY_CACHE to a writable folder)");
+    }
+    // the flags of a Release build: the same arithmetic as the tape (no fast-math, no contraction)
+    const std::string cmd = quoted(KINERGY_CXX) + " -O2 -ffp-contract=off -fPIC -shared -o " + quoted(tmp.string()) + " " +
+                            quoted(cpp.string()) + " >" + quoted(log.string()) + " 2>&1";
+    int rc = std::system(cmd.c_str());
+    std::string why = rc == 0 ? "" : first_line(log);
+    fs::remove(cpp, ec);
+    fs::remove(log, ec);
+    if (rc != 0) {
+      fs::remove(tmp, ec);
+      throw std::runtime_error(std::string("the C++ compiler ") + KINERGY_CXX + " could not build the evaluator: " + why);
+    }
+    fs::rename(tmp, so, ec);
+    if (ec && !fs::exists(so)) throw std::runtime_error("cannot place " + so.string() + ": " + ec.message());
+  }
+  void* h = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!h) throw std::runtime_error(std::string("cannot load ") + so.string() + ": " + dlerror());
+  NativeFunction f;
+  f.handle_ = std::shared_ptr<void>(h, [](void* p) { dlclose(p); });
+  f.fn_ = reinterpret_cast<Fn>(dlsym(h, name.c_str()));
+  if (!f.fn_) throw std::runtime_error("no function " + name + " in " + so.string());
+  return f;
+}
+
+}  // namespace kinergy::numerics
