@@ -192,18 +192,19 @@ std::optional<numeric> Evaluator::at(long working) const {
     for (std::size_t i = 0; i < syms_.size(); ++i) m[syms_[i]] = exact_[i];
     return evaluate(e_, m, static_cast<int>(working));
   }
-  // the inputs at this precision, converted once (a rational stays exact; π/6 becomes a float)
+  // the inputs as floats of this precision, converted once (exact values are the business of
+  // digits(), which asks GiNaC's exact arithmetic first)
   auto it = inputs_.find(working);
   if (it == inputs_.end()) {
     std::vector<cln::cl_R> x;
     for (auto& v : exact_) {
       auto c = to_cln(v, working);
       if (!c) return std::nullopt;
-      x.push_back(*c);
+      x.push_back(cln::cl_float(*c, cln::float_format(working)));
     }
     it = inputs_.emplace(working, std::move(x)).first;
   }
-  auto r = precise_tape_->precise(it->second, working);
+  auto r = precise_tape_->precise(it->second, working, false);
   if (!r) return std::nullopt;
   return numeric(cln::cl_N(*r));
 }

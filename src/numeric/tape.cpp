@@ -345,7 +345,7 @@ cln::cl_F as_float(const cl_R& x, const cln::float_format_t& f) { return cln::cl
 
 // Rationals stay rationals through +, −, ×, ÷, integer powers, and √ of a perfect square; the
 // first inexact step makes a float of the asked format, and CLN carries that format on.
-std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits) const {
+std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits, bool exact_constants) const {
   const cln::float_format_t f = cln::float_format(digits);
   std::vector<cl_R> r(code_.size());
   for (std::size_t i = 0; i < code_.size(); ++i) {
@@ -358,7 +358,7 @@ std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits) const
       case Op::Const: {
         auto c = to_cln(exact_[static_cast<std::size_t>(in.a)], digits);
         if (!c) return std::nullopt;
-        v = *c;
+        v = exact_constants || !is_rational(*c) ? *c : cl_R(as_float(*c, f));
         break;
       }
       case Op::Input: v = x.at(static_cast<std::size_t>(in.a)); break;

@@ -2,10 +2,15 @@
 // a given precision, N guaranteed digits) and the stable rewrites, against 120-digit values.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <cln/cln.h>
+#include <cstdlib>
+#include <filesystem>
 
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/evaluator.hpp"
+#include "kinergy/numeric/native.hpp"
 #include "kinergy/numeric/stable.hpp"
 #include "kinergy/numeric/tape.hpp"
 
@@ -175,4 +180,30 @@ TEST_CASE("tape: a batch gives the same doubles as one point at a time", "[numer
   std::vector<double> out(37);
   t.batch(X.data(), 37, out.data());
   for (std::size_t k = 0; k < 37; ++k) CHECK(out[k] == t(&X[3 * k]));
+}
+
+TEST_CASE("native code: the tape compiled to machine code gives the tape's doubles", "[numeric][native]") {
+  // one shared cache folder for the test run (the user's own cache is not touched)
+  const auto cache = std::filesystem::temp_directory_path() / ("kinergy-test-cache-" + std::to_string(getpid()));
+  setenv("KINERGY_CACHE", cache.c_str(), 1);
+  realsymbol th("theta"), g("g"), l("l"), e("e");
+  const std::vector<ex> forms = {sqrt(3 * g * sin(th) / l), pow(cos(th), 3) / l - pow(g, -2) + atan2(th, l),
+                                 l * pow(1 - e, 5) * exp(-th) + log(g) * tan(th) + acos(th / 2)};
+  std::vector<double> x = {0.5235987755982988, 9.81, 1.2, 0.7};
+  for (const ex& f : forms) {
+    INFO(f);
+    auto t = kinergy::numerics::Tape::compile(f, {th, g, l, e});
+    auto n = kinergy::numerics::NativeFunction::build(t);
+    CHECK(n(x.data()) == t(x.data()));  // bit for bit: the same operations in the same order
+    // the second build of the same tape comes from the cache
+    auto again = kinergy::numerics::NativeFunction::build(t);
+    CHECK(again(x.data()) == n(x.data()));
+  }
+  std::filesystem::remove_all(cache);
+  // a cache that cannot be written: a clear error, and the tape still evaluates
+  setenv("KINERGY_CACHE", "/proc/kinergy-cannot-write-here", 1);
+  auto t = kinergy::numerics::Tape::compile(sqrt(g), {g});
+  CHECK_THROWS_WITH(kinergy::numerics::NativeFunction::build(t), Catch::Contains("KINERGY_CACHE"));
+  CHECK(t(x.data() + 1) == std::sqrt(9.81));
+  unsetenv("KINERGY_CACHE");
 }

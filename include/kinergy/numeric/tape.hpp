@@ -39,11 +39,12 @@ public:
   /// every instruction): dx[i] bounds the error of input i (0 for an exact input).
   Bounded bounded(const double* x, const double* dx) const;
 
-  /// Value in CLN: rationals stay exact through +, −, ×, ÷ and integer powers, and every
-  /// inexact step works with floats of `digits` decimal digits. The inputs are exact
-  /// rationals or floats of at least that precision. @returns nothing where the form is
-  /// undefined (division by zero, √ of a negative, log of a non-positive number, …).
-  std::optional<cln::cl_R> precise(const std::vector<cln::cl_R>& x, long digits) const;
+  /// Value in CLN with floats of `digits` decimal digits. With `exact_constants`, the tape's
+  /// rational constants stay rationals, and rational inputs with them stay exact through +, −,
+  /// ×, ÷ and integer powers (slower: every step reduces a fraction); otherwise the constants
+  /// are floats of that precision, as the inputs should then be. @returns nothing where the
+  /// form is undefined (division by zero, √ of a negative, log of a non-positive number, …).
+  std::optional<cln::cl_R> precise(const std::vector<cln::cl_R>& x, long digits, bool exact_constants = true) const;
 
   /// The tape as straight-line C++: `extern "C" double NAME(const double* x)`, one `const double`
   /// per instruction, constants as exact hexadecimal literals (for NativeFunction).
