@@ -33,7 +33,7 @@ public:
   /// bound is kept. @returns nothing when no candidate compiles (an unsupported function).
   std::optional<Bounded> fast() const;
 
-  /// CLN directly at `working` decimal digits (exact rationals where the operations allow).
+  /// CLN directly: the tape in floats of `working` decimal digits (inputs rounded to that precision).
   std::optional<GiNaC::numeric> at(long working) const;
 
   /// `digits` correct significant digits: exact when the value is rational; else evaluated at
