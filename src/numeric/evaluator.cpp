@@ -123,25 +123,24 @@ Evaluator::Evaluator(const ex& e, const exmap& values) : e_(e) {
   } catch (const std::invalid_argument&) {
     precise_tape_.reset();
   }
-  exmap own;
-  for (std::size_t i = 0; i < syms_.size(); ++i) own[syms_[i]] = exact_[i];
+  for (std::size_t i = 0; i < syms_.size(); ++i) {
+    values_[syms_[i]] = exact_[i];
+    auto [d, err] = rounded(exact_[i]);  // the inputs as doubles, once for every candidate
+    x_.push_back(d);
+    dx_.push_back(err);
+  }
   // the candidates for double evaluation, each with its exact parts
   double best = std::numeric_limits<double>::infinity();
-  MergeRoots merge(own);
+  MergeRoots merge(values_);
   for (const ex& form : {stable_, merge(stable_), e_}) {
-    Promote p(own);
+    Promote p(values_);
     ex f = p(form);
     std::vector<ex> in = syms_;
-    std::vector<double> x, dx;
-    for (auto& v : exact_) {
-      auto [d, err] = rounded(v);
-      x.push_back(d);
-      dx.push_back(err);
-    }
+    std::vector<double> x = x_, dx = dx_;
     try {
       for (auto& [s, part] : p.parts) {
         in.push_back(s);
-        auto [d, err] = rounded(part.subs(own));  // GiNaC's exact arithmetic: 2L − 3d = 0 exactly
+        auto [d, err] = rounded(part.subs(values_));  // GiNaC's exact arithmetic: 2L − 3d = 0 exactly
         x.push_back(d);
         dx.push_back(err);
       }
@@ -173,13 +172,7 @@ std::optional<Bounded> Evaluator::fast() const {
 std::optional<Bounded> Evaluator::naive() const {
   try {
     Tape t = Tape::compile(e_, syms_);
-    std::vector<double> x, dx;
-    for (auto& v : exact_) {
-      auto [d, err] = rounded(v);
-      x.push_back(d);
-      dx.push_back(err);
-    }
-    return t.bounded(x.data(), dx.data());
+    return t.bounded(x_.data(), dx_.data());
   } catch (const std::invalid_argument&) {
     return std::nullopt;
   }
@@ -188,9 +181,7 @@ std::optional<Bounded> Evaluator::naive() const {
 std::optional<numeric> Evaluator::at(long working) const {
   if (!precise_tape_) {
     // no tape for this form: GiNaC's own evaluation at that precision
-    exmap m;
-    for (std::size_t i = 0; i < syms_.size(); ++i) m[syms_[i]] = exact_[i];
-    return evaluate(e_, m, static_cast<int>(working));
+    return evaluate(e_, values_, static_cast<int>(working));
   }
   // the inputs as floats of this precision, converted once (exact values are the business of
   // digits(), which asks GiNaC's exact arithmetic first)
@@ -213,9 +204,7 @@ std::optional<numeric> Evaluator::at(long working) const {
 std::optional<Precise> Evaluator::digits(int n) const {
   // an exact value first: GiNaC's exact arithmetic (sin(π) = 0, √4 = 2, 2L − 3d = 0)
   try {
-    exmap m;
-    for (std::size_t i = 0; i < syms_.size(); ++i) m[syms_[i]] = exact_[i];
-    ex v = e_.subs(m);
+    ex v = e_.subs(values_);
     if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) return Precise{ex_to<numeric>(v), 0, true, false, 0};
   } catch (const std::exception&) {
     return std::nullopt;  // a division by zero at the exact values

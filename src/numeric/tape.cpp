@@ -495,6 +495,8 @@ std::string Tape::cpp(const std::string& name) const {
   return os.str();
 }
 
+numeric exact(double d) { return numeric(cln::cl_N(cln::rational(cln::cl_DF(d)))); }
+
 double to_double(const ex& exact) {
   if (is_a<numeric>(exact) && ex_to<numeric>(exact).is_real()) return ex_to<numeric>(exact).to_double();
   auto v = to_cln(exact, 40);
@@ -505,7 +507,7 @@ double rounding_error(double d, const ex& exact) {
   if (!std::isfinite(d)) return std::numeric_limits<double>::infinity();
   auto v = to_cln(exact, 60);
   if (!v) return std::numeric_limits<double>::infinity();
-  cl_R diff = cln::rational(cln::cl_DF(d)) - *v;  // the double is an exact binary rational
+  cl_R diff = cln::the<cl_R>(numerics::exact(d).to_cl_N()) - *v;  // the double is an exact binary fraction
   // rounded up to stay a bound
   double e = cln::double_approx(cln::abs(diff));
   return e == 0 ? 0 : std::nextafter(e, std::numeric_limits<double>::infinity());

@@ -134,8 +134,6 @@ double log_err(const numeric& got, const numeric& ref, double floor) {
   return std::max(l, floor);
 }
 
-numeric exact_double(double d) { return numeric(cln::cl_N(cln::rational(cln::cl_DF(d)))); }
-
 std::string cpu_model() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
@@ -218,7 +216,7 @@ int main(int argc, char** argv) {
 
     const double floor_double = std::log10(std::ldexp(1.0, -53)) - 1;
     double ns_hand = ns_per_call([&] { g_sink = g_sink + f.hand(&pts[(k = (k + 1) % P) * m]); }, repeats);
-    add("hand-written double", ns_hand, log_err(exact_double(hand_v), ref, floor_double));
+    add("hand-written double", ns_hand, log_err(kinergy::numerics::exact(hand_v), ref, floor_double));
 
     Tape tape = Tape::compile(form, syms);
     // the tape as machine code (generated C++, compiled once, cached): called through a
@@ -226,22 +224,22 @@ int main(int argc, char** argv) {
     auto native = kinergy::numerics::NativeFunction::build(tape);
     auto fn = native.function();
     double ns_native = ns_per_call([&] { g_sink = g_sink + fn(&pts[(k = (k + 1) % P) * m]); }, repeats);
-    add("compiled double (native code)", ns_native, log_err(exact_double(fn(x.data())), ref, floor_double));
+    add("compiled double (native code)", ns_native, log_err(kinergy::numerics::exact(fn(x.data())), ref, floor_double));
 
     double ns_tape = ns_per_call([&] { g_sink = g_sink + tape(&pts[(k = (k + 1) % P) * m]); }, repeats);
-    add("compiled double (tape)", ns_tape, log_err(exact_double(tape(x.data())), ref, floor_double));
+    add("compiled double (tape)", ns_tape, log_err(kinergy::numerics::exact(tape(x.data())), ref, floor_double));
 
     std::vector<double> outb(P);
     double ns_batch = ns_per_call([&] {
                         tape.batch(pts.data(), P, outb.data());
                         g_sink = g_sink + outb[0];
                       }, repeats) / static_cast<double>(P);
-    add("compiled double, batch of 64", ns_batch, log_err(exact_double(tape(x.data())), ref, floor_double));
+    add("compiled double, batch of 64", ns_batch, log_err(kinergy::numerics::exact(tape(x.data())), ref, floor_double));
 
     Evaluator ev(form, own);
     auto fast = ev.fast();
     double ns_fast = ns_per_call([&] { g_sink = g_sink + ev.fast()->value; }, repeats);
-    add("double with error bound (solve)", ns_fast, log_err(exact_double(fast->value), ref, floor_double));
+    add("double with error bound (solve)", ns_fast, log_err(kinergy::numerics::exact(fast->value), ref, floor_double));
 
     for (long p : precisions) {
       auto v = ev.at(p);

@@ -22,7 +22,7 @@ namespace {
 numeric reference(const ex& e, const exmap& values) { return *kinergy::numerics::evaluate(e, values, 120); }
 
 double rel_error(double got, const numeric& want) {
-  numeric g(cln::cl_N(cln::rational(cln::cl_DF(got))));  // the double exactly
+  numeric g = kinergy::numerics::exact(got);
   if (want.is_zero()) return std::fabs(got);
   return std::fabs(((g - want) / want).to_double());
 }

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "../support/helpers.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/tape.hpp"
 #include "kinergy/problem.hpp"
@@ -32,12 +33,8 @@ TEST_CASE("tape: what it cannot evaluate is named", "[numeric][tape]") {
 }
 
 TEST_CASE("tape: every derivation's closed forms agree with 50-digit values", "[numeric][tape][derivations]") {
-  std::vector<std::string> files;
-  for (auto& e : fs::recursive_directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "derivations"))
-    if (e.path().extension() == ".yaml") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
   int checked = 0;
-  for (auto& f : files) {
+  for (auto& f : kt::scene_files("derivations")) {
     kinergy::Solution s = kinergy::solve_file(f);
     auto env = s.model.numeric_environment();
     std::vector<ex> inputs;

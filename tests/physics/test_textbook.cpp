@@ -34,11 +34,7 @@ kinergy::Solution solve_text(const std::string& yaml) {
   return kinergy::solve_scene(kinergy::scene::load_string(yaml, "<textbook>"));
 }
 
-const kinergy::Result& result(const kinergy::Solution& s, const std::string& name) {
-  for (auto& r : s.results)
-    if (r.name == name) return r;
-  throw std::runtime_error("no result " + name);
-}
+using kt::result;
 
 /// SI value of a result, 30 digits.
 numeric si(const kinergy::Solution& s, const std::string& name) {
@@ -491,36 +487,7 @@ TEST_CASE("numeric root far from the start, its range given with root in [lo, hi
   // the advice of the message cannot be followed.
   // the same bar spun fast from θ = 0: it winds the spring up almost two turns before it stops,
   // (1/3) w1² = 5 θ² + 9.81 sin θ with w1 = 46 rad/s: θ2 ≈ 11.9 rad, outside ±10 of the start
-  auto s = solve_text(R"(title: torsion spring wound far
-parameters:
-  m: 2 kg
-  L: 1 m
-  k: 10 N*m/rad
-  g: 9.81 m/s^2
-  w1: 46 rad/s
-points:
-  O: [0, 0]
-coordinates:
-  theta: rad
-bodies:
-  bar:
-    mass: m
-    inertia: {slender_rod: L}
-    position: [L/2*cos(theta), L/2*sin(theta)]
-    angle: theta
-    points: {O: [-L/2, 0]}
-effects:
-  gravity: {g: g}
-  pin: {pin: [O, bar.O]}
-  coil: {torsion_spring: bar, k: k}
-states:
-  1: {theta: 0, theta_dot: w1}
-  2: {theta_dot: 0}
-analyses:
-  - energy: {from: 1, to: 2}
-find:
-  theta2: {value: theta@2, root: {in: [11, 13]}, unit: rad}
-)");
+  auto s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/tests/data/wound_spring.yaml");
   double x = 12;
   for (int i = 0; i < 60; ++i)
     x -= (5 * x * x + 9.81 * std::sin(x) - 46.0 * 46.0 / 3) / (10 * x + 9.81 * std::cos(x));

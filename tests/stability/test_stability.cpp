@@ -21,17 +21,11 @@ using namespace GiNaC;
 
 namespace {
 
-std::vector<std::string> stability_scenes() {
-  std::vector<std::string> files;
-  for (auto& e : fs::directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "tests" / "stability"))
-    if (e.path().extension() == ".yaml") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
+std::vector<std::string> stability_scenes() { return kt::scene_files("tests/stability"); }
 
 /// |got − want| / |want| as a double (want ≠ 0), exactly from the double's binary value.
 double rel_error(double got, const numeric& want) {
-  numeric g(cln::cl_N(cln::rational(cln::cl_DF(got))));
+  numeric g = kinergy::numerics::exact(got);
   return abs((g - want) / want).to_double();
 }
 
@@ -61,10 +55,7 @@ TEST_CASE("stability: the double is within 1e-13 of the 100-digit reference", "[
     auto env = s.model.numeric_environment();
     for (auto& x : s.model.expects) {
       if (!x.value) continue;
-      const kinergy::Result* r = nullptr;
-      for (auto& res : s.results)
-        if (res.name == x.name) r = &res;
-      REQUIRE(r);
+      const kinergy::Result* r = &kt::result(s, x.name);
       INFO(fs::path(f).filename().string() << ": " << x.name << " = " << r->closed);
       // the closed form in the claim's unit, at the scene's exact values
       kinergy::numerics::Evaluator ev(r->closed / x.value->unit.factor, env);
@@ -105,10 +96,7 @@ TEST_CASE("stability: kinergy solve --digits 30 prints the reference's 30 digits
     for (std::sregex_iterator it(out.begin(), out.end(), item), end; it != end; ++it) printed[(*it)[1]] = (*it)[2];
     for (auto& x : s.model.expects) {
       if (!x.value) continue;
-      const kinergy::Result* r = nullptr;
-      for (auto& res : s.results)
-        if (res.name == x.name) r = &res;
-      REQUIRE(r);
+      const kinergy::Result* r = &kt::result(s, x.name);
       INFO(fs::path(f).filename().string() << ": " << x.name);
       // the reference in the result's display unit (exact factors; π for rpm and degrees)
       auto ref = kinergy::numerics::evaluate(x.value->number * x.value->unit.factor / r->unit_factor, {}, 150);

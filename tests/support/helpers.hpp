@@ -17,6 +17,7 @@
 #include "kinergy/model/model.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/problem.hpp"
 #include "kinergy/scene/scene.hpp"
 
 namespace kt {
@@ -31,14 +32,24 @@ inline std::string str(const ex& e) {
   return os.str();
 }
 
-/// Every scene file of derivations/energy, sorted.
-inline std::vector<std::string> derivation_scenes() {
+/// Every scene file (*.yaml) below `dir` of the source tree ("derivations", "tests/stability"), sorted.
+inline std::vector<std::string> scene_files(const std::string& dir) {
   namespace fs = std::filesystem;
   std::vector<std::string> out;
-  for (auto& e : fs::directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "derivations" / "energy"))
+  for (auto& e : fs::recursive_directory_iterator(fs::path(KINERGY_SOURCE_DIR) / dir))
     if (e.path().extension() == ".yaml") out.push_back(e.path().string());
   std::sort(out.begin(), out.end());
   return out;
+}
+
+/// Every scene file of derivations/energy, sorted.
+inline std::vector<std::string> derivation_scenes() { return scene_files("derivations/energy"); }
+
+/// The result called `name` of a solution. @throws std::runtime_error when there is none.
+inline const kinergy::Result& result(const kinergy::Solution& s, const std::string& name) {
+  for (auto& r : s.results)
+    if (r.name == name) return r;
+  throw std::runtime_error("no result " + name);
 }
 
 inline kinergy::model::Model model_of(const std::string& yaml) {

@@ -51,6 +51,8 @@ private:
   GiNaC::ex e_, stable_;
   std::vector<GiNaC::ex> syms_;   ///< free symbols of e, in a fixed order
   std::vector<GiNaC::ex> exact_;  ///< their exact values
+  GiNaC::exmap values_;           ///< symbol → exact value, for GiNaC
+  std::vector<double> x_, dx_;    ///< the exact values as doubles, and their rounding errors
   std::optional<Tape> precise_tape_;
   std::optional<Tape> fast_tape_;
   std::vector<double> fast_x_, fast_dx_;

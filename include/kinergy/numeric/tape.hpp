@@ -76,6 +76,8 @@ private:
   friend class TapeBuilder;
 };
 
+/// A double's exact value (every finite double is a binary fraction).
+GiNaC::numeric exact(double d);
 /// The double nearest an exact value (a rational, or an exact form such as π/6).
 double to_double(const GiNaC::ex& exact);
 /// |d − exact| for the double d of an exact value, as a double (0 when d is exact).
