@@ -11,8 +11,6 @@
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/evaluator.hpp"
 
-#include <cln/cln.h>
-
 namespace kinergy {
 
 using namespace GiNaC;
@@ -161,11 +159,12 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
   if (prefer_double && digits <= 15) {
     // the double's digits are right when the whole interval value ± bound rounds to them
     if (auto f = ev.fast(); f && std::isfinite(f->value) && std::isfinite(f->bound)) {
-      auto exact_double = [](double d) { return numeric(cln::cl_N(cln::rational(cln::cl_DF(d)))); };
-      numeric lo = numerics::round_sig(exact_double(f->value - f->bound), digits);
-      numeric hi = numerics::round_sig(exact_double(f->value + f->bound), digits);
+      // (exactly: in doubles, value ± bound would round back to value when bound < ½ ulp)
+      const numeric v = numerics::exact(f->value), b = numerics::exact(f->bound);
+      numeric lo = numerics::round_sig(v - b, digits);
+      numeric hi = numerics::round_sig(v + b, digits);
       if (f->bound == 0 || lo == hi)
-        return Value{exact_double(f->value), Value::How::Double, 0, f->bound};
+        return Value{v, Value::How::Double, 0, f->bound};
     }
   }
   auto d = ev.digits(digits);
