@@ -1,6 +1,4 @@
 // pdflatex on a document in a fresh temporary directory, and what its log says.
-#include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -8,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "kinergy/common/process.hpp"
 #include "kinergy/emit/derive.hpp"
 
 namespace kinergy::emit {
@@ -21,32 +20,6 @@ std::string read_file(const fs::path& p) {
   std::ostringstream os;
   os << in.rdbuf();
   return os.str();
-}
-
-/// Run `argv` in `dir` with stdin from /dev/null and stdout/stderr into `out_file`.
-/// @returns the exit status, or -1 when it could not be started.
-int run_in(const fs::path& dir, const std::vector<std::string>& argv, const fs::path& out_file) {
-  pid_t pid = fork();
-  if (pid < 0) return -1;
-  if (pid == 0) {
-    if (chdir(dir.c_str()) != 0) _exit(127);
-    int in = open("/dev/null", O_RDONLY);
-    int out = open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (in >= 0) dup2(in, 0);
-    if (out >= 0) {
-      dup2(out, 1);
-      dup2(out, 2);
-    }
-    std::vector<char*> args;
-    for (auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    execvp(args[0], args.data());
-    _exit(127);
-  }
-  int st = 0;
-  if (waitpid(pid, &st, 0) != pid) return -1;
-  if (!WIFEXITED(st)) return -1;
-  return WEXITSTATUS(st);
 }
 
 }  // namespace
@@ -82,7 +55,7 @@ PdfRun run_pdflatex(const std::string& tex, const std::string& pdf_path) {
     std::ofstream out(dir / "derivation.tex", std::ios::binary);
     out << tex;
   }
-  int rc = run_in(dir, {"pdflatex", "-interaction=nonstopmode", "-halt-on-error", "derivation.tex"}, dir / "pdflatex.out");
+  int rc = run_program(dir, {"pdflatex", "-interaction=nonstopmode", "-halt-on-error", "derivation.tex"}, dir / "pdflatex.out");
   r.ran = rc >= 0 && rc != 127;
   r.log = read_file(dir / "derivation.log");
   r.output = read_file(dir / "pdflatex.out");

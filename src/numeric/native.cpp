@@ -1,5 +1,7 @@
 #include "kinergy/numeric/native.hpp"
 
+#include "kinergy/common/process.hpp"
+
 #include <dlfcn.h>
 #include <unistd.h>
 
@@ -26,12 +28,6 @@ fs::path cache_dir() {
   if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return fs::path(d) / "kinergy";
   if (const char* d = std::getenv("HOME"); d && *d) return fs::path(d) / ".cache" / "kinergy";
   return fs::temp_directory_path() / ("kinergy-" + std::to_string(getuid()));
-}
-
-std::string quoted(const std::string& s) {
-  std::string o = "'";
-  for (char c : s) o += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return o + "'";
 }
 
 std::string first_line(const fs::path& p) {
@@ -65,9 +61,8 @@ NativeFunction NativeFunction::build(const Tape& t) {
       if (!out) throw std::runtime_error("cannot write " + cpp.string() + " (set KINERGY_CACHE to a writable folder)");
     }
     // the flags of a Release build: the same arithmetic as the tape (no fast-math, no contraction)
-    const std::string cmd = quoted(KINERGY_CXX) + " -O2 -ffp-contract=off -fPIC -shared -o " + quoted(tmp.string()) + " " +
-                            quoted(cpp.string()) + " >" + quoted(log.string()) + " 2>&1";
-    int rc = std::system(cmd.c_str());
+    int rc = run_program(dir, {KINERGY_CXX, "-O2", "-ffp-contract=off", "-fPIC", "-shared", "-o", tmp.string(), cpp.string()},
+                         log);
     std::string why = rc == 0 ? "" : first_line(log);
     fs::remove(cpp, ec);
     fs::remove(log, ec);
