@@ -2,9 +2,14 @@
 //   kinergy solve SCENE [--digits N] [--json]
 //   kinergy derive SCENE [--latex FILE.tex] [--pdf FILE.pdf] [--digits N]
 //   kinergy verify SCENE... [--json]
+//   kinergy simulate SCENE --until T [--tol E] [--method M] [--csv FILE] [--plot FILE] [--check]
 // Exit status: 0 ok, 1 bad scene / no solution / a claim fails, 2 usage.
+#include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iostream>
+
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +17,9 @@
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/emit/emit.hpp"
 #include "kinergy/problem.hpp"
+#include "kinergy/simulate/check.hpp"
+#include "kinergy/simulate/report.hpp"
+#include "kinergy/simulate/simulate.hpp"
 #include "kinergy/verify/verify.hpp"
 
 namespace {
@@ -21,6 +29,10 @@ int guarded(const std::string& file, const std::function<int()>& f) {
     return f();
   } catch (const kinergy::SceneError& e) {
     std::cerr << e.what() << "\n";
+  } catch (const kinergy::simulate::SimulationError& e) {
+    std::cerr << file << ": " << e.what() << " \u2014 " << e.fix() << "\n";
+  } catch (const kinergy::InputError& e) {
+    std::cerr << file << ": " << e.what() << " \u2014 " << e.fix() << "\n";
   } catch (const std::exception& e) {
     std::cerr << file << ":0:0: internal error: " << e.what()
               << " \u2014 this is a bug in kinergy; please report it with the scene\n";
@@ -57,6 +69,22 @@ int main(int argc, char** argv) {
   auto* verify = app.add_subcommand("verify", "check every 'expect' claim of the scenes");
   verify->add_option("SCENE", scenes, "scene files (YAML)")->required();
   verify->add_flag("--json", as_json, "print JSON for tools");
+
+  double until = 0, tol = 1e-10, step = 0;
+  std::string method = "dopri5", from, csv_out, plot_out;
+  bool equations = false, check = false, no_native = false;
+  auto* simulate = app.add_subcommand("simulate", "integrate the scene's motion in time from a state, with only the effects it lists");
+  simulate->add_option("SCENE", scene, "scene file (YAML)")->required();
+  simulate->add_option("--until", until, "end time in s (absolute, the start state's t is the origin)");
+  simulate->add_option("--from", from, "the state to start from (default: the first)");
+  simulate->add_option("--tol", tol, "absolute and relative tolerance of the adaptive methods (default 1e-10)")->check(CLI::Range(1e-15, 1e-1));
+  simulate->add_option("--method", method, "dopri5 (default), rkf78, bs (Bulirsch-Stoer), symplectic (fixed step, separable energy), rk4 (fixed step)");
+  simulate->add_option("--step", step, "fixed step of symplectic and rk4 in s (default: span/10000)")->check(CLI::PositiveNumber);
+  simulate->add_option("--csv", csv_out, "write t, q, q_dot, T, V, E per step to FILE");
+  simulate->add_option("--plot", plot_out, "draw coordinates and energy against time into FILE.svg or FILE.png (gnuplot)");
+  simulate->add_flag("--equations", equations, "print the equations of motion");
+  simulate->add_flag("--check", check, "run every analysis of the scene as a simulation and compare with the closed forms");
+  simulate->add_flag("--no-native", no_native, "evaluate the right-hand side by the tape instead of compiled machine code");
 
   try {
     app.parse(argc, argv);
@@ -106,6 +134,112 @@ int main(int argc, char** argv) {
           return 1;
         }
       }
+      return 0;
+    });
+  }
+  if (*simulate) {
+    return guarded(scene, [&]() -> int {
+      namespace sim = kinergy::simulate;
+      kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
+      // the start state as numbers: solved when the scene has analyses, else as given
+      std::optional<kinergy::Solution> sol;
+      std::optional<kinergy::model::Model> bare;
+      if (def.analyses.empty()) bare = kinergy::model::Model::build(def);
+      else sol = kinergy::solve_scene(def);
+      const kinergy::model::Model& m = sol ? sol->model : *bare;
+      sim::Options o;
+      o.method = sim::method_from_name(method);
+      o.tol = tol;
+      o.step = step;
+      o.native = !no_native;
+      if (equations) std::cout << sim::equations_of_motion(m).text(m) << "\n";
+      if (check) {
+        if (!sol) throw kinergy::SceneError({scene, 1, 1}, "the scene has no analyses, so no closed form to check", "add an analysis, or leave out --check");
+        int bad = 0;
+        for (auto& leg : sim::legs(*sol)) {
+          const auto& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
+          std::cout << a.kind << " " << m.states[leg.from].name << " -> " << m.states[leg.to].name << ": ";
+          if (!leg.why_not.empty()) {
+            std::cout << "not simulated: " << leg.why_not << "\n";
+            continue;
+          }
+          auto c = sim::check_leg(*sol, leg, o, std::max(1e3 * tol, 1e-12));
+          std::cout << "until " << leg.target << ", " << c.run.steps << " steps; largest relative difference "
+                    << c.worst << (c.worst_what.empty() ? "" : " (" + c.worst_what + ")") << (c.ok ? " ok" : " FAILS") << "\n";
+          bad += c.ok ? 0 : 1;
+        }
+        if (!sol->model.analyses.empty() && !simulate->count("--until")) return bad ? 1 : 0;
+        if (bad) return 1;
+      }
+      if (!simulate->count("--until")) {
+        if (equations) return 0;
+        throw kinergy::SceneError({scene, 1, 1}, "simulate needs an end time", "add --until T (seconds)");
+      }
+      int start = 0;
+      if (!from.empty()) {
+        start = m.state_index(from);
+        if (start < 0) throw kinergy::SceneError({scene, 1, 1}, "there is no state '" + from + "'", "name a state of the scene's 'states'");
+      }
+      if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to start from", "add a state with every coordinate and rate");
+      sim::State s0;
+      if (sol) s0 = sim::state_values(*sol, start);
+      else {
+        kinergy::model::Model const& mm = m;
+        auto vals = mm.parameter_values();
+        auto given = mm.given_values();
+        for (auto& c : mm.coords) {
+          auto& [q, qd] = mm.states[static_cast<std::size_t>(start)].sym.at(c.name);
+          for (auto [sym, out] : {std::pair{GiNaC::ex(q), &s0.q}, std::pair{GiNaC::ex(qd), &s0.qd}}) {
+            GiNaC::ex v = sym.subs(given).subs(vals).evalf();
+            if (!GiNaC::is_a<GiNaC::numeric>(v))
+              throw kinergy::SceneError(mm.states[static_cast<std::size_t>(start)].pos,
+                                        "state '" + mm.states[static_cast<std::size_t>(start)].name + "' does not give " +
+                                            (out == &s0.q ? c.name : c.name + "_dot") + " as a number",
+                                        "give every coordinate and rate at the start state");
+            out->push_back(GiNaC::ex_to<GiNaC::numeric>(v).to_double());
+          }
+        }
+        GiNaC::ex tv = mm.states[static_cast<std::size_t>(start)].t.subs(given).subs(vals).evalf();
+        s0.t = GiNaC::is_a<GiNaC::numeric>(tv) ? GiNaC::ex_to<GiNaC::numeric>(tv).to_double() : 0.0;
+      }
+      for (std::size_t i = 0; i < m.coords.size(); ++i)
+        if (std::isnan(s0.q[i]) || std::isnan(s0.qd[i]))
+          throw kinergy::SceneError(m.states[static_cast<std::size_t>(start)].pos,
+                                    "state '" + m.states[static_cast<std::size_t>(start)].name + "' does not fix " + m.coords[i].name +
+                                        (std::isnan(s0.q[i]) ? "" : "_dot") + ", and no analysis finds it",
+                                    "give it at that state, or start from another with --from");
+      // a progress bar on stderr for long runs in a terminal
+      const bool tty = isatty(2);
+      auto t0 = std::chrono::steady_clock::now();
+      bool shown = false;
+      if (tty)
+        o.progress = [&](double f) {
+          double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          if (el < 0.5 && f < 1) return;
+          int w = static_cast<int>(f * 40);
+          std::cerr << "\r[" << std::string(static_cast<std::size_t>(w), '#') << std::string(static_cast<std::size_t>(40 - w), ' ') << "] "
+                    << static_cast<int>(f * 100) << "%" << std::flush;
+          shown = true;
+        };
+      sim::Simulator s(m, sol ? sim::simulation_values(*sol) : m.parameter_values(), o);
+      sim::Stop stop;
+      stop.until = until;
+      auto c0 = std::chrono::steady_clock::now();
+      sim::Run r = s.run(s0, stop);
+      double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
+      if (shown) std::cerr << "\n";
+      std::cout << m.title << "\n"
+                << "method " << sim::method_name(o.method) << ", tol " << tol << ", right-hand side " << (o.native ? "compiled" : "tape")
+                << "; from state '" << m.states[static_cast<std::size_t>(start)].name << "' at t = " << s0.t << " s\n"
+                << r.steps << " steps (" << r.rejected << " rejected), " << r.rhs_calls << " right-hand side evaluations, "
+                << secs * 1e3 << " ms\n"
+                << sim::text(m, r);
+      if (!csv_out.empty()) {
+        std::ofstream out(csv_out);
+        out << sim::csv(m, r);
+        if (!out) throw std::runtime_error(csv_out + ": cannot write the CSV file");
+      }
+      if (!plot_out.empty()) sim::plot(m, r, plot_out);
       return 0;
     });
   }

@@ -262,6 +262,19 @@ ex Model::power(const Effect& e) const {
     return -e.mu * e.normal * sqrt(trig_simplify(vx * vx + vy * vy));
   }
   if (e.kind == "friction_couple") return -e.M * abs(omega(e.body));  // P = −M |ω|
+  if (e.kind == "torsion_damper") {
+    // P = −c (ω₁ − ω₂)²
+    ex w = omega(e.body) - (e.body2 >= 0 ? omega(e.body2) : ex(0));
+    return collect_simplify(-e.k * w * w, rate_list(coords));
+  }
+  if (e.kind == "damper") {
+    // P = −c (d·ḋ)²/|d|²,  d = r_B − r_A  (c times the square of the rate of the length)
+    auto [xa, ya] = position(e.a);
+    auto [xb, yb] = position(e.b);
+    ex dx = xb - xa, dy = yb - ya;
+    ex dd = rate(dx) * dx + rate(dy) * dy;
+    return -e.k * pow(collect_simplify(dd, rate_list(coords)), 2) / trig_simplify(dx * dx + dy * dy);
+  }
   if (e.kind == "power") return e.P;
   if (e.kind == "couple") return e.M * omega(e.body);                // P = M ω
   if (e.kind == "force") {
@@ -964,6 +977,30 @@ private:
         if (auto* f = ed.options.get("free_angle"))
           e.free = checked(text_of(*f, "free_angle", "0"), SceneContext::ParamsOnly, Dimension{},
                            "free_angle", "an angle is a pure number (rad)");
+      } else if (k == "damper") {
+        // viscous damper between two points: force c·(rate of its length) along its line
+        only(ed, {"c"});
+        if (!ed.arg.is_list() || ed.arg.items.size() != 2)
+          throw SceneError(ed.arg.pos, "a damper joins two points", "write 'damper: [A, bar.B]'");
+        e.a = point_ref(ed.arg.items[0], "damper");
+        e.b = point_ref(ed.arg.items[1], "damper");
+        e.k = checked(text_of(option(ed, "c", "c"), "c", "c"), SceneContext::ParamsOnly, F * T / L, "c",
+                      "a damping coefficient is in N*s/m (or lb*s/ft)");
+        positive(e.k, option(ed, "c", "c").pos, "the damping coefficient");
+      } else if (k == "torsion_damper") {
+        // viscous couple −c (ω₁ − ω₂) on one body, or between two
+        only(ed, {"c"});
+        if (ed.arg.is_list()) {
+          if (ed.arg.items.size() != 2)
+            throw SceneError(ed.arg.pos, "a torsion damper acts on one body or between two", "write 'torsion_damper: [a, b]'");
+          e.body = body_ref(ed.arg.items[0], "torsion_damper");
+          e.body2 = body_ref(ed.arg.items[1], "torsion_damper");
+        } else {
+          e.body = body_ref(ed.arg, "torsion_damper");
+        }
+        e.k = checked(text_of(option(ed, "c", "c_t"), "c", "c_t"), SceneContext::ParamsOnly, E * T, "c",
+                      "a torsional damping coefficient is in N*m*s/rad");
+        positive(e.k, option(ed, "c", "c").pos, "the torsional damping coefficient");
       } else if (k == "couple" || k == "friction_couple") {
         if (k == "couple") only(ed, {"M"});
         else only(ed, {"M", "direction"});

@@ -38,11 +38,8 @@ std::string first_line(const fs::path& p) {
   return "no message";
 }
 
-}  // namespace
-
-NativeFunction NativeFunction::build(const Tape& t) {
-  const std::string name = "kinergy_fn";
-  const std::string src = t.cpp(name);
+// Compile `src` (or take it from the cache), load it, and find `name` in it.
+std::pair<std::shared_ptr<void>, void*> load(const std::string& src, const std::string& name) {
   char key[32];
   std::snprintf(key, sizeof key, "%016zx", std::hash<std::string>{}(src + KINERGY_CXX));
   const fs::path dir = cache_dir();
@@ -75,11 +72,28 @@ NativeFunction NativeFunction::build(const Tape& t) {
   }
   void* h = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!h) throw std::runtime_error(std::string("cannot load ") + so.string() + ": " + dlerror());
+  std::shared_ptr<void> handle(h, [](void* p) { dlclose(p); });
+  void* fn = dlsym(h, name.c_str());
+  if (!fn) throw std::runtime_error("no function " + name + " in " + so.string());
+  return {handle, fn};
+}
+
+}  // namespace
+
+NativeFunction NativeFunction::build(const Tape& t) {
+  auto [handle, fn] = load(t.cpp("kinergy_fn"), "kinergy_fn");
   NativeFunction f;
-  f.handle_ = std::shared_ptr<void>(h, [](void* p) { dlclose(p); });
-  f.fn_ = reinterpret_cast<Fn>(dlsym(h, name.c_str()));
-  if (!f.fn_) throw std::runtime_error("no function " + name + " in " + so.string());
+  f.handle_ = handle;
+  f.fn_ = reinterpret_cast<Fn>(fn);
   return f;
+}
+
+NativeKernel NativeKernel::build(const Tape& t) {
+  auto [handle, fn] = load(t.cpp_vector("kinergy_kernel"), "kinergy_kernel");
+  NativeKernel k;
+  k.handle_ = handle;
+  k.fn_ = reinterpret_cast<Fn>(fn);
+  return k;
 }
 
 }  // namespace kinergy::numerics

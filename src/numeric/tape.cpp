@@ -116,11 +116,15 @@ private:
   }
 };
 
-Tape Tape::compile(const ex& e, const std::vector<ex>& inputs) {
+Tape Tape::compile(const ex& e, const std::vector<ex>& inputs) { return compile(std::vector<ex>{e}, inputs); }
+
+Tape Tape::compile(const std::vector<ex>& outputs, const std::vector<ex>& inputs) {
+  if (outputs.empty()) throw std::invalid_argument("tape: nothing to compute");
   Tape t;
   t.n_inputs_ = inputs.size();
   TapeBuilder b(t, inputs);
-  t.out_ = b.node(e);
+  for (auto& e : outputs) t.outs_.push_back(b.node(e));
+  t.out_ = t.outs_.front();
   t.reg_.resize(t.code_.size());
   for (std::size_t i = 0; i < t.code_.size(); ++i) {
     const Ins& in = t.code_[i];
@@ -134,6 +138,16 @@ Tape Tape::compile(const ex& e, const std::vector<ex>& inputs) {
 }
 
 double Tape::operator()(const double* x) const {
+  run(x);
+  return out_ < 0 ? 0 : reg_[static_cast<std::size_t>(out_)];
+}
+
+void Tape::eval(const double* x, double* out) const {
+  run(x);
+  for (std::size_t k = 0; k < outs_.size(); ++k) out[k] = reg_[static_cast<std::size_t>(outs_[k])];
+}
+
+void Tape::run(const double* x) const {
   double* r = reg_.data();  // the constants' registers were filled by compile()
   for (auto [reg, input] : inputs_at_) r[reg] = x[input];
   for (std::uint32_t i : work_) {
@@ -167,7 +181,6 @@ double Tape::operator()(const double* x) const {
       case Op::Tanh: r[i] = std::tanh(a); break;
     }
   }
-  return out_ < 0 ? 0 : r[out_];
 }
 
 void Tape::batch(const double* x, std::size_t n, double* out) const {
@@ -448,7 +461,11 @@ std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits, bool 
   return r[static_cast<std::size_t>(out_)];
 }
 
-std::string Tape::cpp(const std::string& name) const {
+std::string Tape::cpp(const std::string& name) const { return source(name, false); }
+
+std::string Tape::cpp_vector(const std::string& name) const { return source(name, true); }
+
+std::string Tape::source(const std::string& name, bool vector) const {
   std::ostringstream os;
   auto r = [](std::int32_t i) { return "r" + std::to_string(i); };
   os << "#include <cmath>\n"
@@ -456,7 +473,8 @@ std::string Tape::cpp(const std::string& name) const {
      << "  double p = 1, b = n < 0 ? 1 / a : a;\n"
      << "  for (unsigned k = static_cast<unsigned>(n < 0 ? -n : n); k; k >>= 1, b *= b) if (k & 1) p *= b;\n"
      << "  return p;\n}\n"
-     << "extern \"C\" double " << name << "(const double* x) {\n";
+     << "extern \"C\" " << (vector ? "void " : "double ") << name
+     << (vector ? "(const double* x, double* out) {\n" : "(const double* x) {\n");
   for (std::size_t i = 0; i < code_.size(); ++i) {
     const Ins& in = code_[i];
     const std::string a = in.a >= 0 ? r(in.a) : "", b = in.b >= 0 ? r(in.b) : "";
@@ -491,7 +509,11 @@ std::string Tape::cpp(const std::string& name) const {
     }
     os << "  const double " << r(static_cast<std::int32_t>(i)) << " = " << v << ";\n";
   }
-  os << "  return " << (out_ < 0 ? std::string("0") : r(out_)) << ";\n}\n";
+  if (vector)
+    for (std::size_t k = 0; k < outs_.size(); ++k) os << "  out[" << k << "] = " << r(outs_[k]) << ";\n";
+  else
+    os << "  return " << (out_ < 0 ? std::string("0") : r(out_)) << ";\n";
+  os << "}\n";
   return os.str();
 }
 

@@ -168,9 +168,10 @@ std::vector<Push> pushes(const Model& m, const Effect& e, const Analysis& a, con
     p.arm_x = x;
     p.arm_y = y;
     out.push_back(p);
-  } else if (kind == "spring" || kind == "torsion_spring") {
-    bool ia = kind == "spring" ? on(e.a.body) : on(e.body);
-    bool ib = kind == "spring" ? on(e.b.body) : on(e.body2);
+  } else if (kind == "spring" || kind == "torsion_spring" || kind == "damper" || kind == "torsion_damper") {
+    bool two_points = kind == "spring" || kind == "damper";
+    bool ia = two_points ? on(e.a.body) : on(e.body);
+    bool ib = two_points ? on(e.b.body) : on(e.body2);
     if (ia == ib) return out;
     throw SceneError(e.pos, "the " + kind + " '" + e.name + "' pushes with a force that changes with the motion; its impulse over a duration has no closed form",
                      "include both of its ends in the analysis' bodies, or use an energy analysis");

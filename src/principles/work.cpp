@@ -112,6 +112,12 @@ Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) {
     w.how = "U = P (t2 - t1)";
     return w;
   }
+  if (e.kind == "damper" || e.kind == "torsion_damper") {
+    // U = −∫ c v² dt depends on how fast the motion went, not on the two states alone
+    throw SceneError(e.pos, "the work of the " + e.kind + " '" + e.name + "' depends on the speeds all along the motion, not on states '" +
+                                S1 + "' and '" + S2 + "' alone",
+                     "simulate the scene (kinergy simulate) for its work, or remove the damper from an energy analysis");
+  }
   if (e.kind == "couple" || e.kind == "force") {
     std::vector<ex> Q;
     bool timed = false;

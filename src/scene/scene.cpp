@@ -36,8 +36,8 @@ SourcePos StateDef::key_pos(const std::string& key) const {
 
 const std::vector<std::string>& effect_kinds() {
   static const std::vector<std::string> k = {
-      "gravity", "spring", "torsion_spring", "couple", "force", "friction", "friction_couple",
-      "power",   "pin",    "contact",        "impulse"};
+      "gravity", "spring", "torsion_spring", "damper", "torsion_damper", "couple", "force", "friction",
+      "friction_couple", "power", "pin", "contact", "impulse"};
   return k;
 }
 

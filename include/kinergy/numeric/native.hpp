@@ -26,4 +26,20 @@ private:
   Fn fn_ = nullptr;
 };
 
+/// A multi-output tape as machine code: `void f(const double* x, double* out)` writes every
+/// output (a right-hand side, a mass matrix and its forcing terms in one call).
+class NativeKernel {
+public:
+  /// @throws std::runtime_error as NativeFunction::build.
+  static NativeKernel build(const Tape& t);
+
+  void operator()(const double* x, double* out) const { fn_(x, out); }
+  using Fn = void (*)(const double*, double*);
+  Fn function() const { return fn_; }
+
+private:
+  std::shared_ptr<void> handle_;
+  Fn fn_ = nullptr;
+};
+
 }  // namespace kinergy::numerics

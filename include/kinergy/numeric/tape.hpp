@@ -26,6 +26,12 @@ public:
   /// @throws std::invalid_argument naming a node the tape cannot evaluate, or a free symbol
   /// that is not an input.
   static Tape compile(const GiNaC::ex& e, const std::vector<GiNaC::ex>& inputs);
+  /// Several outputs from one tape: a subexpression shared between them is computed once
+  /// (sin θ for every entry of M(q) and Q). The single-value calls give the first output.
+  static Tape compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs);
+
+  /// Every output at x: out[k] is output k.
+  void eval(const double* x, double* out) const;
 
   /// Value at x[0..inputs-1] (IEEE double arithmetic; NaN where the form is undefined).
   double operator()(const double* x) const;
@@ -50,7 +56,11 @@ public:
   /// per instruction, constants as exact hexadecimal literals (for NativeFunction).
   std::string cpp(const std::string& name) const;
 
+  /// The same as `extern "C" void NAME(const double* x, double* out)`, writing every output.
+  std::string cpp_vector(const std::string& name) const;
+
   std::size_t instructions() const { return code_.size(); }  ///< after sharing
+  std::size_t outputs() const { return outs_.size(); }
   std::size_t inputs() const { return n_inputs_; }
 
 private:
@@ -67,9 +77,12 @@ private:
   std::vector<GiNaC::ex> exact_;     ///< each constant exactly (a rational, or π, …)
   std::vector<double> const_err_;    ///< |double constant − exact constant|
   std::size_t n_inputs_ = 0;
-  std::int32_t out_ = -1;  ///< the register holding the value
+  std::int32_t out_ = -1;  ///< the register holding the (first) value
+  std::vector<std::int32_t> outs_;  ///< the registers holding each output
   std::vector<std::uint32_t> work_;  ///< the instructions that compute (not constants, not inputs)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> inputs_at_;  ///< (register, input index)
+  void run(const double* x) const;  ///< every register at x (double)
+  std::string source(const std::string& name, bool vector) const;
   mutable std::vector<double> reg_;
   mutable std::vector<double> err_;
   mutable std::vector<double> batch_reg_;

@@ -1,0 +1,43 @@
+/// @file check.hpp  A solved scene's states as numbers, and its closed forms checked against a
+/// simulation: each analysis from state S1 to S2 run from S1 until S2 is reached (its instant,
+/// or the first time a coordinate given at S2 reaches its value), the simulated positions and
+/// rates compared with the solution's.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "kinergy/problem.hpp"
+#include "kinergy/simulate/simulate.hpp"
+
+namespace kinergy::simulate {
+
+/// Parameter symbol → exact value, with the values solved for (`unknown` parameters).
+GiNaC::exmap simulation_values(const Solution& s);
+
+/// State `index` of a solved scene as numbers; NaN where the solution leaves a value open.
+State state_values(const Solution& s, int index);
+
+/// One analysis as a simulation: from one state to another.
+struct Leg {
+  int analysis = -1, from = -1, to = -1;
+  State start, expect;   ///< expect: NaN where the solution does not fix the value
+  Stop stop;
+  std::string target;    ///< how the end is found ("t = 2 s", "yA reaches -1.5")
+  std::string why_not;   ///< empty when the leg can be simulated
+};
+
+std::vector<Leg> legs(const Solution& s);
+
+struct LegCheck {
+  Leg leg;
+  Run run;
+  double worst = 0;          ///< largest relative difference, simulated against closed form
+  std::string worst_what;    ///< which value
+  bool ok = false;
+};
+
+/// Run a leg and compare its end with the closed-form state; passes when every known value
+/// agrees within `tolerance` relative to its scale.
+LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double tolerance);
+
+}  // namespace kinergy::simulate

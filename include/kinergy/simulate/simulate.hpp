@@ -1,0 +1,120 @@
+/// @file simulate.hpp  Integrate the equations of motion of a scene in time: a compiled
+/// right-hand side (every entry of M(q) and Q in one tape, sin/cos of each coordinate once),
+/// Eigen's LDLᵀ for q̈, Boost.Odeint steppers, and the switching parts of the scene handled as
+/// events located to the tolerance: contacts striking (the impact law with the scene's e) and
+/// coming to rest, Coulomb friction stopping, sticking and breaking away.
+#pragma once
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "kinergy/model/model.hpp"
+#include "kinergy/simulate/equations.hpp"
+
+namespace kinergy::simulate {
+
+enum class Method { Dopri5, Rkf78, BulirschStoer, Symplectic, Rk4 };
+
+/// "dopri5", "rkf78", "bs", "symplectic", "rk4". @throws InputError naming the choices.
+Method method_from_name(const std::string& s);
+std::string method_name(Method m);
+
+/// A failure while simulating (a singular mass matrix, a right-hand side that is undefined, a
+/// method that does not fit the scene), with what would fix it.
+class SimulationError : public std::runtime_error {
+public:
+  SimulationError(std::string what, std::string fix) : std::runtime_error(std::move(what)), fix_(std::move(fix)) {}
+  const std::string& fix() const { return fix_; }
+private:
+  std::string fix_;
+};
+
+struct Options {
+  Method method = Method::Dopri5;
+  double tol = 1e-10;        ///< absolute and relative tolerance of the adaptive methods
+  double step = 0;           ///< fixed step of symplectic and rk4 (0: span/10⁴)
+  bool native = true;        ///< right-hand side as machine code (else the tape, same doubles)
+  bool record = true;        ///< keep every accepted step as a sample
+  std::size_t max_steps = 100'000'000;
+  /// Called now and then with the fraction of the span done (a progress bar).
+  std::function<void(double)> progress;
+};
+
+/// Positions and rates at an instant (SI values, the model's coordinate order).
+struct State {
+  double t = 0;
+  std::vector<double> q, qd;
+};
+
+/// Where a run ends: at `until`, or earlier the first time `when` (an expression of the
+/// coordinates, rates and t) crosses zero. `until` equal to the start time runs only what
+/// happens at the start (given impulses, impacts of contacts touching and approaching).
+struct Stop {
+  double until = 0;
+  std::optional<GiNaC::ex> when;
+  bool impulses = true;  ///< apply the scene's given impulses at the start
+};
+
+struct Sample {
+  double t;
+  std::vector<double> q, qd;
+  double T, V;
+};
+
+/// One impact: the contacts that struck, the approach and rebound speeds, and the kinetic energy
+/// lost, ½ Σ P (v_n⁻ + v_n⁺) taken from the impulses (no difference of large numbers).
+struct Impact {
+  double t;
+  std::vector<std::string> contacts;
+  std::vector<double> vn_before, vn_after, impulse;
+  double loss = 0;
+  double T_before = 0, T_after = 0;
+  bool comes_to_rest = false;  ///< the last bounce was too short to resolve: the contact rests
+};
+
+struct Run {
+  std::vector<Sample> samples;     ///< accepted steps (when recording), and the end
+  std::vector<Impact> impacts;
+  std::vector<std::string> log;    ///< what switched and when (rest, stick, slip, release)
+  std::vector<std::pair<std::string, double>> work;  ///< U of each non-conservative effect
+  Sample end;
+  bool stopped = false;            ///< `when` ended the run (not `until`)
+  double E0 = 0, E1 = 0;           ///< T + V at the start and the end
+  double impact_loss = 0;          ///< Σ energy lost in impacts
+  double energy_scale = 0;         ///< max(|E₀|, largest T): the drift is relative to this
+  /// (E₁ − E₀ − ΣU + Σ impact losses)/scale: the energy balance error of the integration.
+  double drift = 0;
+  bool conservative = false;       ///< no non-conservative effect and no impact
+  std::size_t steps = 0, rejected = 0, rhs_calls = 0;
+};
+
+class Simulator {
+public:
+  /// Compile the equations of motion of `m` with the parameters at `values` (exact).
+  /// @throws SceneError when a parameter has no value, SimulationError when the method does
+  /// not fit the scene, std::runtime_error when no compiler is there for the native code.
+  Simulator(const model::Model& m, const GiNaC::exmap& values, const Options& o);
+  ~Simulator();
+  Simulator(Simulator&&) noexcept;
+
+  const Equations& equations() const;
+  /// State vector size (q, q̇, and the work of each non-conservative effect).
+  std::size_t size() const;
+
+  /// Integrate from s0 until stop. Applies the scene's given impulses at the start.
+  Run run(const State& s0, const Stop& stop);
+
+  /// dy/dt at y = [q, q̇, U…] (the current friction and contact modes), for benchmarks.
+  void rhs(const double* y, double t, double* dydt);
+
+  struct Impl;  ///< compiled equations, modes and workspace (src/simulate/impl.hpp)
+
+private:
+  std::unique_ptr<Impl> p_;
+};
+
+}  // namespace kinergy::simulate

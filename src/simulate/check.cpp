@@ -1,0 +1,203 @@
+// A solved scene's states as numbers; each analysis run as a simulation and compared.
+#include "kinergy/simulate/check.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/tape.hpp"
+
+namespace kinergy::simulate {
+
+using namespace GiNaC;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(8);
+  os << v;
+  return os.str();
+}
+
+// a state symbol's value: given, or solved (closed forms may name other solved symbols)
+double value(const Solution& s, const ex& sym, const exmap& params) {
+  const exmap given = s.model.given_values();
+  ex v = sym;
+  for (int pass = 0; pass < 4; ++pass) {
+    ex w = v.subs(given).subs(s.branch.sol);
+    if (w.is_equal(v)) break;
+    v = w;
+  }
+  v = v.subs(params);
+  try {
+    ex e = v.evalf();
+    if (is_a<numeric>(e) && ex_to<numeric>(e).is_real()) return ex_to<numeric>(e).to_double();
+  } catch (const std::exception&) {
+  }
+  return kNaN;
+}
+
+}  // namespace
+
+exmap simulation_values(const Solution& s) {
+  exmap v = s.model.parameter_values();
+  for (auto& p : s.model.params)
+    if (p.unknown) {
+      auto it = s.branch.sol.find(p.sym);
+      if (it != s.branch.sol.end()) v[p.sym] = it->second.subs(v);
+    }
+  return v;
+}
+
+State state_values(const Solution& s, int index) {
+  const model::Model& m = s.model;
+  const exmap params = simulation_values(s);
+  const model::State& st = m.states[static_cast<std::size_t>(index)];
+  State out;
+  out.t = value(s, st.t, params);
+  if (std::isnan(out.t)) out.t = 0;  // a state without time: its instant is the origin
+  for (auto& c : m.coords) {
+    auto& [q, qd] = st.sym.at(c.name);
+    out.q.push_back(value(s, q, params));
+    out.qd.push_back(value(s, qd, params));
+  }
+  return out;
+}
+
+std::vector<Leg> legs(const Solution& s) {
+  const model::Model& m = s.model;
+  const exmap params = simulation_values(s);
+  std::vector<Leg> out;
+  for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
+    const model::Analysis& a = m.analyses[ai];
+    Leg leg;
+    leg.analysis = static_cast<int>(ai);
+    leg.from = a.from;
+    leg.to = a.to;
+    leg.start = state_values(s, a.from);
+    leg.expect = state_values(s, a.to);
+    for (std::size_t i = 0; i < m.coords.size(); ++i)
+      if (std::isnan(leg.start.q[i]) || std::isnan(leg.start.qd[i]))
+        leg.why_not = "state '" + m.states[a.from].name + "' does not fix " + m.coords[i].name +
+                      (std::isnan(leg.start.q[i]) ? "" : "_dot");
+    leg.stop.impulses = a.instant;
+    if (!leg.why_not.empty()) {
+      out.push_back(leg);
+      continue;
+    }
+    const model::State& S1 = m.states[a.from];
+    const model::State& S2 = m.states[a.to];
+    double t1 = value(s, S1.t, params), t2 = value(s, S2.t, params);
+    if (a.instant) {
+      // an impact: everything happens at the start
+      leg.stop.until = leg.start.t;
+      leg.target = "the impact at the start";
+      leg.expect.t = leg.start.t;
+    } else if (!std::isnan(t1) && !std::isnan(t2)) {
+      leg.start.t = t1;
+      leg.stop.until = t2;
+      leg.expect.t = t2;
+      leg.target = "t = " + num(t2) + " s";
+      if (!(t2 > t1)) leg.why_not = "state '" + S2.name + "' is not later than '" + S1.name + "'";
+    } else {
+      // the end is where S2's given values are reached: a rate given as zero (a turning point,
+      // crossed transversally), else a given position, else a given rate; lacking all, the
+      // coordinate that moves most
+      int pick = -1;
+      bool rate = false;
+      double best = -1;
+      for (std::size_t i = 0; i < m.coords.size(); ++i)
+        for (int r = 0; r < 2; ++r) {
+          double v1 = r ? leg.start.qd[i] : leg.start.q[i], v2 = r ? leg.expect.qd[i] : leg.expect.q[i];
+          if (std::isnan(v2) || v1 == v2) continue;
+          auto& [qs, qds] = S2.sym.at(m.coords[i].name);
+          bool given = S2.given.count(r ? qds : qs) > 0;
+          double score = given ? (r && v2 == 0 ? 3e300 : (r ? 1e300 : 2e300)) : (r ? -1 : std::fabs(v2 - v1) / std::max({std::fabs(v1), std::fabs(v2), 1e-300}));
+          if (score > best) {
+            best = score;
+            pick = static_cast<int>(i);
+            rate = r == 1;
+          }
+        }
+      const auto i = static_cast<std::size_t>(pick);
+      double q1 = leg.start.q[i], q2 = rate ? leg.expect.qd[i] : leg.expect.q[i];
+      leg.stop.when = (rate ? m.coords[i].qd : m.coords[i].q) - numerics::exact(q2);
+      // time enough: the distance at a tenth of the faster of the two rates (or 100 s)
+      double v = std::max(std::fabs(leg.start.qd[i]), std::fabs(leg.expect.qd[i]));
+      double dq = std::fabs(leg.expect.q[i] - q1);
+      leg.stop.until = leg.start.t + (!rate && v > 0 && !std::isnan(dq) ? std::max(10 * dq / v, 1.0) : 100.0);
+      leg.target = m.coords[i].name + (rate ? "_dot" : "") + " reaches " + num(q2);
+      leg.expect.t = kNaN;
+    }
+    // The solved values at S2 are the closed forms to check; S2's given values define the state
+    // (or assume it: balls locked at their stops). Without a solved value (a parameter or the
+    // time was solved for), the given ones are checked, all but the one that ends the run.
+    bool solved = false;
+    for (std::size_t i = 0; i < m.coords.size(); ++i) {
+      auto& [qs, qds] = S2.sym.at(m.coords[i].name);
+      solved = solved || (!S2.given.count(qs) && !std::isnan(leg.expect.q[i])) ||
+               (!S2.given.count(qds) && !std::isnan(leg.expect.qd[i]));
+    }
+    for (std::size_t i = 0; i < m.coords.size(); ++i) {
+      auto& [qs, qds] = S2.sym.at(m.coords[i].name);
+      if (S2.given.count(qs) && (solved || (leg.stop.when && leg.stop.when->has(m.coords[i].q)))) leg.expect.q[i] = kNaN;
+      if (S2.given.count(qds) && (solved || (leg.stop.when && leg.stop.when->has(m.coords[i].qd)))) leg.expect.qd[i] = kNaN;
+    }
+    // a power drive from rest: its couple P/ω is infinite at ω = 0
+    for (auto& e : m.effects) {
+      if (e.kind != "power" || !leg.why_not.empty()) continue;
+      exmap at = params;
+      for (std::size_t i = 0; i < m.coords.size(); ++i) {
+        at[m.coords[i].q] = numerics::exact(leg.start.q[i]);
+        at[m.coords[i].qd] = numerics::exact(leg.start.qd[i]);
+      }
+      ex w = m.omega(e.body).subs(at).evalf();
+      if (is_a<numeric>(w) && ex_to<numeric>(w).is_zero())
+        leg.why_not = "power drive '" + e.name + "' starts from rest, where its couple P/omega is infinite";
+    }
+    out.push_back(leg);
+  }
+  return out;
+}
+
+LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double tolerance) {
+  LegCheck c;
+  c.leg = leg;
+  Simulator sim(s.model, simulation_values(s), o);
+  c.run = sim.run(leg.start, leg.stop);
+  const model::Model& m = s.model;
+  const Sample& e = c.run.end;
+  c.ok = true;
+  for (std::size_t i = 0; i < m.coords.size(); ++i) {
+    // the scale of a coordinate: its size at the two states; of a rate: the largest seen
+    double qs = std::max({std::fabs(leg.start.q[i]), std::fabs(leg.expect.q[i]), 1e-300});
+    double vs = std::max({std::fabs(leg.start.qd[i]), std::fabs(leg.expect.qd[i]), 1e-300});
+    for (auto& smp : c.run.samples) vs = std::max(vs, std::fabs(smp.qd[i]));
+    for (auto& smp : c.run.samples) qs = std::max(qs, std::fabs(smp.q[i]));
+    auto compare = [&](double sim_v, double want, double scale, const std::string& what) {
+      if (std::isnan(want)) return;
+      double err = std::fabs(sim_v - want) / scale;
+      if (!(err <= c.worst) || std::isnan(err)) {
+        c.worst = std::isnan(err) ? std::numeric_limits<double>::infinity() : err;
+        c.worst_what = what + ": simulated " + num(sim_v) + ", closed form " + num(want);
+      }
+    };
+    compare(e.q[i], leg.expect.q[i], qs, m.coords[i].name + "@" + m.states[leg.to].name);
+    compare(e.qd[i], leg.expect.qd[i], vs, m.coords[i].name + "_dot@" + m.states[leg.to].name);
+  }
+  if (!std::isnan(leg.expect.t) && std::fabs(e.t - leg.expect.t) > 1e-12 * std::max(1.0, std::fabs(leg.expect.t))) {
+    c.worst = std::numeric_limits<double>::infinity();
+    c.worst_what = "the run ended at t = " + num(e.t) + " s, not at " + num(leg.expect.t);
+  }
+  bool any = false;
+  for (std::size_t i = 0; i < m.coords.size(); ++i) any = any || !std::isnan(leg.expect.q[i]) || !std::isnan(leg.expect.qd[i]);
+  c.ok = any && c.worst <= tolerance;
+  if (!any) c.worst_what = "no solved value at state '" + m.states[leg.to].name + "' to compare";
+  return c;
+}
+
+}  // namespace kinergy::simulate

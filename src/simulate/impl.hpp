@@ -1,0 +1,398 @@
+/// @file impl.hpp  The simulator's compiled equations, modes and workspace (private).
+#pragma once
+#include <array>
+#include <cmath>
+#include <optional>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/native.hpp"
+#include "kinergy/numeric/tape.hpp"
+#include "kinergy/simulate/simulate.hpp"
+
+namespace kinergy::simulate {
+
+using namespace GiNaC;
+using Vec = Eigen::VectorXd;
+using Mat = Eigen::MatrixXd;
+
+namespace detail {
+
+inline std::string num(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+/// A multi-output tape, run as machine code when it can be compiled.
+struct Kernel {
+  numerics::Tape tape;
+  std::optional<numerics::NativeKernel> native;
+  void operator()(const double* x, double* out) const {
+    if (native) (*native)(x, out);
+    else tape.eval(x, out);
+  }
+};
+
+// Offsets of a velocity v = J q̇ + b laid out as [v, J_0 … J_{n−1}, a0] in the kernel's outputs.
+struct RateAt {
+  std::size_t at = 0;
+};
+
+enum class FrictionMode { Slide, Stick };
+enum class ContactMode { Open, Rest };
+
+}  // namespace detail
+
+using namespace detail;
+
+struct Simulator::Impl {
+  model::Model m;  ///< a copy: the simulator outlives the caller's model
+  Options o;
+  exmap values;  ///< parameter symbol → exact value
+  Equations eq;
+  std::size_t n = 0, nc = 0, nw = 0;
+  // work states: one per non-conservative smooth force, then one per friction effect
+  std::vector<std::pair<std::string, std::size_t>> work_names;
+  // --- the right-hand side kernel: inputs [t, q, q̇] ---
+  Kernel rhs_k, aux_k;
+  std::size_t o_M = 0, o_f = 0, o_P = 0, o_A = 0, o_gamma = 0;
+  std::vector<std::size_t> o_power;                 // of each non-conservative force
+  std::vector<std::pair<RateAt, RateAt>> o_fric;    // x, y
+  std::vector<std::pair<RateAt, RateAt>> o_cont;    // normal, tangent
+  // --- the auxiliary kernel: T, V, g, ∂g/∂t, gaps, the stop expression, impulses ---
+  std::size_t a_T = 0, a_V = 0, a_g = 0, a_gt = 0, a_gap = 0, a_stop = 0, a_imp = 0;
+  bool has_stop = false;
+  std::vector<double> x, out, aux;
+  // --- modes ---
+  std::vector<FrictionMode> fmode;
+  std::vector<std::array<double, 2>> fdir;    // sliding: last slip direction
+  std::vector<Eigen::Matrix2d> fbasis;        // sticking: the held directions (rows), 1 or 2
+  std::vector<int> frows;                     // sticking: how many rows
+  std::vector<double> flimit;
+  std::vector<ContactMode> cmode;
+  std::vector<double> ce;
+  // --- workspace ---
+  Mat M, B;
+  Vec f, b, qdd, lambda;
+  Eigen::LDLT<Mat> ldlt;
+  std::size_t rhs_calls = 0;
+  double rest_time = 0;
+
+  Impl(const model::Model& mm, const exmap& vals, const Options& opt) : m(mm), o(opt), values(vals) {
+    eq = equations_of_motion(m);
+    n = eq.q.size();
+    nc = eq.g.size();
+    if (n == 0) throw SimulationError("the scene has no coordinates: nothing moves", "add coordinates to the bodies");
+    compile();
+    fmode.assign(eq.friction.size(), FrictionMode::Slide);
+    fdir.assign(eq.friction.size(), {1, 0});
+    fbasis.assign(eq.friction.size(), Eigen::Matrix2d::Zero());
+    frows.assign(eq.friction.size(), 0);
+    cmode.assign(eq.contacts.size(), ContactMode::Open);
+    M.resize(n, n);
+    f.resize(n);
+    qdd.resize(n);
+    check_method();
+  }
+
+  // ------------------------------------------------------------ compiling
+  ex value_of(const ex& e, const exmap& values, const std::string& what) const {
+    ex v = e.subs(values);
+    // every symbol left must be a coordinate, a rate or t
+    exset syms;
+    for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
+      if (is_a<symbol>(*it)) syms.insert(*it);
+    for (const ex& s : syms) {
+      bool ok = s.is_equal(m.t);
+      for (std::size_t i = 0; i < n && !ok; ++i) ok = s.is_equal(eq.q[i]) || s.is_equal(eq.qd[i]);
+      if (ok) continue;
+      for (auto& p : m.params)
+        if (p.sym.is_equal(s))
+          throw SceneError(p.pos, "parameter '" + p.name + "' has no value, and " + what + " needs a number",
+                           "give '" + p.name + "' a value to simulate the scene");
+      throw SceneError(SourcePos{m.file, 0, 0}, "'" + model::text(s) + "' in " + what + " has no value",
+                       "give every quantity of the scene a value to simulate it");
+    }
+    return v;
+  }
+
+  std::size_t add_rate(std::vector<ex>& outs, const LinearRate& r, const exmap& values, const std::string& what) {
+    std::size_t at = outs.size();
+    outs.push_back(value_of(r.v, values, what));
+    for (auto& j : r.J) outs.push_back(value_of(j, values, what));
+    outs.push_back(value_of(r.a0, values, what));
+    return at;
+  }
+
+  Kernel build(const std::vector<ex>& outs) const {
+    std::vector<ex> inputs{m.t};
+    for (auto& q : eq.q) inputs.push_back(q);
+    for (auto& qd : eq.qd) inputs.push_back(qd);
+    Kernel k{numerics::Tape::compile(outs, inputs), std::nullopt};
+    if (o.native) k.native = numerics::NativeKernel::build(k.tape);
+    return k;
+  }
+
+  void compile() {
+    std::vector<ex> outs;
+    o_M = outs.size();
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j <= i; ++j) outs.push_back(value_of(eq.M(i, j), values, "the mass matrix"));
+    // f = Σ Q (smooth effects) − c
+    o_f = outs.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      ex fi = -eq.c[i];
+      for (auto& F : eq.forces) fi += F.Q[i];
+      outs.push_back(value_of(fi, values, "the equations of motion"));
+    }
+    o_P = outs.size();
+    for (auto& F : eq.forces) {
+      if (F.conservative) continue;
+      o_power.push_back(outs.size());
+      outs.push_back(value_of(F.power, values, "the power of " + m.effects[F.effect].name));
+      work_names.emplace_back(m.effects[F.effect].name, 0);
+    }
+    o_A = outs.size();
+    for (std::size_t r = 0; r < nc; ++r)
+      for (std::size_t i = 0; i < n; ++i) outs.push_back(value_of(eq.A(r, i), values, "a constraint"));
+    o_gamma = outs.size();
+    for (std::size_t r = 0; r < nc; ++r) outs.push_back(value_of(eq.gamma[r], values, "a constraint"));
+    for (auto& F : eq.friction) {
+      const std::string what = "friction '" + m.effects[F.effect].name + "'";
+      RateAt rx{add_rate(outs, F.x, values, what)}, ry{};
+      if (!F.rotary) ry.at = add_rate(outs, F.y, values, what);
+      o_fric.emplace_back(rx, ry);
+      work_names.emplace_back(m.effects[F.effect].name, 0);
+      ex lim = value_of(F.limit, values, what);
+      if (!is_a<numeric>(lim.evalf()))
+        throw SceneError(m.effects[F.effect].pos, what + ": its normal force must be a number to simulate",
+                         "give the normal force (or the friction couple) as a constant");
+      flimit.push_back(ex_to<numeric>(lim.evalf()).to_double());
+    }
+    for (auto& C : eq.contacts) {
+      const std::string what = "contact '" + m.effects[C.effect].name + "'";
+      RateAt rn{add_rate(outs, C.normal, values, what)};
+      RateAt rt{add_rate(outs, C.tangent, values, what)};
+      o_cont.emplace_back(rn, rt);
+      ex e = value_of(C.e, values, what).evalf();
+      ce.push_back(is_a<numeric>(e) ? ex_to<numeric>(e).to_double() : 0);
+    }
+    for (std::size_t k = 0; k < work_names.size(); ++k) work_names[k].second = k;
+    nw = work_names.size();
+    rhs_k = build(outs);
+    out.resize(outs.size());
+
+    build_aux(std::nullopt);
+    x.resize(1 + 2 * n);
+  }
+
+  // T, V, g, ∂g/∂t, the contact gaps, the impulses and (last) the stop expression
+  void build_aux(const std::optional<ex>& when) {
+    std::vector<ex> a;
+    a_T = a.size();
+    a.push_back(value_of(eq.T, values, "the kinetic energy"));
+    a_V = a.size();
+    a.push_back(value_of(eq.V, values, "the potential energy"));
+    a_g = a.size();
+    for (auto& g : eq.g) a.push_back(value_of(g, values, "a constraint"));
+    a_gt = a.size();
+    for (auto& g : eq.gt) a.push_back(value_of(g, values, "a constraint"));
+    a_gap = a.size();
+    for (auto& C : eq.contacts) a.push_back(value_of(C.gap, values, "contact '" + m.effects[C.effect].name + "'"));
+    a_imp = a.size();
+    for (auto& I : eq.impulses)
+      for (auto& P : I.P) a.push_back(value_of(P, values, "impulse '" + m.effects[I.effect].name + "'"));
+    a_stop = a.size();
+    has_stop = when.has_value();
+    if (when) a.push_back(value_of(*when, values, "the stop condition"));
+    aux_k = build(a);
+    aux.resize(a.size());
+  }
+
+  void check_method() const {
+    if (o.method != Method::Symplectic) return;
+    // H = ½ pᵀ M⁻¹ p + V(q) is separable only with a constant M and forces of position alone
+    std::string why;
+    for (std::size_t i = 0; i < n && why.empty(); ++i)
+      for (std::size_t j = 0; j < n && why.empty(); ++j)
+        for (auto& q : eq.q)
+          if (eq.M(i, j).has(q)) why = "its mass matrix depends on " + model::text(q);
+    for (auto& c : eq.c)
+      if (!c.is_zero() && why.empty()) why = "it has velocity-product terms";
+    for (auto& F : eq.forces)
+      if (!F.conservative && why.empty()) why = "effect '" + m.effects[F.effect].name + "' is not conservative";
+    if (why.empty() && nc) why = "it has constraints";
+    if (why.empty() && !eq.friction.empty()) why = "it has friction";
+    if (why.empty() && !eq.contacts.empty()) why = "it has contacts";
+    if (why.empty() && !eq.impulses.empty()) why = "it has impulses";
+    if (!why.empty())
+      throw SimulationError("the symplectic method needs a conservative scene with separable energy, but " + why,
+                            "use --method dopri5, rkf78 or bs");
+  }
+
+  // ------------------------------------------------------------ evaluation
+  void load(double t, const double* y) {
+    x[0] = t;
+    std::copy(y, y + 2 * n, x.begin() + 1);
+  }
+  void eval_aux(double t, const double* y) {
+    load(t, y);
+    aux_k(x.data(), aux.data());
+  }
+  double T() const { return aux[a_T]; }
+  double V() const { return aux[a_V]; }
+
+  // the rows J of a velocity laid out at r, its value and a0
+  double rate_v(const RateAt& r) const { return out[r.at]; }
+  const double* rate_J(const RateAt& r) const { return out.data() + r.at + 1; }
+  double rate_a0(const RateAt& r) const { return out[r.at + 1 + n]; }
+
+  void fill_M() {
+    for (std::size_t i = 0, k = o_M; i < n; ++i)
+      for (std::size_t j = 0; j <= i; ++j, ++k) M(i, j) = M(j, i) = out[k];
+  }
+
+  // The rows B q̈ = b of every constraint active now: holonomic ones, sticking friction and
+  // resting contacts (with their tangential rows when rough).
+  void constraint_rows(std::vector<std::string>* names = nullptr) {
+    std::size_t r = nc;
+    for (std::size_t k = 0; k < eq.friction.size(); ++k)
+      if (fmode[k] == FrictionMode::Stick) r += static_cast<std::size_t>(frows[k]);
+    for (std::size_t k = 0; k < eq.contacts.size(); ++k)
+      if (cmode[k] == ContactMode::Rest) r += eq.contacts[k].stick ? 2 : 1;
+    B.setZero(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(n));
+    b.setZero(static_cast<Eigen::Index>(r));
+    std::size_t row = 0;
+    for (std::size_t c = 0; c < nc; ++c, ++row) {
+      for (std::size_t i = 0; i < n; ++i) B(row, i) = out[o_A + c * n + i];
+      b(row) = out[o_gamma + c];
+      if (names) names->push_back("constraint");
+    }
+    for (std::size_t k = 0; k < eq.friction.size(); ++k) {
+      if (fmode[k] != FrictionMode::Stick) continue;
+      auto [rx, ry] = o_fric[k];
+      for (int s = 0; s < frows[k]; ++s, ++row) {
+        // C v = 0 held: C (J q̈ + a0) = 0
+        double cx = fbasis[k](s, 0), cy = eq.friction[k].rotary ? 0 : fbasis[k](s, 1);
+        for (std::size_t i = 0; i < n; ++i)
+          B(row, i) = cx * rate_J(rx)[i] + (eq.friction[k].rotary ? 0 : cy * rate_J(ry)[i]);
+        b(row) = -(cx * rate_a0(rx) + (eq.friction[k].rotary ? 0 : cy * rate_a0(ry)));
+        if (names) names->push_back("friction");
+      }
+    }
+    for (std::size_t k = 0; k < eq.contacts.size(); ++k) {
+      if (cmode[k] != ContactMode::Rest) continue;
+      auto [rn, rt] = o_cont[k];
+      for (std::size_t i = 0; i < n; ++i) B(row, i) = rate_J(rn)[i];
+      b(row++) = -rate_a0(rn);
+      if (names) names->push_back("contact");
+      if (eq.contacts[k].stick) {
+        for (std::size_t i = 0; i < n; ++i) B(row, i) = rate_J(rt)[i];
+        b(row++) = -rate_a0(rt);
+        if (names) names->push_back("contact");
+      }
+    }
+  }
+
+  // M x = rhs + Bᵀ λ,  B x = c:  by the Schur complement on M's LDLᵀ when M is positive
+  // definite, else the whole saddle-point system by full-pivot LU.
+  void solve_kkt(const Vec& rhs, const Mat& Bm, const Vec& c, Vec& xo, Vec& lam, double t) {
+    ldlt.compute(M);
+    const bool pd = ldlt.info() == Eigen::Success && ldlt.isPositive() && (ldlt.vectorD().array() > 0).all() &&
+                    ldlt.vectorD().minCoeff() > 1e-14 * ldlt.vectorD().maxCoeff();
+    if (Bm.rows() == 0) {
+      if (!pd) singular(t);
+      xo = ldlt.solve(rhs);
+      lam.resize(0);
+      return;
+    }
+    if (pd) {
+      // x = M⁻¹(rhs + Bᵀλ), B x = c  ⇒  (B M⁻¹ Bᵀ) λ = c − B M⁻¹ rhs
+      Vec y = ldlt.solve(rhs);
+      Mat X = ldlt.solve(Bm.transpose());
+      Mat S = Bm * X;
+      Eigen::FullPivLU<Mat> lu(S);
+      if (!lu.isInvertible()) singular(t, "two constraints hold the same motion (their rows are dependent)");
+      lam = lu.solve(c - Bm * y);
+      xo = y + X * lam;
+      return;
+    }
+    const Eigen::Index N = M.rows(), R = Bm.rows();
+    Mat K = Mat::Zero(N + R, N + R);
+    K.topLeftCorner(N, N) = M;
+    K.topRightCorner(N, R) = -Bm.transpose();
+    K.bottomLeftCorner(R, N) = Bm;
+    Vec r(N + R);
+    r << rhs, c;
+    Eigen::FullPivLU<Mat> lu(K);
+    if (!lu.isInvertible()) singular(t);
+    Vec s = lu.solve(r);
+    xo = s.head(N);
+    lam = s.tail(R);
+  }
+
+  [[noreturn]] void singular(double t, const std::string& why = "") const {
+    throw SimulationError("the equations of motion are singular at t = " + num(t) + " s" +
+                              (why.empty() ? ": M(q) is not positive definite (a coordinate that moves no mass?)" : ": " + why),
+                          "give every coordinate a body with mass or inertia, or remove the redundant constraint");
+  }
+
+  // dy/dt = [q̇, q̈, P…]
+  void rhs(const double* y, double t, double* dy) {
+    ++rhs_calls;
+    load(t, y);
+    rhs_k(x.data(), out.data());
+    fill_M();
+    for (std::size_t i = 0; i < n; ++i) f(static_cast<Eigen::Index>(i)) = out[o_f + i];
+    std::size_t w = 0;
+    for (std::size_t k = 0; k < o_power.size(); ++k) dy[2 * n + w++] = out[o_power[k]];
+    // Coulomb friction while sliding: Q = −μN Jᵀ v̂ (v̂ the slip direction; at zero slip the
+    // direction it starts to slip in), power −μN |v|
+    for (std::size_t k = 0; k < eq.friction.size(); ++k, ++w) {
+      auto [rx, ry] = o_fric[k];
+      if (fmode[k] == FrictionMode::Stick) {
+        dy[2 * n + w] = 0;  // the point (or body) does not move: no work
+        continue;
+      }
+      const bool rot = eq.friction[k].rotary;
+      double vx = rate_v(rx), vy = rot ? 0 : rate_v(ry);
+      double sp = std::hypot(vx, vy);
+      double dx = sp > 0 ? vx / sp : fdir[k][0], dy_ = sp > 0 ? vy / sp : fdir[k][1];
+      for (std::size_t i = 0; i < n; ++i)
+        f(static_cast<Eigen::Index>(i)) -= flimit[k] * (dx * rate_J(rx)[i] + (rot ? 0 : dy_ * rate_J(ry)[i]));
+      dy[2 * n + w] = -flimit[k] * sp;
+    }
+    constraint_rows();
+    if (B.rows() == 0) {
+      ldlt.compute(M);
+      if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0).all()) singular(t);
+      qdd = ldlt.solve(f);
+      lambda.resize(0);
+    } else {
+      solve_kkt(f, B, b, qdd, lambda, t);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      dy[i] = y[n + i];
+      dy[n + i] = qdd(static_cast<Eigen::Index>(i));
+      if (!std::isfinite(dy[n + i])) undefined(t);
+    }
+  }
+
+  /// One run from s0 (run.cpp).
+  Run run(const State& s0, const Stop& stop);
+
+  [[noreturn]] void undefined(double t) const {
+    std::string who;
+    for (auto& F : eq.forces)
+      if (m.effects[F.effect].kind == "power") who = " (a power drive gives the couple P/omega: it is infinite at omega = 0)";
+    throw SimulationError("the acceleration is not a number at t = " + num(t) + " s" + who,
+                          "start the motion where every effect is defined (a power drive needs the body turning)");
+  }
+};
+
+}  // namespace kinergy::simulate

@@ -1,0 +1,843 @@
+// One simulation run: steppers, events located to the tolerance, impacts, friction and contact
+// modes, constraint projection, and the energy audit.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include <boost/numeric/odeint.hpp>
+
+#include "impl.hpp"
+
+namespace kinergy::simulate {
+
+namespace odeint = boost::numeric::odeint;
+using state_type = std::vector<double>;
+
+namespace {
+
+struct Sys {
+  Simulator::Impl* p;
+  void operator()(const state_type& y, state_type& dy, double t) const { p->rhs(y.data(), t, dy.data()); }
+};
+
+/// One step of a method: accepted (y, t advanced, dt the next step's suggestion) or rejected
+/// (dt smaller). Fixed-step methods always accept and keep dt.
+class Stepper {
+public:
+  virtual ~Stepper() = default;
+  virtual bool step(Sys& s, state_type& y, double& t, double& dt) = 0;
+  virtual void reset() = 0;
+  virtual bool adaptive() const { return true; }
+};
+
+template <class C>
+class Controlled : public Stepper {
+public:
+  explicit Controlled(C c) : c_(std::move(c)) {}
+  bool step(Sys& s, state_type& y, double& t, double& dt) override {
+    return c_.try_step(s, y, t, dt) == odeint::success;
+  }
+  void reset() override {
+    if constexpr (requires(C& c) { c.reset(); }) c_.reset();
+  }
+private:
+  C c_;
+};
+
+class Rk4 : public Stepper {
+public:
+  bool step(Sys& s, state_type& y, double& t, double& dt) override {
+    st_.do_step(s, y, t, dt);
+    t += dt;
+    return true;
+  }
+  void reset() override {}
+  bool adaptive() const override { return false; }
+private:
+  odeint::runge_kutta4<state_type> st_;
+};
+
+/// McLachlan's 4th-order symplectic Runge–Kutta–Nyström method on H = ½ pᵀ M⁻¹ p + V(q),
+/// M constant: q' = M⁻¹ p, p' = Q(q). Converts y = [q, q̇] to (q, p = M q̇) and back.
+class Symplectic : public Stepper {
+public:
+  explicit Symplectic(Simulator::Impl& p) : p_(p) {}
+  bool step(Sys&, state_type& y, double& t, double& dt) override {
+    const std::size_t n = p_.n;
+    if (!ready_) {
+      // M is constant: take it (and its factorization) once
+      p_.load(t, y.data());
+      p_.rhs_k(p_.x.data(), p_.out.data());
+      p_.fill_M();
+      ldlt_.compute(p_.M);
+      Minv_ = ldlt_.solve(Mat::Identity(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n)));
+      M_ = p_.M;
+      ready_ = true;
+    }
+    state_type q(y.begin(), y.begin() + static_cast<long>(n)), pm(n);
+    Eigen::Map<const Vec> qd(y.data() + n, static_cast<Eigen::Index>(n));
+    Eigen::Map<Vec>(pm.data(), static_cast<Eigen::Index>(n)) = M_ * qd;
+    auto coord = [this](const state_type& pp, state_type& dq) {
+      const auto k = static_cast<Eigen::Index>(pp.size());
+      Eigen::Map<Vec>(dq.data(), k) = Minv_ * Eigen::Map<const Vec>(pp.data(), k);
+    };
+    auto momentum = [this, n, t](const state_type& qq, state_type& dp) {
+      // p' = Q(q) (the forces depend on q alone: checked when the simulator was built)
+      std::copy(qq.begin(), qq.end(), y0_.begin());
+      std::fill(y0_.begin() + static_cast<long>(n), y0_.end(), 0.0);
+      p_.load(t, y0_.data());
+      p_.rhs_k(p_.x.data(), p_.out.data());
+      ++p_.rhs_calls;
+      for (std::size_t i = 0; i < n; ++i) dp[i] = p_.out[p_.o_f + i];
+    };
+    y0_.resize(2 * n);
+    st_.do_step(std::make_pair(coord, momentum), std::make_pair(std::ref(q), std::ref(pm)), t, dt);
+    t += dt;
+    std::copy(q.begin(), q.end(), y.begin());
+    Eigen::Map<Vec>(y.data() + n, static_cast<Eigen::Index>(n)) = Minv_ * Eigen::Map<const Vec>(pm.data(), static_cast<Eigen::Index>(n));
+    return true;
+  }
+  void reset() override {}
+  bool adaptive() const override { return false; }
+private:
+  Simulator::Impl& p_;
+  odeint::symplectic_rkn_sb3a_mclachlan<state_type> st_;
+  Eigen::LDLT<Mat> ldlt_;
+  Mat M_, Minv_;
+  bool ready_ = false;
+  state_type y0_;
+};
+
+std::unique_ptr<Stepper> make_stepper(Simulator::Impl& p) {
+  const double tol = p.o.tol;
+  switch (p.o.method) {
+    case Method::Dopri5:
+      return std::make_unique<Controlled<decltype(odeint::make_controlled(tol, tol, odeint::runge_kutta_dopri5<state_type>()))>>(
+          odeint::make_controlled(tol, tol, odeint::runge_kutta_dopri5<state_type>()));
+    case Method::Rkf78:
+      return std::make_unique<Controlled<decltype(odeint::make_controlled(tol, tol, odeint::runge_kutta_fehlberg78<state_type>()))>>(
+          odeint::make_controlled(tol, tol, odeint::runge_kutta_fehlberg78<state_type>()));
+    case Method::BulirschStoer:
+      return std::make_unique<Controlled<odeint::bulirsch_stoer<state_type>>>(odeint::bulirsch_stoer<state_type>(tol, tol));
+    case Method::Rk4: return std::make_unique<Rk4>();
+    case Method::Symplectic: return std::make_unique<Symplectic>(p);
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+namespace {
+
+/// The state of one run: the integration, its events and its bookkeeping.
+class Runner {
+public:
+  Runner(Simulator::Impl& p, const Stop& stop) : p_(p), stop_(stop), sys_{&p} {}
+
+  Run go(const State& s0) {
+    const std::size_t n = p_.n;
+    if (s0.q.size() != n || s0.qd.size() != n)
+      throw SimulationError("the initial state has " + std::to_string(s0.q.size()) + " positions and " +
+                                std::to_string(s0.qd.size()) + " rates for " + std::to_string(n) + " coordinates",
+                            "give a position and a rate for every coordinate");
+    t_ = s0.t;
+    span_ = stop_.until - t_;
+    if (!(span_ >= 0)) throw SimulationError("the run ends before it starts (until = " + num(stop_.until) + " s)", "give --until a time after the start");
+    p_.rest_time = std::max(p_.o.tol, 1e-13) * span_;
+    y_.assign(2 * n + p_.nw, 0.0);
+    std::copy(s0.q.begin(), s0.q.end(), y_.begin());
+    std::copy(s0.qd.begin(), s0.qd.end(), y_.begin() + static_cast<long>(n));
+    check_finite(y_, "the initial state");
+    stepper_ = make_stepper(p_);
+    if (!stepper_->adaptive() && p_.o.step <= 0) fixed_dt_ = std::max(span_, 1e-300) / 1e4;
+    else fixed_dt_ = p_.o.step;
+
+    start();
+    if (p_.has_stop) {
+      p_.eval_aux(t_, y_.data());
+      double s = p_.aux[p_.a_stop];
+      stop_sign_ = s > 0 ? 1 : (s < 0 ? -1 : 0);
+    }
+    p_.eval_aux(t_, y_.data());
+    run_.E0 = p_.T() + p_.V();
+    max_T_ = p_.T();
+    record();
+    if (span_ > 0) integrate();
+    finish();
+    return std::move(run_);
+  }
+
+private:
+  Simulator::Impl& p_;
+  Stop stop_;
+  Sys sys_;
+  std::unique_ptr<Stepper> stepper_;
+  state_type y_;
+  double t_ = 0, span_ = 0, fixed_dt_ = 0, max_T_ = 0;
+  int stop_sign_ = 0;
+  double impulse_work_ = 0;
+  Run run_;
+
+  void check_finite(const state_type& y, const std::string& what) const {
+    for (double v : y)
+      if (!std::isfinite(v)) throw SimulationError(what + " is not a number", "give finite positions and rates");
+  }
+
+  std::string contact_name(std::size_t k) const { return p_.m.effects[p_.eq.contacts[k].effect].name; }
+  std::string friction_name(std::size_t k) const { return p_.m.effects[p_.eq.friction[k].effect].name; }
+  void note(const std::string& s) { run_.log.push_back("t = " + num(t_) + " s: " + s); }
+
+  // ---------------------------------------------------------------- the start
+  void start() {
+    const std::size_t n = p_.n;
+    project();
+    // given impulses act once, at the start:  M (q̇⁺ − q̇⁻) = Σ P_given + Aᵀ Λ
+    if (!p_.eq.impulses.empty() && stop_.impulses) {
+      p_.eval_aux(t_, y_.data());
+      Vec P = Vec::Zero(static_cast<Eigen::Index>(n));
+      for (std::size_t k = 0; k < p_.eq.impulses.size(); ++k)
+        for (std::size_t i = 0; i < n; ++i) P(static_cast<Eigen::Index>(i)) += p_.aux[p_.a_imp + k * n + i];
+      double T0 = p_.T();
+      jump(P, {}, {});
+      p_.eval_aux(t_, y_.data());
+      impulse_work_ = p_.T() - T0;  // the work of the given impulses, ½ P·(q̇⁻ + q̇⁺)
+      note("the given impulse(s) act");
+    }
+    // contacts: penetrated (an error), touching and approaching (an impact now), touching at rest
+    p_.eval_aux(t_, y_.data());
+    std::vector<double> dydt(y_.size());
+    p_.rhs(y_.data(), t_, dydt.data());
+    std::vector<std::size_t> strike;
+    for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
+      double gap = p_.aux[p_.a_gap + k], vn = p_.rate_v(p_.o_cont[k].first);
+      double tol = gap_tol();
+      if (gap < -tol)
+        throw SimulationError("contact '" + contact_name(k) + "' is penetrated at the start (gap " + num(gap) + " m)",
+                              "start with the parties apart or touching");
+      if (gap <= tol) {
+        if (vn < 0) strike.push_back(k);
+        else if (vn <= vel_tol()) p_.cmode[k] = ContactMode::Rest;
+      }
+    }
+    if (!strike.empty()) impact(strike);
+    settle_contacts();
+    // friction that starts without slip: sticks if it can, else slips the way the load pushes
+    p_.rhs(y_.data(), t_, dydt.data());
+    for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
+      auto [rx, ry] = p_.o_fric[k];
+      double vx = p_.rate_v(rx), vy = p_.eq.friction[k].rotary ? 0 : p_.rate_v(ry);
+      double sp = std::hypot(vx, vy);
+      if (sp <= vel_tol()) stick_or_slip(k, false);
+      else p_.fdir[k] = {vx / sp, vy / sp};
+    }
+  }
+
+  double gap_tol() const {
+    // touching within rounding of the positions themselves
+    double s = 1e-300;
+    for (std::size_t i = 0; i < p_.n; ++i) s = std::max(s, std::fabs(y_[i]));
+    return 1e-12 * std::max(s, 1.0);
+  }
+  double vel_tol() const {
+    double s = 0;
+    for (std::size_t i = 0; i < p_.n; ++i) s = std::max(s, std::fabs(y_[p_.n + i]));
+    return 1e-13 * std::max(s, 1e-300);
+  }
+
+  // ---------------------------------------------------------------- the loop
+  void integrate() {
+    double dt = stepper_->adaptive() ? std::min(span_ * 1e-3, 1e-3) : fixed_dt_;
+    std::vector<double> ev0 = events(t_, y_);
+    std::size_t since_progress = 0;
+    while (t_ < stop_.until) {
+      if (run_.steps >= p_.o.max_steps)
+        throw SimulationError("the run took more than " + std::to_string(p_.o.max_steps) + " steps and stopped at t = " + num(t_) + " s",
+                              "loosen --tol, shorten --until, or raise the step limit");
+      double remaining = stop_.until - t_;
+      bool last = dt >= remaining;
+      double h = last ? remaining : dt;
+      state_type y = y_;
+      double t = t_, hh = h;
+      if (!stepper_->step(sys_, y, t, hh)) {
+        ++run_.rejected;
+        dt = hh;
+        if (dt < 1e-14 * std::max(std::fabs(t_), span_))
+          throw SimulationError("the step size fell to " + num(dt) + " s at t = " + num(t_) + " s: the motion is too stiff or singular there",
+                                "loosen --tol, or look for an effect that grows without bound");
+        continue;
+      }
+      if (last && stepper_->adaptive()) t = stop_.until;
+      if (stepper_->adaptive()) dt = hh;
+      check_finite(y, "the state at t = " + num(t) + " s");
+      std::vector<double> ev1 = events(t, y);
+      // the first event inside the step, located to the tolerance
+      int which = -1;
+      double when = t - t_;
+      state_type ywhen;
+      // (the stop condition, last, wins a tie: a state reached as a contact touches is the state)
+      for (std::size_t i = 0; i < ev1.size(); ++i) {
+        if (!(ev0[i] > 0 && ev1[i] <= 0)) continue;
+        double s;
+        state_type ys;
+        locate(i, ev0[i], ev1[i], t - t_, s, ys);
+        const bool is_stop = i + 1 == ev1.size();
+        if (which < 0 || s < when || (is_stop && s <= when * (1 + 1e-12))) {
+          which = static_cast<int>(i);
+          when = s;
+          ywhen = ys;
+        }
+      }
+      ++run_.steps;
+      if (which < 0) {
+        t_ = t;
+        y_ = y;
+        after_step();
+        ev0 = events(t_, y_);
+      } else {
+        t_ = t_ + when;
+        y_ = ywhen;
+        if (!handle(static_cast<std::size_t>(which))) break;  // the stop condition
+        stepper_->reset();
+        ev0 = events(t_, y_);
+        dt = std::min(dt, next_dt_);
+        next_dt_ = std::numeric_limits<double>::infinity();
+      }
+      if (p_.o.progress && ++since_progress >= 256) {
+        since_progress = 0;
+        p_.o.progress((t_ - (stop_.until - span_)) / span_);
+      }
+    }
+    if (p_.o.progress) p_.o.progress(1.0);
+  }
+
+  double next_dt_ = std::numeric_limits<double>::infinity();
+
+  void after_step() {
+    project();
+    // a sliding point's direction: the reference for "the slip has stopped" (v·d crosses zero)
+    for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
+      if (p_.fmode[k] != FrictionMode::Slide) continue;
+      auto [rx, ry] = p_.o_fric[k];
+      double vx = p_.rate_v(rx), vy = p_.eq.friction[k].rotary ? 0 : p_.rate_v(ry);
+      double sp = std::hypot(vx, vy);
+      if (sp > 0) p_.fdir[k] = {vx / sp, vy / sp};
+    }
+    p_.eval_aux(t_, y_.data());
+    max_T_ = std::max(max_T_, p_.T());
+    if (p_.o.record) record();
+  }
+
+  // The integration from (t_, y_) over s, by the same method (adaptive methods: as many
+  // steps as the tolerance needs; fixed-step methods: one step of s).
+  state_type advance(double s) {
+    state_type y = y_;
+    if (s <= 0) return y;
+    auto st = make_stepper(p_);
+    double t = t_, target = t_ + s, dt = s;
+    if (!st->adaptive()) {
+      st->step(sys_, y, t, s);
+      return y;
+    }
+    for (int guard = 0; guard < 100000 && t < target; ++guard) {
+      double rem = target - t;
+      bool last = dt >= rem;
+      double h = last ? rem : dt;
+      if (st->step(sys_, y, t, h)) {
+        if (last) t = target;
+      }
+      dt = h;
+    }
+    return y;
+  }
+
+  // Illinois (modified regula falsi) on the event's value along the step: φ(0) > 0 ≥ φ(h).
+  void locate(std::size_t i, double fa, double fb, double h, double& s_out, state_type& y_out) {
+    double a = 0, b = h;
+    state_type yb;
+    bool have_b = false;
+    int side = 0;
+    const double tiny = 4 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(t_) + h, 1e-300);
+    for (int it = 0; it < 200 && b - a > tiny; ++it) {
+      double s = b - fb * (b - a) / (fb - fa);
+      if (!(s > a && s < b)) s = 0.5 * (a + b);
+      state_type ys = advance(s);
+      double fs = events(t_ + s, ys)[i];
+      if (fs > 0) {
+        a = s;
+        fa = fs;
+        if (side == -1) fb *= 0.5;
+        side = -1;
+      } else {
+        b = s;
+        fb = fs;
+        yb = std::move(ys);
+        have_b = true;
+        if (side == 1) fa *= 0.5;
+        side = 1;
+        if (fs == 0) break;
+      }
+    }
+    s_out = b;
+    y_out = have_b ? yb : advance(b);
+  }
+
+  // ---------------------------------------------------------------- events
+  // Each event's value is positive while the current mode holds: an open contact's gap, a
+  // resting contact's normal force, a sliding point's v·d, a sticking point's μN − |F|, and
+  // the stop condition (signed to start positive).
+  std::vector<double> events(double t, const state_type& y) {
+    std::vector<double> ev;
+    std::vector<double> dydt(y.size());
+    p_.rhs(y.data(), t, dydt.data());
+    std::vector<double> lam(p_.lambda.data(), p_.lambda.data() + p_.lambda.size());
+    p_.eval_aux(t, y.data());
+    std::size_t row = p_.nc;
+    std::vector<std::size_t> frow(p_.eq.friction.size()), crow(p_.eq.contacts.size());
+    for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
+      frow[k] = row;
+      if (p_.fmode[k] == FrictionMode::Stick) row += static_cast<std::size_t>(p_.frows[k]);
+    }
+    for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
+      crow[k] = row;
+      if (p_.cmode[k] == ContactMode::Rest) row += p_.eq.contacts[k].stick ? 2 : 1;
+    }
+    for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k)
+      ev.push_back(p_.cmode[k] == ContactMode::Open ? p_.aux[p_.a_gap + k] : lam[crow[k]]);
+    for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
+      auto [rx, ry] = p_.o_fric[k];
+      if (p_.fmode[k] == FrictionMode::Slide) {
+        double vx = p_.rate_v(rx), vy = p_.eq.friction[k].rotary ? 0 : p_.rate_v(ry);
+        ev.push_back(vx * p_.fdir[k][0] + vy * p_.fdir[k][1]);
+      } else {
+        auto F = stick_force(k, lam, frow[k]);
+        ev.push_back(p_.flimit[k] - std::hypot(F[0], F[1]));
+      }
+    }
+    ev.push_back(p_.has_stop && stop_sign_ != 0 ? stop_sign_ * p_.aux[p_.a_stop] : 1.0);
+    return ev;
+  }
+
+  std::array<double, 2> stick_force(std::size_t k, const std::vector<double>& lam, std::size_t row) const {
+    // the friction force F = Σ λ_r c_r over the held directions c_r
+    std::array<double, 2> F{0, 0};
+    for (int r = 0; r < p_.frows[k]; ++r) {
+      F[0] += lam[row + static_cast<std::size_t>(r)] * p_.fbasis[k](r, 0);
+      F[1] += lam[row + static_cast<std::size_t>(r)] * p_.fbasis[k](r, 1);
+    }
+    return F;
+  }
+
+  /// @returns false when the run ends here (the stop condition).
+  bool handle(std::size_t i) {
+    const std::size_t nct = p_.eq.contacts.size(), nf = p_.eq.friction.size();
+    p_.eval_aux(t_, y_.data());
+    if (p_.o.record) record();
+    if (i == nct + nf) {
+      run_.stopped = true;
+      return false;
+    }
+    if (i < nct) {
+      if (p_.cmode[i] == ContactMode::Open) {
+        // every open contact touching and approaching now strikes together
+        std::vector<double> dydt(y_.size());
+        p_.rhs(y_.data(), t_, dydt.data());
+        std::vector<std::size_t> strike;
+        for (std::size_t k = 0; k < nct; ++k) {
+          if (p_.cmode[k] != ContactMode::Open) continue;
+          double gap = p_.aux[p_.a_gap + k], vn = p_.rate_v(p_.o_cont[k].first);
+          if ((k == i || gap <= gap_tol()) && vn < 0) strike.push_back(k);
+        }
+        if (!strike.empty()) impact(strike);
+        settle_contacts();
+      } else {
+        p_.cmode[i] = ContactMode::Open;
+        note("contact '" + contact_name(i) + "' lets go (its normal force reached zero)");
+      }
+      return true;
+    }
+    const std::size_t k = i - nct;
+    if (p_.fmode[k] == FrictionMode::Slide) {
+      // the slip has stopped: stick if μN can hold it, else slide back
+      stick_or_slip(k, true);
+    } else {
+      std::vector<double> dydt(y_.size());
+      p_.rhs(y_.data(), t_, dydt.data());
+      auto F = stick_force(k, std::vector<double>(p_.lambda.data(), p_.lambda.data() + p_.lambda.size()), frow_of(k));
+      double mag = std::hypot(F[0], F[1]);
+      p_.fmode[k] = FrictionMode::Slide;
+      p_.fdir[k] = {-F[0] / mag, -F[1] / mag};
+      note("friction '" + friction_name(k) + "' slips (the load exceeds " + num(p_.flimit[k]) + ")");
+    }
+    return true;
+  }
+
+  std::size_t frow_of(std::size_t k) const {
+    std::size_t row = p_.nc;
+    for (std::size_t j = 0; j < k; ++j)
+      if (p_.fmode[j] == FrictionMode::Stick) row += static_cast<std::size_t>(p_.frows[j]);
+    return row;
+  }
+
+  // Stick: hold the slip velocity at zero along the directions the point can slip in (one
+  // or two; none when it cannot move), if the force that takes is within μN; else slide the
+  // way the load pushes.
+  void stick_or_slip(std::size_t k, bool stopped) {
+    const std::size_t n = p_.n;
+    std::vector<double> dydt(y_.size());
+    p_.rhs(y_.data(), t_, dydt.data());
+    auto [rx, ry] = p_.o_fric[k];
+    const bool rot = p_.eq.friction[k].rotary;
+    Mat J(rot ? 1 : 2, static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+      J(0, static_cast<Eigen::Index>(i)) = p_.rate_J(rx)[i];
+      if (!rot) J(1, static_cast<Eigen::Index>(i)) = p_.rate_J(ry)[i];
+    }
+    p_.ldlt.compute(p_.M);
+    Mat G = J * p_.ldlt.solve(J.transpose());  // J M⁻¹ Jᵀ: how freely the point slips each way
+    p_.fbasis[k].setZero();
+    if (rot) {
+      p_.frows[k] = G(0, 0) > 0 ? 1 : 0;
+      p_.fbasis[k](0, 0) = 1;
+    } else {
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(G.topLeftCorner<2, 2>());
+      auto ev = es.eigenvalues();
+      if (ev(1) <= 0) {
+        p_.frows[k] = 0;
+      } else if (ev(0) <= 1e-10 * ev(1)) {
+        p_.frows[k] = 1;  // the point can slip along one line only
+        p_.fbasis[k].row(0) = es.eigenvectors().col(1).transpose();
+      } else {
+        p_.frows[k] = 2;
+        p_.fbasis[k] = Eigen::Matrix2d::Identity();
+      }
+    }
+    p_.fmode[k] = FrictionMode::Stick;
+    // the velocity held at zero exactly
+    stick_velocity(k);
+    p_.rhs(y_.data(), t_, dydt.data());
+    auto F = stick_force(k, std::vector<double>(p_.lambda.data(), p_.lambda.data() + p_.lambda.size()), frow_of(k));
+    double mag = std::hypot(F[0], F[1]);
+    if (mag <= p_.flimit[k]) {
+      if (stopped) note("friction '" + friction_name(k) + "' sticks: the slip has stopped and " + num(mag) + " <= " + num(p_.flimit[k]) + " holds it");
+      return;
+    }
+    p_.fmode[k] = FrictionMode::Slide;
+    p_.fdir[k] = {-F[0] / mag, -F[1] / mag};
+    if (stopped) note("friction '" + friction_name(k) + "' reverses: the slip stopped, but holding it takes " + num(mag) + " > " + num(p_.flimit[k]));
+  }
+
+  // remove the slip velocity along the held directions (M-orthogonal projection)
+  void stick_velocity(std::size_t k) {
+    if (p_.frows[k] == 0) return;
+    std::vector<std::string> names;
+    project_velocity();
+  }
+
+  // ---------------------------------------------------------------- impacts
+  // A jump of the rates: M (q̇⁺ − q̇⁻) = P + Gᵀ Λ with rows G q̇⁺ = w: the constraints
+  // (unchanged), resting contacts (held), and the striking contacts (v_n⁺ = −e v_n⁻; rough
+  // ones also v_t⁺ = 0). Returns Λ for the rows of `strike` (normal, then tangent when rough).
+  Vec jump(const Vec& P, const std::vector<std::size_t>& strike, const std::vector<double>& e) {
+    const std::size_t n = p_.n;
+    std::vector<double> dydt(y_.size());
+    p_.rhs(y_.data(), t_, dydt.data());
+    p_.eval_aux(t_, y_.data());
+    p_.constraint_rows();  // holonomic, sticking friction, resting contacts
+    // friction forces are finite: they do not hold against an impulse
+    Mat Bh = p_.B;
+    std::vector<Eigen::Index> keep;
+    {
+      std::size_t row = 0;
+      for (std::size_t c = 0; c < p_.nc; ++c) keep.push_back(static_cast<Eigen::Index>(row++));
+      for (std::size_t k = 0; k < p_.eq.friction.size(); ++k)
+        if (p_.fmode[k] == FrictionMode::Stick) row += static_cast<std::size_t>(p_.frows[k]);
+      for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k)
+        if (p_.cmode[k] == ContactMode::Rest)
+          for (int r = 0; r < (p_.eq.contacts[k].stick ? 2 : 1); ++r) keep.push_back(static_cast<Eigen::Index>(row++));
+    }
+    std::size_t rows = keep.size();
+    for (std::size_t k : strike) rows += p_.eq.contacts[k].stick ? 2 : 1;
+    Mat G(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(n));
+    Vec w(static_cast<Eigen::Index>(rows));
+    Eigen::Index r = 0;
+    for (std::size_t c = 0; c < keep.size(); ++c, ++r) {
+      G.row(r) = Bh.row(keep[c]);
+      w(r) = c < p_.nc ? -p_.aux[p_.a_gt + c] : 0.0;
+    }
+    for (std::size_t j = 0; j < strike.size(); ++j) {
+      auto [rn, rt] = p_.o_cont[strike[j]];
+      for (std::size_t i = 0; i < n; ++i) G(r, static_cast<Eigen::Index>(i)) = p_.rate_J(rn)[i];
+      // Newton's law of restitution: v_n⁺ = −e v_n⁻ (v_n = J q̇ + b; b = v_n − J q̇)
+      double vn = p_.rate_v(rn), Jq = G.row(r).dot(Eigen::Map<const Vec>(y_.data() + n, static_cast<Eigen::Index>(n)));
+      w(r++) = -e[j] * vn - (vn - Jq);
+      if (p_.eq.contacts[strike[j]].stick) {
+        for (std::size_t i = 0; i < n; ++i) G(r, static_cast<Eigen::Index>(i)) = p_.rate_J(rt)[i];
+        double vt = p_.rate_v(rt), Jt = G.row(r).dot(Eigen::Map<const Vec>(y_.data() + n, static_cast<Eigen::Index>(n)));
+        w(r++) = -(vt - Jt);
+      }
+    }
+    Eigen::Map<Vec> qd(y_.data() + n, static_cast<Eigen::Index>(n));
+    Vec rhs = p_.M * qd + P;
+    Vec out, lam;
+    p_.solve_kkt(rhs, G, w, out, lam, t_);
+    qd = out;
+    return lam.tail(static_cast<Eigen::Index>(rows - keep.size()));
+  }
+
+  void impact(std::vector<std::size_t> strike) {
+    const std::size_t n = p_.n;
+    for (int attempt = 0; attempt < 8 && !strike.empty(); ++attempt) {
+      state_type before = y_;
+      std::vector<double> dydt(y_.size());
+      p_.rhs(y_.data(), t_, dydt.data());
+      p_.eval_aux(t_, y_.data());
+      Impact im;
+      im.t = t_;
+      im.T_before = p_.T();
+      std::vector<double> e, vt_before;
+      for (std::size_t k : strike) {
+        e.push_back(p_.ce[k]);
+        im.contacts.push_back(contact_name(k));
+        im.vn_before.push_back(p_.rate_v(p_.o_cont[k].first));
+        vt_before.push_back(p_.rate_v(p_.o_cont[k].second));
+      }
+      Vec lam = jump(Vec::Zero(static_cast<Eigen::Index>(n)), strike, e);
+      // a contact can only push: one whose impulse comes out pulling is not in the impact
+      std::vector<std::size_t> keep;
+      Eigen::Index r = 0;
+      double Pmax = lam.cwiseAbs().maxCoeff();
+      bool pulls = false;
+      for (std::size_t k : strike) {
+        if (lam(r) < -1e-12 * Pmax) pulls = true;
+        else keep.push_back(k);
+        r += p_.eq.contacts[k].stick ? 2 : 1;
+      }
+      if (pulls) {
+        y_ = before;
+        strike = keep;
+        continue;
+      }
+      p_.rhs(y_.data(), t_, dydt.data());
+      p_.eval_aux(t_, y_.data());
+      im.T_after = p_.T();
+      // energy lost: −½ Σ P (v⁻ + v⁺) over the contact rows (the work of the impulses)
+      r = 0;
+      for (std::size_t j = 0; j < strike.size(); ++j) {
+        auto [rn, rt] = p_.o_cont[strike[j]];
+        double vn_after = p_.rate_v(rn);
+        im.vn_after.push_back(vn_after);
+        im.impulse.push_back(lam(r));
+        im.loss += -0.5 * lam(r) * (im.vn_before[j] + vn_after);
+        ++r;
+        if (p_.eq.contacts[strike[j]].stick) {
+          im.loss += -0.5 * lam(r) * (vt_before[j] + p_.rate_v(rt));
+          ++r;
+        }
+      }
+      run_.impact_loss += im.loss;
+      run_.impacts.push_back(im);
+      // what follows: rest (e = 0, or a bounce too short to resolve), or a flight
+      for (std::size_t j = 0; j < strike.size(); ++j) {
+        std::size_t k = strike[j];
+        double vn = im.vn_after[j];
+        if (p_.ce[k] == 0 || vn <= 0) {
+          p_.cmode[k] = ContactMode::Rest;
+          continue;
+        }
+        // the normal acceleration in free flight: the next touch after about 2 v_n / |a_n|
+        p_.cmode[k] = ContactMode::Open;
+        p_.rhs(y_.data(), t_, dydt.data());
+        auto [rn, rt] = p_.o_cont[k];
+        double an = p_.rate_a0(rn);
+        for (std::size_t i = 0; i < n; ++i) an += p_.rate_J(rn)[i] * dydt[n + i];
+        if (an < 0) {
+          double flight = 2 * vn / -an;
+          next_dt_ = std::min(next_dt_, flight / 8);
+          if (flight < p_.rest_time) {
+            // the bounces left would take less than the time resolution: end them with a
+            // plastic impact now (its loss is counted) and let the contact rest
+            Vec l2 = jump(Vec::Zero(static_cast<Eigen::Index>(n)), {k}, {0.0});
+            double after = p_.rate_v(rn);
+            p_.rhs(y_.data(), t_, dydt.data());
+            double after2 = p_.rate_v(rn);
+            Impact rest;
+            rest.t = t_;
+            rest.contacts = {contact_name(k)};
+            rest.vn_before = {vn};
+            rest.vn_after = {after2};
+            rest.impulse = {l2(0)};
+            rest.loss = -0.5 * l2(0) * (vn + after2);
+            rest.comes_to_rest = true;
+            (void)after;
+            run_.impact_loss += rest.loss;
+            run_.impacts.push_back(rest);
+            p_.cmode[k] = ContactMode::Rest;
+            note("contact '" + contact_name(k) + "' comes to rest (the next bounce would last " + num(flight) + " s)");
+          }
+        }
+      }
+      return;
+    }
+  }
+
+  // resting contacts that pull let go; the others stay (their normal force is ≥ 0)
+  void settle_contacts() {
+    for (int pass = 0; pass < 4; ++pass) {
+      std::vector<double> dydt(y_.size());
+      p_.rhs(y_.data(), t_, dydt.data());
+      std::size_t row = p_.nc;
+      for (std::size_t k = 0; k < p_.eq.friction.size(); ++k)
+        if (p_.fmode[k] == FrictionMode::Stick) row += static_cast<std::size_t>(p_.frows[k]);
+      bool changed = false;
+      for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
+        if (p_.cmode[k] != ContactMode::Rest) continue;
+        if (p_.lambda(static_cast<Eigen::Index>(row)) < 0) {
+          p_.cmode[k] = ContactMode::Open;
+          changed = true;
+        }
+        row += p_.eq.contacts[k].stick ? 2 : 1;
+      }
+      if (!changed) return;
+    }
+  }
+
+  // ---------------------------------------------------------------- projection
+  // Back onto the constraints after a step: positions by Newton steps on g(q) = 0 (and the
+  // gaps of resting contacts), rates so that A q̇ + ∂g/∂t = 0, each the M-orthogonal (least
+  // kinetic energy) correction  δ = −M⁻¹ Jᵀ (J M⁻¹ Jᵀ)⁻¹ r.
+  void project() {
+    bool any = p_.nc > 0;
+    for (auto mo : p_.cmode) any = any || mo == ContactMode::Rest;
+    for (auto mo : p_.fmode) any = any || mo == FrictionMode::Stick;
+    if (!any) return;
+    const std::size_t n = p_.n;
+    for (int it = 0; it < 3; ++it) {
+      std::vector<double> dydt(y_.size());
+      p_.rhs(y_.data(), t_, dydt.data());
+      p_.eval_aux(t_, y_.data());
+      std::vector<Vec> rows;
+      std::vector<double> res;
+      for (std::size_t c = 0; c < p_.nc; ++c) {
+        Vec a(static_cast<Eigen::Index>(n));
+        for (std::size_t i = 0; i < n; ++i) a(static_cast<Eigen::Index>(i)) = p_.out[p_.o_A + c * n + i];
+        rows.push_back(a);
+        res.push_back(p_.aux[p_.a_g + c]);
+      }
+      for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
+        if (p_.cmode[k] != ContactMode::Rest) continue;
+        Vec a(static_cast<Eigen::Index>(n));
+        for (std::size_t i = 0; i < n; ++i) a(static_cast<Eigen::Index>(i)) = p_.rate_J(p_.o_cont[k].first)[i];
+        rows.push_back(a);
+        res.push_back(p_.aux[p_.a_gap + k]);
+      }
+      if (rows.empty()) break;
+      double worst = 0;
+      for (double v : res) worst = std::max(worst, std::fabs(v));
+      if (worst <= 1e-15 * std::max(1.0, scale_q())) break;
+      correct(rows, res, 0);
+    }
+    project_velocity();
+  }
+
+  double scale_q() const {
+    double s = 0;
+    for (std::size_t i = 0; i < p_.n; ++i) s = std::max(s, std::fabs(y_[i]));
+    return s;
+  }
+
+  void project_velocity() {
+    const std::size_t n = p_.n;
+    std::vector<double> dydt(y_.size());
+    p_.rhs(y_.data(), t_, dydt.data());
+    p_.eval_aux(t_, y_.data());
+    p_.constraint_rows();
+    if (p_.B.rows() == 0) return;
+    // residual B q̇ + b₀ with b₀ the velocity offsets (∂g/∂t of the holonomic rows)
+    std::vector<Vec> rows;
+    std::vector<double> res;
+    Eigen::Map<const Vec> qd(y_.data() + n, static_cast<Eigen::Index>(n));
+    for (Eigen::Index r = 0; r < p_.B.rows(); ++r) {
+      rows.push_back(p_.B.row(r).transpose());
+      double off = static_cast<std::size_t>(r) < p_.nc ? p_.aux[p_.a_gt + static_cast<std::size_t>(r)] : 0.0;
+      // a row of a sticking point or a resting contact: its velocity v = J q̇ + b
+      res.push_back(p_.B.row(r).dot(qd) + off);
+    }
+    // the rows of velocities with an explicit offset b (moving supports): use v itself
+    std::size_t row = p_.nc;
+    for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
+      if (p_.fmode[k] != FrictionMode::Stick) continue;
+      auto [rx, ry] = p_.o_fric[k];
+      for (int s = 0; s < p_.frows[k]; ++s, ++row)
+        res[row] = p_.fbasis[k](s, 0) * p_.rate_v(rx) + (p_.eq.friction[k].rotary ? 0 : p_.fbasis[k](s, 1) * p_.rate_v(ry));
+    }
+    for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
+      if (p_.cmode[k] != ContactMode::Rest) continue;
+      auto [rn, rt] = p_.o_cont[k];
+      res[row++] = p_.rate_v(rn);
+      if (p_.eq.contacts[k].stick) res[row++] = p_.rate_v(rt);
+    }
+    correct(rows, res, n);
+  }
+
+  // y[off .. off+n) −= M⁻¹ Jᵀ (J M⁻¹ Jᵀ)⁺ r
+  void correct(const std::vector<Vec>& rows, const std::vector<double>& res, std::size_t off) {
+    const auto n = static_cast<Eigen::Index>(p_.n);
+    Mat J(static_cast<Eigen::Index>(rows.size()), n);
+    Vec r(static_cast<Eigen::Index>(rows.size()));
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      J.row(static_cast<Eigen::Index>(i)) = rows[i].transpose();
+      r(static_cast<Eigen::Index>(i)) = res[i];
+    }
+    p_.fill_M();
+    Eigen::LDLT<Mat> l(p_.M);
+    Mat X = l.solve(J.transpose());
+    Mat S = J * X;
+    Eigen::CompleteOrthogonalDecomposition<Mat> cod(S);
+    Vec d = X * cod.solve(r);
+    for (Eigen::Index i = 0; i < n; ++i) y_[off + static_cast<std::size_t>(i)] -= d(i);
+  }
+
+  // ---------------------------------------------------------------- records
+  void record() {
+    p_.eval_aux(t_, y_.data());
+    Sample s{t_, std::vector<double>(y_.begin(), y_.begin() + static_cast<long>(p_.n)),
+             std::vector<double>(y_.begin() + static_cast<long>(p_.n), y_.begin() + static_cast<long>(2 * p_.n)), p_.T(), p_.V()};
+    run_.samples.push_back(std::move(s));
+  }
+
+  void finish() {
+    const std::size_t n = p_.n;
+    p_.eval_aux(t_, y_.data());
+    run_.end = Sample{t_, std::vector<double>(y_.begin(), y_.begin() + static_cast<long>(n)),
+                      std::vector<double>(y_.begin() + static_cast<long>(n), y_.begin() + static_cast<long>(2 * n)), p_.T(), p_.V()};
+    if (run_.samples.empty() || run_.samples.back().t != t_) run_.samples.push_back(run_.end);
+    run_.E1 = p_.T() + p_.V();
+    max_T_ = std::max(max_T_, p_.T());
+    double U = impulse_work_;
+    if (stop_.impulses && !p_.eq.impulses.empty()) run_.work.emplace_back("given impulses", impulse_work_);
+    for (auto& [name, k] : p_.work_names) {
+      run_.work.emplace_back(name, y_[2 * n + k]);
+      U += y_[2 * n + k];
+    }
+    run_.conservative = p_.work_names.empty() && run_.impacts.empty() && (p_.eq.impulses.empty() || !stop_.impulses);
+    run_.energy_scale = std::max(std::fabs(run_.E0), max_T_);
+    if (run_.energy_scale == 0) run_.energy_scale = 1;
+    // E₁ = E₀ + Σ U − Σ impact losses, up to the integration error
+    run_.drift = (run_.E1 - run_.E0 - U + run_.impact_loss) / run_.energy_scale;
+    run_.rhs_calls = p_.rhs_calls;
+  }
+};
+
+}  // namespace
+
+Run Simulator::Impl::run(const State& s0, const Stop& stop) {
+  build_aux(stop.when);
+  rhs_calls = 0;
+  fmode.assign(eq.friction.size(), FrictionMode::Slide);
+  cmode.assign(eq.contacts.size(), ContactMode::Open);
+  Runner r(*this, stop);
+  return r.go(s0);
+}
+
+}  // namespace kinergy::simulate

@@ -1,0 +1,43 @@
+// Time integration of the equations of motion, with the switching parts of a scene as events.
+#include "kinergy/simulate/simulate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "impl.hpp"
+
+namespace kinergy::simulate {
+
+
+Method method_from_name(const std::string& s) {
+  if (s == "dopri5") return Method::Dopri5;
+  if (s == "rkf78") return Method::Rkf78;
+  if (s == "bs" || s == "bulirsch_stoer") return Method::BulirschStoer;
+  if (s == "symplectic") return Method::Symplectic;
+  if (s == "rk4") return Method::Rk4;
+  throw InputError("no integration method '" + s + "'", "choose dopri5, rkf78, bs (Bulirsch-Stoer), symplectic or rk4");
+}
+
+std::string method_name(Method m) {
+  switch (m) {
+    case Method::Dopri5: return "dopri5";
+    case Method::Rkf78: return "rkf78";
+    case Method::BulirschStoer: return "bs";
+    case Method::Symplectic: return "symplectic";
+    case Method::Rk4: return "rk4";
+  }
+  return "?";
+}
+
+Simulator::Simulator(const model::Model& m, const exmap& values, const Options& o)
+    : p_(std::make_unique<Impl>(m, values, o)) {}
+Simulator::~Simulator() = default;
+Simulator::Simulator(Simulator&&) noexcept = default;
+const Equations& Simulator::equations() const { return p_->eq; }
+std::size_t Simulator::size() const { return 2 * p_->n + p_->nw; }
+void Simulator::rhs(const double* y, double t, double* dydt) { p_->rhs(y, t, dydt); }
+Run Simulator::run(const State& s0, const Stop& stop) { return p_->run(s0, stop); }
+
+}  // namespace kinergy::simulate
