@@ -5,6 +5,7 @@
 //   kinergy simulate SCENE --until T [--tol E] [--method M] [--csv FILE] [--plot FILE] [--check]
 // Exit status: 0 ok, 1 bad scene / no solution / a claim fails, 2 usage.
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -30,7 +31,7 @@ int guarded(const std::string& file, const std::function<int()>& f) {
   } catch (const kinergy::SceneError& e) {
     std::cerr << e.what() << "\n";
   } catch (const kinergy::simulate::SimulationError& e) {
-    std::cerr << file << ": " << e.what() << " \u2014 " << e.fix() << "\n";
+    std::cerr << (e.pos().line > 0 ? e.pos().str() : file) << ": " << e.what() << " \u2014 " << e.fix() << "\n";
   } catch (const kinergy::InputError& e) {
     std::cerr << file << ": " << e.what() << " \u2014 " << e.fix() << "\n";
   } catch (const std::exception& e) {
@@ -147,6 +148,11 @@ int main(int argc, char** argv) {
       if (def.analyses.empty()) bare = kinergy::model::Model::build(def);
       else sol = kinergy::solve_scene(def);
       const kinergy::model::Model& m = sol ? sol->model : *bare;
+      if (!plot_out.empty()) {
+        auto ext = std::filesystem::path(plot_out).extension();
+        if (ext != ".svg" && ext != ".png")
+          throw kinergy::InputError("the plot '" + plot_out + "' is neither .svg nor .png", "name the plot FILE.svg or FILE.png");
+      }
       sim::Options o;
       o.method = sim::method_from_name(method);
       o.tol = tol;

@@ -113,7 +113,7 @@ struct Simulator::Impl {
       if (ok) continue;
       for (auto& p : m.params)
         if (p.sym.is_equal(s))
-          throw SceneError(p.pos, "parameter '" + p.name + "' has no value, and " + what + " needs a number",
+          throw SceneError(p.pos, "parameter '" + p.name + "' has no value, and simulating needs a number for it (in " + what + ")",
                            "give '" + p.name + "' a value to simulate the scene");
       throw SceneError(SourcePos{m.file, 0, 0}, "'" + model::text(s) + "' in " + what + " has no value",
                        "give every quantity of the scene a value to simulate it");
@@ -218,6 +218,7 @@ struct Simulator::Impl {
     if (o.method != Method::Symplectic) return;
     // H = ½ pᵀ M⁻¹ p + V(q) is separable only with a constant M and forces of position alone
     std::string why;
+    SourcePos at;
     for (std::size_t i = 0; i < n && why.empty(); ++i)
       for (std::size_t j = 0; j < n && why.empty(); ++j)
         for (auto& q : eq.q)
@@ -225,14 +226,17 @@ struct Simulator::Impl {
     for (auto& c : eq.c)
       if (!c.is_zero() && why.empty()) why = "it has velocity-product terms";
     for (auto& F : eq.forces)
-      if (!F.conservative && why.empty()) why = "effect '" + m.effects[F.effect].name + "' is not conservative";
+      if (!F.conservative && why.empty()) {
+        why = "effect '" + m.effects[F.effect].name + "' is not conservative";
+        at = m.effects[F.effect].pos;
+      }
     if (why.empty() && nc) why = "it has constraints";
     if (why.empty() && !eq.friction.empty()) why = "it has friction";
     if (why.empty() && !eq.contacts.empty()) why = "it has contacts";
     if (why.empty() && !eq.impulses.empty()) why = "it has impulses";
     if (!why.empty())
       throw SimulationError("the symplectic method needs a conservative scene with separable energy, but " + why,
-                            "use --method dopri5, rkf78 or bs");
+                            "use --method dopri5, rkf78 or bs", at);
   }
 
   // ------------------------------------------------------------ evaluation
@@ -361,11 +365,15 @@ struct Simulator::Impl {
       }
       const bool rot = eq.friction[k].rotary;
       double vx = rate_v(rx), vy = rot ? 0 : rate_v(ry);
+      // Past the instant the slip stops (v·d ≤ 0 inside a trial step) the force keeps its
+      // direction d, so the right-hand side stays smooth across the event and the event
+      // locator, not the step-size control, finds where the slip stops.
       double sp = std::hypot(vx, vy);
-      double dx = sp > 0 ? vx / sp : fdir[k][0], dy_ = sp > 0 ? vy / sp : fdir[k][1];
+      const bool along = sp > 0 && vx * fdir[k][0] + vy * fdir[k][1] > 0;
+      double dx = along ? vx / sp : fdir[k][0], dy_ = along ? vy / sp : fdir[k][1];
       for (std::size_t i = 0; i < n; ++i)
         f(static_cast<Eigen::Index>(i)) -= flimit[k] * (dx * rate_J(rx)[i] + (rot ? 0 : dy_ * rate_J(ry)[i]));
-      dy[2 * n + w] = -flimit[k] * sp;
+      dy[2 * n + w] = -flimit[k] * (vx * dx + vy * dy_);  // P = −μN v·d (= −μN |v| while sliding)
     }
     constraint_rows();
     if (B.rows() == 0) {
@@ -388,10 +396,14 @@ struct Simulator::Impl {
 
   [[noreturn]] void undefined(double t) const {
     std::string who;
+    SourcePos at;
     for (auto& F : eq.forces)
-      if (m.effects[F.effect].kind == "power") who = " (a power drive gives the couple P/omega: it is infinite at omega = 0)";
+      if (m.effects[F.effect].kind == "power") {
+        who = " (power drive '" + m.effects[F.effect].name + "' gives the couple P/omega: it is infinite at omega = 0)";
+        at = m.effects[F.effect].pos;
+      }
     throw SimulationError("the acceleration is not a number at t = " + num(t) + " s" + who,
-                          "start the motion where every effect is defined (a power drive needs the body turning)");
+                          "start the motion where every effect is defined (a power drive needs the body turning)", at);
   }
 };
 

@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include "kinergy/common/error.hpp"
 #include "kinergy/common/process.hpp"
 
 namespace kinergy::simulate {
@@ -83,7 +84,7 @@ void plot(const model::Model& m, const Run& r, const std::string& file) {
   std::string term;
   if (ext == ".svg") term = "svg size 900,720 dynamic background rgb 'white'";
   else if (ext == ".png") term = "png size 900,720";
-  else throw std::runtime_error(file + ": the plot must be a .svg or .png file");
+  else throw InputError("the plot '" + file + "' is neither .svg nor .png", "name the plot FILE.svg or FILE.png");
   fs::path dir = fs::temp_directory_path() / ("kinergy-plot-" + std::to_string(getpid()));
   fs::create_directories(dir);
   {
@@ -115,8 +116,8 @@ void plot(const model::Model& m, const Run& r, const std::string& file) {
   }
   std::error_code ec;
   fs::remove_all(dir, ec);
-  if (rc == 127) throw std::runtime_error("gnuplot is not installed (Debian: apt install gnuplot-nox)");
-  if (rc != 0) throw std::runtime_error(file + ": gnuplot failed: " + why);
+  if (rc == 127) throw InputError("gnuplot is not installed, so no plot", "install it (Debian: apt install gnuplot-nox), or leave out --plot");
+  if (rc != 0) throw InputError("gnuplot could not draw '" + file + "': " + why, "check that the folder of the plot exists and is writable");
 }
 
 }  // namespace kinergy::simulate

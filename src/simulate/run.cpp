@@ -153,6 +153,9 @@ public:
     if (!stepper_->adaptive() && p_.o.step <= 0) fixed_dt_ = std::max(span_, 1e-300) / 1e4;
     else fixed_dt_ = p_.o.step;
 
+    p_.eval_aux(t_, y_.data());
+    run_.E0 = p_.T() + p_.V();  // before what happens at the start (impulses, impacts)
+    max_T_ = p_.T();
     start();
     if (p_.has_stop) {
       p_.eval_aux(t_, y_.data());
@@ -160,8 +163,7 @@ public:
       stop_sign_ = s > 0 ? 1 : (s < 0 ? -1 : 0);
     }
     p_.eval_aux(t_, y_.data());
-    run_.E0 = p_.T() + p_.V();
-    max_T_ = p_.T();
+    max_T_ = std::max(max_T_, p_.T());
     record();
     if (span_ > 0) integrate();
     finish();
@@ -214,7 +216,7 @@ private:
       double tol = gap_tol();
       if (gap < -tol)
         throw SimulationError("contact '" + contact_name(k) + "' is penetrated at the start (gap " + num(gap) + " m)",
-                              "start with the parties apart or touching");
+                              "start with the parties apart or touching", p_.m.effects[p_.eq.contacts[k].effect].pos);
       if (gap <= tol) {
         if (vn < 0) strike.push_back(k);
         else if (vn <= vel_tol()) p_.cmode[k] = ContactMode::Rest;
@@ -652,11 +654,12 @@ private:
         double an = p_.rate_a0(rn);
         for (std::size_t i = 0; i < n; ++i) an += p_.rate_J(rn)[i] * dydt[n + i];
         if (an < 0) {
-          double flight = 2 * vn / -an;
+          double flight = 2 * vn / -an, apex = vn * vn / (2 * -an);
           next_dt_ = std::min(next_dt_, flight / 8);
-          if (flight < p_.rest_time) {
-            // the bounces left would take less than the time resolution: end them with a
-            // plastic impact now (its loss is counted) and let the contact rest
+          if (flight < p_.rest_time || apex < gap_tol()) {
+            // the bounce would last less than the time resolution, or rise less than the
+            // positions can resolve: end the bounces with a plastic impact now (its loss is
+            // counted) and let the contact rest
             Vec l2 = jump(Vec::Zero(static_cast<Eigen::Index>(n)), {k}, {0.0});
             double after = p_.rate_v(rn);
             p_.rhs(y_.data(), t_, dydt.data());
@@ -673,7 +676,8 @@ private:
             run_.impact_loss += rest.loss;
             run_.impacts.push_back(rest);
             p_.cmode[k] = ContactMode::Rest;
-            note("contact '" + contact_name(k) + "' comes to rest (the next bounce would last " + num(flight) + " s)");
+            note("contact '" + contact_name(k) + "' comes to rest (the next bounce would last " + num(flight) + " s and rise " +
+                 num(apex) + " m)");
           }
         }
       }

@@ -664,6 +664,7 @@ struct HCase {
 const HCase kHCases[] = {
     {"ball_bounce_spin.yaml", "H(ball.C)", "0"},                       // the contact point
     {"bar_struck_off_percussion.yaml", "H(O)", "J*d"},                 // the pivot; the blow's moment
+    {"bouncing_ball.yaml", "H(ball.C)", "0"},                          // on the line of the impulse
     {"bullet_hanging_bar.yaml", "H(O)", "0"},                          // the pivot
     // about the struck point the pin impulse Rx at O, d above it, has the moment -d Rx
     {"bullet_hanging_bar.yaml", "H(bar.Q)", "-d*((M*L/2 + m*d)*3*m*v0*d/(M*L^2 + 3*m*d^2) - m*v0)"},

@@ -16,7 +16,7 @@ std::string text(const model::Model& m, const Run& r);
 std::string csv(const model::Model& m, const Run& r);
 
 /// Coordinates and energy against time, drawn by gnuplot into FILE.svg or FILE.png.
-/// @throws std::runtime_error when gnuplot is missing or fails, or the extension is neither.
+/// @throws InputError when gnuplot is missing or fails, or the extension is neither.
 void plot(const model::Model& m, const Run& r, const std::string& file);
 
 }  // namespace kinergy::simulate

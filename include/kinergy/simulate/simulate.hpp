@@ -12,6 +12,7 @@
 
 #include <ginac/ginac.h>
 
+#include "kinergy/common/error.hpp"
 #include "kinergy/model/model.hpp"
 #include "kinergy/simulate/equations.hpp"
 
@@ -27,10 +28,13 @@ std::string method_name(Method m);
 /// method that does not fit the scene), with what would fix it.
 class SimulationError : public std::runtime_error {
 public:
-  SimulationError(std::string what, std::string fix) : std::runtime_error(std::move(what)), fix_(std::move(fix)) {}
+  SimulationError(std::string what, std::string fix, SourcePos pos = {})
+      : std::runtime_error(std::move(what)), fix_(std::move(fix)), pos_(std::move(pos)) {}
   const std::string& fix() const { return fix_; }
+  const SourcePos& pos() const { return pos_; }  ///< the effect or state it is about (line 0: none)
 private:
   std::string fix_;
+  SourcePos pos_;
 };
 
 struct Options {

@@ -1,0 +1,85 @@
+// kinergy simulate from the command line: its outputs (summary, CSV, plot, equations, checks)
+// and every way a simulation is refused, each with the file, line and a fix.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "../support/helpers.hpp"
+
+namespace fs = std::filesystem;
+
+TEST_CASE("kinergy simulate: summary, CSV and plot of the sliding rod", "[simulate][cli]") {
+  fs::path dir = fs::temp_directory_path() / "kinergy-sim-cli";
+  fs::create_directories(dir);
+  fs::path csv = dir / "rod.csv", svg = dir / "rod.svg";
+  int status = 0;
+  std::string out = kt::run_cli("simulate derivations/energy/sliding_rod.yaml --until 0.5 --tol 1e-12 --csv " +
+                                    kt::shell_quoted(csv.string()) + " --plot " + kt::shell_quoted(svg.string()),
+                                status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("method dopri5, tol 1e-12"));
+  CHECK_THAT(out, Catch::Contains("end at t = 0.5 s:"));
+  CHECK_THAT(out, Catch::Contains("drift |E1 - E0|"));
+  std::ifstream c(csv);
+  std::string header, row;
+  std::getline(c, header);
+  std::getline(c, row);
+  CHECK(header == "t,theta,theta_dot,T,V,E");
+  CHECK(row.rfind("0,", 0) == 0);
+  REQUIRE(fs::exists(svg));
+  std::ifstream s(svg);
+  std::string text((std::istreambuf_iterator<char>(s)), {});
+  CHECK_THAT(text, Catch::Contains("<svg"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("kinergy simulate --equations and --check", "[simulate][cli]") {
+  int status = 0;
+  std::string out = kt::run_cli("simulate derivations/energy/atwood_pulley.yaml --equations --check --tol 1e-12", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("M[phi,phi] = "));  // ½ M r² (GiNaC picks the order of factors)
+  CHECK_THAT(out, Catch::Contains("M[yA,yA] = mA"));
+  CHECK_THAT(out, Catch::Contains("constraints g(q, t) = 0:"));
+  CHECK_THAT(out, Catch::Contains("energy 1 -> 2: until yA reaches -1.5"));
+  CHECK_THAT(out, Catch::EndsWith(" ok\n"));
+  // the bouncing ball from its release: 3 s take in every bounce and the rest on the floor
+  out = kt::run_cli("simulate derivations/impact/bouncing_ball.yaml --until 3", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("floor v_n -4.852216 -> 2.426108 m/s, impulse 1.4556648 N*s; energy lost 1.7658 J"));
+  CHECK_THAT(out, Catch::Contains("contact 'floor' comes to rest"));
+}
+
+TEST_CASE("kinergy simulate refuses what it cannot do, with the place and a fix", "[simulate][cli][errors]") {
+  struct Case {
+    std::string args, message;
+  };
+  const std::vector<Case> cases = {
+      {"tests/data/simulate/penetrated.yaml --until 1",
+       "penetrated.yaml:8:3: contact 'floor' is penetrated at the start (gap -0.1 m) \u2014 start with the parties apart or touching"},
+      {"tests/data/simulate/no_rate.yaml --until 1", "no_rate.yaml:9:3: state '1' does not give y_dot as a number"},
+      {"tests/data/simulate/unvalued.yaml --until 1", "unvalued.yaml:2:23: parameter 'k' has no value"},
+      {"tests/data/simulate/damper_energy.yaml --until 1",
+       "damper_energy.yaml:9:3: the work of the damper 'dash' depends on the speeds all along the motion"},
+      {"tests/data/simulate/damper_momentum.yaml --until 1", "damper_momentum.yaml:8:3: the damper 'dash' pushes with a force that changes"},
+      {"tests/data/simulate/damper_units.yaml --until 1", "damper_units.yaml:8:33: 'c' is in N/m (kg/s^2) but must be in kg/s"},
+      {"tests/data/simulate/no_rate.yaml --check", "the scene has no analyses, so no closed form to check"},
+      {"derivations/energy/flywheel_power.yaml --until 1",
+       "flywheel_power.yaml:25:3: the acceleration is not a number at t = 0 s (power drive 'motor'"},
+      {"derivations/energy/sliding_rod.yaml --until 1 --method foo", "no integration method 'foo' \u2014 choose dopri5, rkf78"},
+      {"derivations/energy/sliding_rod.yaml", "simulate needs an end time \u2014 add --until T"},
+      {"derivations/energy/sliding_rod.yaml --until 1 --from zz", "there is no state 'zz'"},
+      {"derivations/energy/sliding_rod.yaml --until 1 --plot out.pdf", "the plot 'out.pdf' is neither .svg nor .png"},
+      {"derivations/momentum/spinning_frame.yaml --until 1 --method symplectic",
+       "spinning_frame.yaml: the symplectic method needs a conservative scene with separable energy, but its mass matrix depends on s"},
+      {"derivations/energy/sliding_rod.yaml --until -1", "the run ends before it starts"},
+  };
+  for (auto& c : cases) {
+    INFO(c.args);
+    int status = 0;
+    std::string out = kt::run_cli("simulate " + c.args, status);
+    CHECK(status == 1);
+    CHECK_THAT(out, Catch::Contains(c.message));
+    CHECK_THAT(out, !Catch::Contains("internal error"));
+  }
+}

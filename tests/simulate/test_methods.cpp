@@ -1,0 +1,115 @@
+// The integration methods against closed forms: a damped oscillator (every adaptive method),
+// a pendulum's energy over many periods (symplectic against RK4), and the compiled right-hand
+// side against the tape (the same doubles, so the same run).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "../support/helpers.hpp"
+#include "kinergy/simulate/check.hpp"
+
+namespace sim = kinergy::simulate;
+
+namespace {
+
+// m ẍ + c ẋ + k x = 0 with m = 1 kg, c = 0.4 N·s/m, k = 25 N/m, x(0) = 0.1 m, ẋ(0) = 0
+const char* kOscillator = R"(
+title: damped oscillator
+parameters: {m: 1 kg, c: 0.4 N*s/m, k: 25 N/m, L: 1 m}
+points: {A: [-L, 0]}
+coordinates: {x: m}
+bodies:
+  block: {mass: m, inertia: particle, position: [x, 0]}
+effects:
+  spring: {spring: [A, block], k: k, free_length: L}
+  dash: {damper: [A, block], c: c}
+states:
+  1: {x: 0.1 m, x_dot: 0 m/s}
+)";
+
+// x(t) = e^(−ζω t) (x₀ cos ω_d t + (ζω x₀/ω_d) sin ω_d t)
+std::pair<double, double> oscillator(double t) {
+  const double w = 5, z = 0.4 / (2 * 5), wd = w * std::sqrt(1 - z * z), x0 = 0.1, s = z * w;
+  double e = std::exp(-s * t), C = std::cos(wd * t), S = std::sin(wd * t);
+  double x = e * (x0 * C + s * x0 / wd * S);
+  double v = e * (-s * (x0 * C + s * x0 / wd * S) + (-x0 * wd * S + s * x0 * C));
+  return {x, v};
+}
+
+sim::Run go(const kinergy::model::Model& m, sim::Options o, sim::State s0, double until) {
+  sim::Simulator S(m, m.parameter_values(), o);
+  sim::Stop stop;
+  stop.until = until;
+  return S.run(s0, stop);
+}
+
+}  // namespace
+
+TEST_CASE("damped oscillator: dopri5, rkf78 and Bulirsch-Stoer against the closed form", "[simulate][methods]") {
+  auto m = kt::model_of(kOscillator);
+  auto [x, v] = oscillator(3);
+  for (auto method : {sim::Method::Dopri5, sim::Method::Rkf78, sim::Method::BulirschStoer}) {
+    for (double tol : {1e-6, 1e-9, 1e-12}) {
+      INFO(sim::method_name(method) << " tol " << tol);
+      sim::Options o;
+      o.method = method;
+      o.tol = tol;
+      o.native = false;
+      auto r = go(m, o, {0, {0.1}, {0}}, 3);
+      CHECK(std::fabs(r.end.q[0] - x) <= 100 * tol * 0.1);
+      CHECK(std::fabs(r.end.qd[0] - v) <= 100 * tol * 0.5);
+      // the damper's work is the energy the oscillator lost
+      REQUIRE(r.work.size() == 1);
+      CHECK(r.work[0].first == "dash");
+      CHECK(std::fabs(r.drift) <= 100 * tol);
+      CHECK(!r.conservative);
+    }
+  }
+}
+
+TEST_CASE("pendulum over 200 periods: the symplectic method keeps the energy, RK4 does not as well",
+          "[simulate][methods]") {
+  auto m = kt::model_of_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/compound_pendulum.yaml");
+  sim::State s0{0, {-M_PI / 2 - 1.0}, {0}};
+  sim::Options o;
+  o.native = false;
+  o.record = false;
+  o.step = 0.05;  // about 30 steps a period (T ≈ 1.6 s)
+  o.method = sim::Method::Symplectic;
+  auto sym = go(m, o, s0, 300);
+  o.method = sim::Method::Rk4;
+  auto rk4 = go(m, o, s0, 300);
+  INFO("symplectic " << sym.drift << ", rk4 " << rk4.drift);
+  CHECK(std::fabs(sym.drift) < 1e-4);
+  CHECK(std::fabs(rk4.drift) > 10 * std::fabs(sym.drift));
+  CHECK(sym.conservative);
+}
+
+TEST_CASE("the symplectic method refuses a scene whose energy is not separable", "[simulate][methods][errors]") {
+  // the hub's moment of inertia about O grows with the balls' radius: M depends on s
+  auto m = kt::model_of_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/momentum/spinning_frame.yaml");
+  sim::Options o;
+  o.method = sim::Method::Symplectic;
+  o.native = false;
+  CHECK_THROWS_WITH(sim::Simulator(m, m.parameter_values(), o),
+                    Catch::Contains("separable energy") && Catch::Contains("mass matrix depends on"));
+  auto d = kt::model_of(kOscillator);
+  CHECK_THROWS_WITH(sim::Simulator(d, d.parameter_values(), o), Catch::Contains("'dash' is not conservative"));
+}
+
+TEST_CASE("the compiled right-hand side gives the tape's doubles: the same run step for step", "[simulate][native]") {
+  kinergy::Solution s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/linkage_collar.yaml");
+  sim::Options o;
+  o.tol = 1e-11;
+  sim::State s0 = sim::state_values(s, 0);  // the scene's start, solved (the collar's angle too)
+  o.native = false;
+  auto tape = go(s.model, o, s0, 0.5);
+  o.native = true;
+  auto native = go(s.model, o, s0, 0.5);
+  REQUIRE(tape.samples.size() == native.samples.size());
+  CHECK(tape.steps == native.steps);
+  for (std::size_t i = 0; i < s0.q.size(); ++i) {
+    CHECK(tape.end.q[i] == native.end.q[i]);
+    CHECK(tape.end.qd[i] == native.end.qd[i]);
+  }
+}
