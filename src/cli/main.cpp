@@ -169,7 +169,7 @@ int main(int argc, char** argv) {
             std::cout << "not simulated: " << leg.why_not << "\n";
             continue;
           }
-          auto c = sim::check_leg(*sol, leg, o, std::max(1e3 * tol, 1e-12));
+          auto c = sim::check_leg(*sol, leg, o, std::max(100 * tol, 1e-13));
           std::cout << "until " << leg.target << ", " << c.run.steps << " steps; largest relative difference "
                     << c.worst << (c.worst_what.empty() ? "" : " (" + c.worst_what + ")") << (c.ok ? " ok" : " FAILS") << "\n";
           bad += c.ok ? 0 : 1;
