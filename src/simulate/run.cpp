@@ -251,6 +251,7 @@ private:
   void integrate() {
     double dt = stepper_->adaptive() ? std::min(span_ * 1e-3, 1e-3) : fixed_dt_;
     std::vector<double> ev0 = events(t_, y_);
+    std::vector<double> vn0 = vn_last_;
     std::size_t since_progress = 0;
     while (t_ < stop_.until) {
       if (run_.steps >= p_.o.max_steps)
@@ -290,18 +291,52 @@ private:
           ywhen = ys;
         }
       }
+      std::vector<double> vn1 = vn_last_;
+      // a contact that approaches and recedes inside the step (v_n from < 0 to > 0, the gap
+      // positive at both ends) may have dipped below zero between: the cubic through the
+      // ends' gaps and rates tells where its least gap is; a gap below zero there is a touch
+      for (std::size_t k = 0; k < p_.eq.contacts.size() && which < 0; ++k) {
+        if (p_.cmode[k] != ContactMode::Open || !(ev0[k] > 0 && ev1[k] > 0) || vn0.size() <= k || !(vn0[k] < 0 && vn1[k] > 0))
+          continue;
+        const double h = t - t_;
+        double smin = 0, gmin = ev0[k];
+        for (int j = 1; j < 64; ++j) {
+          double u = j / 64.0, h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u),
+                 h11 = u * u * (u - 1);
+          double g = h00 * ev0[k] + h10 * h * vn0[k] + h01 * ev1[k] + h11 * h * vn1[k];
+          if (g < gmin) {
+            gmin = g;
+            smin = u * h;
+          }
+        }
+        if (!(gmin < 0.5 * ev0[k]) || smin <= 0) continue;
+        state_type ym = advance(smin);
+        double gm = events(t_ + smin, ym)[k];
+        if (gm > 0) continue;
+        double s;
+        state_type ys;
+        locate(k, ev0[k], gm, smin, s, ys);
+        which = static_cast<int>(k);
+        when = s;
+        ywhen = ys;
+      }
       ++run_.steps;
       if (which < 0) {
         t_ = t;
         y_ = y;
-        after_step();
-        ev0 = events(t_, y_);
+        if (after_step()) ev0 = events(t_, y_);  // projected: the state moved a little
+        else {
+          ev0 = ev1;
+          vn_last_ = vn1;
+        }
+        vn0 = vn_last_;
       } else {
         t_ = t_ + when;
         y_ = ywhen;
         if (!handle(static_cast<std::size_t>(which))) break;  // the stop condition
         stepper_->reset();
         ev0 = events(t_, y_);
+        vn0 = vn_last_;
         dt = std::min(dt, next_dt_);
         next_dt_ = std::numeric_limits<double>::infinity();
       }
@@ -314,10 +349,16 @@ private:
   }
 
   double next_dt_ = std::numeric_limits<double>::infinity();
+  std::vector<double> vn_last_;  ///< the contacts' normal rates at the last events() state
 
-  void after_step() {
-    project();
+  /// @returns whether the state was projected (moved)
+  bool after_step() {
+    bool moved = project();
     // a sliding point's direction: the reference for "the slip has stopped" (v·d crosses zero)
+    if (!p_.eq.friction.empty()) {
+      std::vector<double> dydt(y_.size());
+      p_.rhs(y_.data(), t_, dydt.data());
+    }
     for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
       if (p_.fmode[k] != FrictionMode::Slide) continue;
       auto [rx, ry] = p_.o_fric[k];
@@ -325,9 +366,12 @@ private:
       double sp = std::hypot(vx, vy);
       if (sp > 0) p_.fdir[k] = {vx / sp, vy / sp};
     }
-    p_.eval_aux(t_, y_.data());
-    max_T_ = std::max(max_T_, p_.T());
-    if (p_.o.record) record();
+    if (p_.o.record) {
+      p_.eval_aux(t_, y_.data());
+      max_T_ = std::max(max_T_, p_.T());
+      record();
+    }
+    return moved;
   }
 
   // The integration from (t_, y_) over s, by the same method (adaptive methods: as many
@@ -388,11 +432,19 @@ private:
   // Each event's value is positive while the current mode holds: an open contact's gap, a
   // resting contact's normal force, a sliding point's v·d, a sticking point's μN − |F|, and
   // the stop condition (signed to start positive).
+  // (A scene without contacts, friction or a stop condition has no events: nothing is evaluated.)
   std::vector<double> events(double t, const state_type& y) {
     std::vector<double> ev;
-    std::vector<double> dydt(y.size());
-    p_.rhs(y.data(), t, dydt.data());
-    std::vector<double> lam(p_.lambda.data(), p_.lambda.data() + p_.lambda.size());
+    const bool contacts = !p_.eq.contacts.empty(), friction = !p_.eq.friction.empty();
+    if (!contacts && !friction && !p_.has_stop) return {1.0};
+    std::vector<double> lam;
+    if (contacts || friction) {
+      std::vector<double> dydt(y.size());
+      p_.rhs(y.data(), t, dydt.data());
+      lam.assign(p_.lambda.data(), p_.lambda.data() + p_.lambda.size());
+      vn_last_.clear();
+      for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) vn_last_.push_back(p_.rate_v(p_.o_cont[k].first));
+    }
     p_.eval_aux(t, y.data());
     std::size_t row = p_.nc;
     std::vector<std::size_t> frow(p_.eq.friction.size()), crow(p_.eq.contacts.size());
@@ -710,11 +762,11 @@ private:
   // Back onto the constraints after a step: positions by Newton steps on g(q) = 0 (and the
   // gaps of resting contacts), rates so that A q̇ + ∂g/∂t = 0, each the M-orthogonal (least
   // kinetic energy) correction  δ = −M⁻¹ Jᵀ (J M⁻¹ Jᵀ)⁻¹ r.
-  void project() {
+  bool project() {
     bool any = p_.nc > 0;
     for (auto mo : p_.cmode) any = any || mo == ContactMode::Rest;
     for (auto mo : p_.fmode) any = any || mo == FrictionMode::Stick;
-    if (!any) return;
+    if (!any) return false;
     const std::size_t n = p_.n;
     for (int it = 0; it < 3; ++it) {
       std::vector<double> dydt(y_.size());
@@ -742,6 +794,7 @@ private:
       correct(rows, res, 0);
     }
     project_velocity();
+    return true;
   }
 
   double scale_q() const {
