@@ -963,14 +963,7 @@ private:
         }
       } else if (k == "torsion_spring") {
         only(ed, {"k", "free_angle"});
-        if (ed.arg.is_list()) {
-          if (ed.arg.items.size() != 2)
-            throw SceneError(ed.arg.pos, "a torsion spring acts on one body or between two", "write 'torsion_spring: [a, b]'");
-          e.body = body_ref(ed.arg.items[0], "torsion_spring");
-          e.body2 = body_ref(ed.arg.items[1], "torsion_spring");
-        } else {
-          e.body = body_ref(ed.arg, "torsion_spring");
-        }
+        one_or_two_bodies(ed, e, "a torsion spring");
         e.k = checked(text_of(option(ed, "k", "k_t"), "k", "k_t"), SceneContext::ParamsOnly, E, "k",
                       "a torsional constant is in N·m/rad");
         positive(e.k, option(ed, "k", "k").pos, "the torsional constant");
@@ -990,14 +983,7 @@ private:
       } else if (k == "torsion_damper") {
         // viscous couple −c (ω₁ − ω₂) on one body, or between two
         only(ed, {"c"});
-        if (ed.arg.is_list()) {
-          if (ed.arg.items.size() != 2)
-            throw SceneError(ed.arg.pos, "a torsion damper acts on one body or between two", "write 'torsion_damper: [a, b]'");
-          e.body = body_ref(ed.arg.items[0], "torsion_damper");
-          e.body2 = body_ref(ed.arg.items[1], "torsion_damper");
-        } else {
-          e.body = body_ref(ed.arg, "torsion_damper");
-        }
+        one_or_two_bodies(ed, e, "a torsion damper");
         e.k = checked(text_of(option(ed, "c", "c_t"), "c", "c_t"), SceneContext::ParamsOnly, E * T, "c",
                       "a torsional damping coefficient is in N*m*s/rad");
         positive(e.k, option(ed, "c", "c").pos, "the torsional damping coefficient");
@@ -1100,6 +1086,18 @@ private:
       if (m_.effect_index(e.name) >= 0)
         throw SceneError(ed.pos, "effect '" + e.name + "' is defined twice", "rename one");
       m_.effects.push_back(e);
+    }
+  }
+
+  // `KIND: body` (acts on the body) or `KIND: [a, b]` (between two bodies: relative angle)
+  void one_or_two_bodies(const scene::EffectDef& ed, Effect& e, const std::string& what) {
+    if (ed.arg.is_list()) {
+      if (ed.arg.items.size() != 2)
+        throw SceneError(ed.arg.pos, what + " acts on one body or between two", "write '" + ed.kind + ": [a, b]'");
+      e.body = body_ref(ed.arg.items[0], ed.kind);
+      e.body2 = body_ref(ed.arg.items[1], ed.kind);
+    } else {
+      e.body = body_ref(ed.arg, ed.kind);
     }
   }
 

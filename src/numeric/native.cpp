@@ -80,20 +80,22 @@ std::pair<std::shared_ptr<void>, void*> load(const std::string& src, const std::
 
 }  // namespace
 
+// The loaded code (kept open while a copy of the handle lives) and its function.
+template <class Native, class Fn>
+Native loaded(const std::string& src, const std::string& name) {
+  auto [handle, fn] = load(src, name);
+  Native out;
+  out.handle_ = handle;
+  out.fn_ = reinterpret_cast<Fn>(fn);
+  return out;
+}
+
 NativeFunction NativeFunction::build(const Tape& t) {
-  auto [handle, fn] = load(t.cpp("kinergy_fn"), "kinergy_fn");
-  NativeFunction f;
-  f.handle_ = handle;
-  f.fn_ = reinterpret_cast<Fn>(fn);
-  return f;
+  return loaded<NativeFunction, Fn>(t.cpp("kinergy_fn"), "kinergy_fn");
 }
 
 NativeKernel NativeKernel::build(const Tape& t) {
-  auto [handle, fn] = load(t.cpp_vector("kinergy_kernel"), "kinergy_kernel");
-  NativeKernel k;
-  k.handle_ = handle;
-  k.fn_ = reinterpret_cast<Fn>(fn);
-  return k;
+  return loaded<NativeKernel, Fn>(t.cpp_vector("kinergy_kernel"), "kinergy_kernel");
 }
 
 }  // namespace kinergy::numerics

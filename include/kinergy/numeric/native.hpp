@@ -8,6 +8,9 @@
 
 namespace kinergy::numerics {
 
+template <class Native, class Fn>
+Native loaded(const std::string& src, const std::string& name);  ///< (native.cpp)
+
 class NativeFunction {
 public:
   /// Compile (or take from the cache) the tape's C++. The cache is $KINERGY_CACHE, else
@@ -24,6 +27,8 @@ public:
 private:
   std::shared_ptr<void> handle_;  ///< dlclose when the last copy goes
   Fn fn_ = nullptr;
+  template <class Native, class F>
+  friend Native loaded(const std::string&, const std::string&);
 };
 
 /// A multi-output tape as machine code: `void f(const double* x, double* out)` writes every
@@ -40,6 +45,8 @@ public:
 private:
   std::shared_ptr<void> handle_;
   Fn fn_ = nullptr;
+  template <class Native, class F>
+  friend Native loaded(const std::string&, const std::string&);
 };
 
 }  // namespace kinergy::numerics
