@@ -230,6 +230,10 @@ int main(int argc, char** argv) {
       sim::Simulator s(m, sol ? sim::simulation_values(*sol) : m.parameter_values(), o);
       sim::Stop stop;
       stop.until = until;
+      // a given impulse acts at the state an impact analysis starts from (or, without
+      // analyses, at the start): not again from a state after it
+      stop.impulses = m.analyses.empty();
+      for (auto& a : m.analyses) stop.impulses = stop.impulses || (a.instant && a.from == start);
       auto c0 = std::chrono::steady_clock::now();
       sim::Run r = s.run(s0, stop);
       double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();

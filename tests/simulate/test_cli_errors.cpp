@@ -48,6 +48,13 @@ TEST_CASE("kinergy simulate --equations and --check", "[simulate][cli]") {
   CHECK(status == 0);
   CHECK_THAT(out, Catch::Contains("floor v_n -4.852216 -> 2.426108 m/s, impulse 1.4556648 N*s; energy lost 1.7658 J"));
   CHECK_THAT(out, Catch::Contains("contact 'floor' comes to rest"));
+  // a given blow acts at the state the impact analysis starts from, not again after it
+  out = kt::run_cli("simulate derivations/impact/rod_struck_by_blow.yaml --until 0.1", status);
+  CHECK_THAT(out, Catch::Contains("the given impulse(s) act"));
+  CHECK_THAT(out, Catch::Contains("work of given impulses: 34.66666667 J"));
+  out = kt::run_cli("simulate derivations/impact/rod_struck_by_blow.yaml --until 0.1 --from after", status);
+  CHECK_THAT(out, !Catch::Contains("the given impulse(s) act"));
+  CHECK_THAT(out, Catch::Contains("theta_dot = 25 rad/s"));
 }
 
 TEST_CASE("kinergy simulate refuses what it cannot do, with the place and a fix", "[simulate][cli][errors]") {
