@@ -375,7 +375,22 @@ struct Simulator::Impl {
         f(static_cast<Eigen::Index>(i)) -= flimit[k] * (dx * rate_J(rx)[i] + (rot ? 0 : dy_ * rate_J(ry)[i]));
       dy[2 * n + w] = -flimit[k] * (vx * dx + vy * dy_);  // P = −μN v·d (= −μN |v| while sliding)
     }
-    constraint_rows();
+    bool rows = nc > 0;
+    for (auto mo : fmode) rows = rows || mo == FrictionMode::Stick;
+    for (auto mo : cmode) rows = rows || mo == ContactMode::Rest;
+    if (!rows && n <= 4 && small_solve(dy + n)) {
+      // no constraint: M q̈ = f by a fixed-size LDLᵀ (n ≤ 4)
+      lambda.resize(0);
+      for (std::size_t i = 0; i < n; ++i) dy[i] = y[n + i];
+      for (std::size_t i = 0; i < n; ++i)
+        if (!std::isfinite(dy[n + i])) undefined(t);
+      return;
+    }
+    if (rows) constraint_rows();
+    else {
+      B.resize(0, static_cast<Eigen::Index>(n));
+      b.resize(0);
+    }
     if (B.rows() == 0) {
       ldlt.compute(M);
       if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0).all()) singular(t);
@@ -393,6 +408,27 @@ struct Simulator::Impl {
 
   /// One run from s0 (run.cpp).
   Run run(const State& s0, const Stop& stop);
+
+  // q̈ = M⁻¹ f for small n with a fixed-size LDLᵀ (no allocation, unrolled); false when M is
+  // not positive definite (the general path then reports it)
+  bool small_solve(double* qdd_out) const {
+    switch (n) {
+      case 1: return small_solve_n<1>(qdd_out);
+      case 2: return small_solve_n<2>(qdd_out);
+      case 3: return small_solve_n<3>(qdd_out);
+      case 4: return small_solve_n<4>(qdd_out);
+      default: return false;
+    }
+  }
+  template <int N>
+  bool small_solve_n(double* qdd_out) const {
+    Eigen::Matrix<double, N, N> Ms = M.template topLeftCorner<N, N>();
+    Eigen::LDLT<Eigen::Matrix<double, N, N>> l(Ms);
+    if (l.info() != Eigen::Success || !(l.vectorD().array() > 0).all()) return false;
+    Eigen::Map<Eigen::Matrix<double, N, 1>> out(qdd_out);
+    out = l.solve(f.template head<N>());
+    return true;
+  }
 
   [[noreturn]] void undefined(double t) const {
     std::string who;
