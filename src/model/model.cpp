@@ -160,18 +160,22 @@ ex Model::kinetic_energy() const {
 
 matrix Model::mass_matrix() const {
   // M(q) = Σ_bodies  m Jᵀ J + Ī Jωᵀ Jω,   J = ∂r_G/∂q,  Jω = ∂φ/∂q
+  // (each body's J and Jω taken once per coordinate; the upper triangle mirrored)
   std::size_t n = coords.size();
   matrix M(n, n);
-  for (auto& b : bodies)
+  std::vector<ex> jx(n), jy(n), jw(n);
+  for (auto& b : bodies) {
+    for (std::size_t i = 0; i < n; ++i) {
+      jx[i] = b.x.diff(coords[i].q);
+      jy[i] = b.y.diff(coords[i].q);
+      jw[i] = b.angle.diff(coords[i].q);
+    }
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < n; ++j) {
-        const symbol& qi = coords[i].q;
-        const symbol& qj = coords[j].q;
-        M(i, j) += b.mass * (b.x.diff(qi) * b.x.diff(qj) + b.y.diff(qi) * b.y.diff(qj)) +
-                   b.inertia * b.angle.diff(qi) * b.angle.diff(qj);
-      }
+      for (std::size_t j = i; j < n; ++j)
+        M(i, j) += b.mass * (jx[i] * jx[j] + jy[i] * jy[j]) + b.inertia * jw[i] * jw[j];
+  }
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) M(i, j) = trig_simplify(M(i, j));
+    for (std::size_t j = i; j < n; ++j) M(j, i) = M(i, j) = trig_simplify(M(i, j));
   return M;
 }
 

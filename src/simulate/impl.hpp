@@ -67,6 +67,7 @@ struct Simulator::Impl {
   // --- the auxiliary kernel: T, V, g, ∂g/∂t, gaps, the stop expression, impulses ---
   std::size_t a_T = 0, a_V = 0, a_g = 0, a_gt = 0, a_gap = 0, a_stop = 0, a_imp = 0;
   bool has_stop = false;
+  std::optional<ex> aux_when;  ///< the stop expression the auxiliary kernel was built with
   std::vector<double> x, out, aux;
   // --- modes ---
   std::vector<FrictionMode> fmode;
