@@ -255,8 +255,11 @@ private:
   // ---------------------------------------------------------------- the loop
   void integrate() {
     double dt = stepper_->adaptive() ? std::min(span_ * 1e-3, 1e-3) : fixed_dt_;
-    std::vector<double> ev0 = events(t_, y_);
+    // a scene without contacts, friction or a stop condition has no events to look for
+    const bool watch = !p_.eq.contacts.empty() || !p_.eq.friction.empty() || p_.has_stop;
+    std::vector<double> ev0 = watch ? events(t_, y_) : std::vector<double>{}, ev1;
     std::vector<double> vn0 = vn_last_;
+    state_type y;  // the trial step (a buffer reused: no allocation per step)
     std::size_t since_progress = 0;
     while (t_ < stop_.until) {
       if (run_.steps >= p_.o.max_steps)
@@ -265,7 +268,7 @@ private:
       double remaining = stop_.until - t_;
       bool last = dt >= remaining;
       double h = last ? remaining : dt;
-      state_type y = y_;
+      y = y_;
       double t = t_, hh = h;
       if (!stepper_->step(sys_, y, t, hh)) {
         ++run_.rejected;
@@ -278,7 +281,7 @@ private:
       if (last && stepper_->adaptive()) t = stop_.until;
       if (stepper_->adaptive()) dt = hh;
       if (!finite(y)) check_finite(y, "the state at t = " + num(t) + " s");
-      std::vector<double> ev1 = events(t, y);
+      if (watch) ev1 = events(t, y);
       // the first event inside the step, located to the tolerance
       int which = -1;
       double when = t - t_;
@@ -328,10 +331,11 @@ private:
       ++run_.steps;
       if (which < 0) {
         t_ = t;
-        y_ = y;
-        if (after_step()) ev0 = events(t_, y_);  // projected: the state moved a little
-        else {
-          ev0 = ev1;
+        y_.swap(y);
+        if (after_step()) {
+          if (watch) ev0 = events(t_, y_);  // projected: the state moved a little
+        } else {
+          ev0.swap(ev1);
           vn_last_ = vn1;
         }
         vn0 = vn_last_;
@@ -340,7 +344,7 @@ private:
         y_ = ywhen;
         if (!handle(static_cast<std::size_t>(which))) break;  // the stop condition
         stepper_->reset();
-        ev0 = events(t_, y_);
+        if (watch) ev0 = events(t_, y_);
         vn0 = vn_last_;
         dt = std::min(dt, next_dt_);
         next_dt_ = std::numeric_limits<double>::infinity();
