@@ -187,33 +187,17 @@ int main(int argc, char** argv) {
         if (start < 0) throw kinergy::SceneError({scene, 1, 1}, "there is no state '" + from + "'", "name a state of the scene's 'states'");
       }
       if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to start from", "add a state with every coordinate and rate");
-      sim::State s0;
-      if (sol) s0 = sim::state_values(*sol, start);
-      else {
-        kinergy::model::Model const& mm = m;
-        auto vals = mm.parameter_values();
-        auto given = mm.given_values();
-        for (auto& c : mm.coords) {
-          auto& [q, qd] = mm.states[static_cast<std::size_t>(start)].sym.at(c.name);
-          for (auto [sym, out] : {std::pair{GiNaC::ex(q), &s0.q}, std::pair{GiNaC::ex(qd), &s0.qd}}) {
-            GiNaC::ex v = sym.subs(given).subs(vals).evalf();
-            if (!GiNaC::is_a<GiNaC::numeric>(v))
-              throw kinergy::SceneError(mm.states[static_cast<std::size_t>(start)].pos,
-                                        "state '" + mm.states[static_cast<std::size_t>(start)].name + "' does not give " +
-                                            (out == &s0.q ? c.name : c.name + "_dot") + " as a number",
-                                        "give every coordinate and rate at the start state");
-            out->push_back(GiNaC::ex_to<GiNaC::numeric>(v).to_double());
-          }
-        }
-        GiNaC::ex tv = mm.states[static_cast<std::size_t>(start)].t.subs(given).subs(vals).evalf();
-        s0.t = GiNaC::is_a<GiNaC::numeric>(tv) ? GiNaC::ex_to<GiNaC::numeric>(tv).to_double() : 0.0;
+      sim::State s0 = sol ? sim::state_values(*sol, start) : sim::state_values(m, {}, m.parameter_values(), start);
+      const auto& st = m.states[static_cast<std::size_t>(start)];
+      for (std::size_t i = 0; i < m.coords.size(); ++i) {
+        if (!std::isnan(s0.q[i]) && !std::isnan(s0.qd[i])) continue;
+        const std::string what = std::isnan(s0.q[i]) ? m.coords[i].name : m.coords[i].name + "_dot";
+        if (!sol)
+          throw kinergy::SceneError(st.pos, "state '" + st.name + "' does not give " + what + " as a number",
+                                    "give every coordinate and rate at the start state");
+        throw kinergy::SceneError(st.pos, "state '" + st.name + "' does not fix " + what + ", and no analysis finds it",
+                                  "give it at that state, or start from another with --from");
       }
-      for (std::size_t i = 0; i < m.coords.size(); ++i)
-        if (std::isnan(s0.q[i]) || std::isnan(s0.qd[i]))
-          throw kinergy::SceneError(m.states[static_cast<std::size_t>(start)].pos,
-                                    "state '" + m.states[static_cast<std::size_t>(start)].name + "' does not fix " + m.coords[i].name +
-                                        (std::isnan(s0.q[i]) ? "" : "_dot") + ", and no analysis finds it",
-                                    "give it at that state, or start from another with --from");
       // a progress bar on stderr for long runs in a terminal
       const bool tty = isatty(2);
       auto t0 = std::chrono::steady_clock::now();

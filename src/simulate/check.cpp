@@ -23,16 +23,20 @@ std::string num(double v) {
   return os.str();
 }
 
+// What is known of a scene's states: the given values, the solved ones, the parameters.
+struct Known {
+  exmap given, solved, params;
+};
+
 // a state symbol's value: given, or solved (closed forms may name other solved symbols)
-double value(const Solution& s, const ex& sym, const exmap& params) {
-  const exmap given = s.model.given_values();
+double value(const Known& k, const ex& sym) {
   ex v = sym;
   for (int pass = 0; pass < 4; ++pass) {
-    ex w = v.subs(given).subs(s.branch.sol);
+    ex w = v.subs(k.given).subs(k.solved);
     if (w.is_equal(v)) break;
     v = w;
   }
-  v = v.subs(params);
+  v = v.subs(k.params);
   try {
     ex e = v.evalf();
     if (is_a<numeric>(e) && ex_to<numeric>(e).is_real()) return ex_to<numeric>(e).to_double();
@@ -53,24 +57,35 @@ exmap simulation_values(const Solution& s) {
   return v;
 }
 
-State state_values(const Solution& s, int index) {
-  const model::Model& m = s.model;
-  const exmap params = simulation_values(s);
+namespace {
+
+State state_values(const model::Model& m, const Known& k, int index) {
   const model::State& st = m.states[static_cast<std::size_t>(index)];
   State out;
-  out.t = value(s, st.t, params);
+  out.t = value(k, st.t);
   if (std::isnan(out.t)) out.t = 0;  // a state without time: its instant is the origin
   for (auto& c : m.coords) {
     auto& [q, qd] = st.sym.at(c.name);
-    out.q.push_back(value(s, q, params));
-    out.qd.push_back(value(s, qd, params));
+    out.q.push_back(value(k, q));
+    out.qd.push_back(value(k, qd));
   }
   return out;
 }
 
+Known known(const Solution& s) { return {s.model.given_values(), s.branch.sol, simulation_values(s)}; }
+
+}  // namespace
+
+State state_values(const model::Model& m, const exmap& solved, const exmap& params, int index) {
+  return state_values(m, Known{m.given_values(), solved, params}, index);
+}
+
+State state_values(const Solution& s, int index) { return state_values(s.model, known(s), index); }
+
 std::vector<Leg> legs(const Solution& s) {
   const model::Model& m = s.model;
-  const exmap params = simulation_values(s);
+  const Known k = known(s);
+  const exmap& params = k.params;
   std::vector<Leg> out;
   for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
     const model::Analysis& a = m.analyses[ai];
@@ -78,8 +93,8 @@ std::vector<Leg> legs(const Solution& s) {
     leg.analysis = static_cast<int>(ai);
     leg.from = a.from;
     leg.to = a.to;
-    leg.start = state_values(s, a.from);
-    leg.expect = state_values(s, a.to);
+    leg.start = state_values(m, k, a.from);
+    leg.expect = state_values(m, k, a.to);
     for (std::size_t i = 0; i < m.coords.size(); ++i)
       if (std::isnan(leg.start.q[i]) || std::isnan(leg.start.qd[i]))
         leg.why_not = "state '" + m.states[a.from].name + "' does not fix " + m.coords[i].name +
@@ -91,7 +106,7 @@ std::vector<Leg> legs(const Solution& s) {
     }
     const model::State& S1 = m.states[a.from];
     const model::State& S2 = m.states[a.to];
-    double t1 = value(s, S1.t, params), t2 = value(s, S2.t, params);
+    double t1 = value(k, S1.t), t2 = value(k, S2.t);
     if (a.instant) {
       // an impact: everything happens at the start
       leg.stop.until = leg.start.t;

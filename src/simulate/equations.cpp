@@ -59,6 +59,13 @@ Equations equations_of_motion(const model::Model& m) {
   }
   for (auto& ci : eq.c) ci = collect_simplify(ci, l);
 
+  // the power of a generalized force, P = Σ Q_i q̇_i
+  auto power = [&](const std::vector<ex>& Q) {
+    ex P = 0;
+    for (std::size_t i = 0; i < n; ++i) P += Q[i] * m.coords[i].qd;
+    return collect_simplify(P, l);
+  };
+
   for (std::size_t k = 0; k < m.effects.size(); ++k) {
     const model::Effect& e = m.effects[k];
     const int idx = static_cast<int>(k);
@@ -72,9 +79,7 @@ Equations equations_of_motion(const model::Model& m) {
       // couple: Q_i = M ∂φ/∂q_i;  force: Q_i = F · ∂r_P/∂q_i
       ForceTerm f{idx, {}, false, 0};
       for (std::size_t i = 0; i < n; ++i) f.Q.push_back(collect_simplify(m.generalized_force(e, i), l));
-      ex P = 0;
-      for (std::size_t i = 0; i < n; ++i) P += f.Q[i] * m.coords[i].qd;
-      f.power = collect_simplify(P, l);
+      f.power = power(f.Q);
       eq.forces.push_back(f);
     } else if (e.kind == "power") {
       // a drive of power P on a body: the couple P/ω, Q_i = (P/ω) ∂φ/∂q_i
@@ -103,9 +108,7 @@ Equations equations_of_motion(const model::Model& m) {
           f.Q.push_back(collect_simplify(-e.k * dd * (dx * dx.diff(qi) + dy * dy.diff(qi)) / d2, l));
         }
       }
-      ex P = 0;
-      for (std::size_t i = 0; i < n; ++i) P += f.Q[i] * m.coords[i].qd;
-      f.power = collect_simplify(P, l);
+      f.power = power(f.Q);
       eq.forces.push_back(f);
     } else if (e.kind == "friction") {
       // the slip velocity of the material point under the friction

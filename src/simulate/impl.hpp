@@ -60,7 +60,7 @@ struct Simulator::Impl {
   std::vector<std::pair<std::string, std::size_t>> work_names;
   // --- the right-hand side kernel: inputs [t, q, q̇] ---
   Kernel rhs_k, aux_k;
-  std::size_t o_M = 0, o_f = 0, o_P = 0, o_A = 0, o_gamma = 0;
+  std::size_t o_M = 0, o_f = 0, o_A = 0, o_gamma = 0;
   std::vector<std::size_t> o_power;                 // of each non-conservative force
   std::vector<std::pair<RateAt, RateAt>> o_fric;    // x, y
   std::vector<std::pair<RateAt, RateAt>> o_cont;    // normal, tangent
@@ -151,7 +151,6 @@ struct Simulator::Impl {
       for (auto& F : eq.forces) fi += F.Q[i];
       outs.push_back(value_of(fi, values, "the equations of motion"));
     }
-    o_P = outs.size();
     for (auto& F : eq.forces) {
       if (F.conservative) continue;
       o_power.push_back(outs.size());
@@ -257,6 +256,37 @@ struct Simulator::Impl {
   const double* rate_J(const RateAt& r) const { return out.data() + r.at + 1; }
   double rate_a0(const RateAt& r) const { return out[r.at + 1 + n]; }
 
+  // the slip velocity of friction k (a friction couple: ω, 0) from the last right-hand side
+  std::array<double, 2> slip(std::size_t k) const {
+    auto [rx, ry] = o_fric[k];
+    return {rate_v(rx), eq.friction[k].rotary ? 0.0 : rate_v(ry)};
+  }
+
+  // Is any constraint row active: holonomic ones, sticking friction, resting contacts?
+  bool rows_active() const {
+    bool any = nc > 0;
+    for (auto mo : fmode) any = any || mo == FrictionMode::Stick;
+    for (auto mo : cmode) any = any || mo == ContactMode::Rest;
+    return any;
+  }
+  // The rows of the active constraints, in the order constraint_rows() lays them out: the
+  // holonomic ones, then each sticking friction's (frows), then each resting contact's (1, or
+  // 2 when rough). friction_row(k) / contact_row(k): where friction k's / contact k's begin.
+  std::size_t friction_row(std::size_t k) const {
+    std::size_t row = nc;
+    for (std::size_t j = 0; j < k; ++j)
+      if (fmode[j] == FrictionMode::Stick) row += static_cast<std::size_t>(frows[j]);
+    return row;
+  }
+  std::size_t contact_rows(std::size_t k) const {
+    return cmode[k] == ContactMode::Rest ? (eq.contacts[k].stick ? 2 : 1) : 0;
+  }
+  std::size_t contact_row(std::size_t k) const {
+    std::size_t row = friction_row(eq.friction.size());
+    for (std::size_t j = 0; j < k; ++j) row += contact_rows(j);
+    return row;
+  }
+
   void fill_M() {
     for (std::size_t i = 0, k = o_M; i < n; ++i)
       for (std::size_t j = 0; j <= i; ++j, ++k) M(i, j) = M(j, i) = out[k];
@@ -264,19 +294,14 @@ struct Simulator::Impl {
 
   // The rows B q̈ = b of every constraint active now: holonomic ones, sticking friction and
   // resting contacts (with their tangential rows when rough).
-  void constraint_rows(std::vector<std::string>* names = nullptr) {
-    std::size_t r = nc;
-    for (std::size_t k = 0; k < eq.friction.size(); ++k)
-      if (fmode[k] == FrictionMode::Stick) r += static_cast<std::size_t>(frows[k]);
-    for (std::size_t k = 0; k < eq.contacts.size(); ++k)
-      if (cmode[k] == ContactMode::Rest) r += eq.contacts[k].stick ? 2 : 1;
+  void constraint_rows() {
+    const std::size_t r = contact_row(eq.contacts.size());
     B.setZero(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(n));
     b.setZero(static_cast<Eigen::Index>(r));
     std::size_t row = 0;
     for (std::size_t c = 0; c < nc; ++c, ++row) {
       for (std::size_t i = 0; i < n; ++i) B(row, i) = out[o_A + c * n + i];
       b(row) = out[o_gamma + c];
-      if (names) names->push_back("constraint");
     }
     for (std::size_t k = 0; k < eq.friction.size(); ++k) {
       if (fmode[k] != FrictionMode::Stick) continue;
@@ -287,7 +312,6 @@ struct Simulator::Impl {
         for (std::size_t i = 0; i < n; ++i)
           B(row, i) = cx * rate_J(rx)[i] + (eq.friction[k].rotary ? 0 : cy * rate_J(ry)[i]);
         b(row) = -(cx * rate_a0(rx) + (eq.friction[k].rotary ? 0 : cy * rate_a0(ry)));
-        if (names) names->push_back("friction");
       }
     }
     for (std::size_t k = 0; k < eq.contacts.size(); ++k) {
@@ -295,12 +319,10 @@ struct Simulator::Impl {
       auto [rn, rt] = o_cont[k];
       for (std::size_t i = 0; i < n; ++i) B(row, i) = rate_J(rn)[i];
       b(row++) = -rate_a0(rn);
-      if (names) names->push_back("contact");
       if (eq.contacts[k].stick) {
         for (std::size_t i = 0; i < n; ++i) B(row, i) = rate_J(rt)[i];
         b(row++) = -rate_a0(rt);
-        if (names) names->push_back("contact");
-      }
+        }
     }
   }
 
@@ -365,7 +387,7 @@ struct Simulator::Impl {
         continue;
       }
       const bool rot = eq.friction[k].rotary;
-      double vx = rate_v(rx), vy = rot ? 0 : rate_v(ry);
+      auto [vx, vy] = slip(k);
       // Past the instant the slip stops (v·d ≤ 0 inside a trial step) the force keeps its
       // direction d, so the right-hand side stays smooth across the event and the event
       // locator, not the step-size control, finds where the slip stops.
@@ -376,9 +398,7 @@ struct Simulator::Impl {
         f(static_cast<Eigen::Index>(i)) -= flimit[k] * (dx * rate_J(rx)[i] + (rot ? 0 : dy_ * rate_J(ry)[i]));
       dy[2 * n + w] = -flimit[k] * (vx * dx + vy * dy_);  // P = −μN v·d (= −μN |v| while sliding)
     }
-    bool rows = nc > 0;
-    for (auto mo : fmode) rows = rows || mo == FrictionMode::Stick;
-    for (auto mo : cmode) rows = rows || mo == ContactMode::Rest;
+    const bool rows = rows_active();
     if (!rows && n <= 4 && small_solve(dy + n)) {
       // no constraint: M q̈ = f by a fixed-size LDLᵀ (n ≤ 4)
       lambda.resize(0);

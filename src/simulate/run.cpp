@@ -157,12 +157,11 @@ public:
     run_.E0 = p_.T() + p_.V();  // before what happens at the start (impulses, impacts)
     max_T_ = p_.T();
     start();
+    p_.eval_aux(t_, y_.data());
     if (p_.has_stop) {
-      p_.eval_aux(t_, y_.data());
       double s = p_.aux[p_.a_stop];
       stop_sign_ = s > 0 ? 1 : (s < 0 ? -1 : 0);
     }
-    p_.eval_aux(t_, y_.data());
     max_T_ = std::max(max_T_, p_.T());
     record();
     if (span_ > 0) integrate();
@@ -186,9 +185,8 @@ private:
       if (!std::isfinite(v)) return false;
     return true;
   }
-  void check_finite(const state_type& y, const std::string& what) const {
-    for (double v : y)
-      if (!std::isfinite(v)) throw SimulationError(what + " is not a number", "give finite positions and rates");
+  static void check_finite(const state_type& y, const std::string& what) {
+    if (!finite(y)) throw SimulationError(what + " is not a number", "give finite positions and rates");
   }
 
   std::string contact_name(std::size_t k) const { return p_.m.effects[p_.eq.contacts[k].effect].name; }
@@ -232,8 +230,7 @@ private:
     // friction that starts without slip: sticks if it can, else slips the way the load pushes
     p_.rhs(y_.data(), t_, dydt.data());
     for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
-      auto [rx, ry] = p_.o_fric[k];
-      double vx = p_.rate_v(rx), vy = p_.eq.friction[k].rotary ? 0 : p_.rate_v(ry);
+      auto [vx, vy] = p_.slip(k);
       double sp = std::hypot(vx, vy);
       if (sp <= vel_tol()) stick_or_slip(k, false);
       else p_.fdir[k] = {vx / sp, vy / sp};
@@ -242,9 +239,7 @@ private:
 
   double gap_tol() const {
     // touching within rounding of the positions themselves
-    double s = 1e-300;
-    for (std::size_t i = 0; i < p_.n; ++i) s = std::max(s, std::fabs(y_[i]));
-    return 1e-12 * std::max(s, 1.0);
+    return 1e-12 * std::max(scale_q(), 1.0);
   }
   double vel_tol() const {
     double s = 0;
@@ -370,8 +365,7 @@ private:
     }
     for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
       if (p_.fmode[k] != FrictionMode::Slide) continue;
-      auto [rx, ry] = p_.o_fric[k];
-      double vx = p_.rate_v(rx), vy = p_.eq.friction[k].rotary ? 0 : p_.rate_v(ry);
+      auto [vx, vy] = p_.slip(k);
       double sp = std::hypot(vx, vy);
       if (sp > 0) p_.fdir[k] = {vx / sp, vy / sp};
     }
@@ -454,25 +448,14 @@ private:
       for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) vn_last_.push_back(p_.rate_v(p_.o_cont[k].first));
     }
     p_.eval_aux(t, y.data());
-    std::size_t row = p_.nc;
-    std::vector<std::size_t> frow(p_.eq.friction.size()), crow(p_.eq.contacts.size());
-    for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
-      frow[k] = row;
-      if (p_.fmode[k] == FrictionMode::Stick) row += static_cast<std::size_t>(p_.frows[k]);
-    }
-    for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
-      crow[k] = row;
-      if (p_.cmode[k] == ContactMode::Rest) row += p_.eq.contacts[k].stick ? 2 : 1;
-    }
     for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k)
-      ev.push_back(p_.cmode[k] == ContactMode::Open ? p_.aux[p_.a_gap + k] : lam[crow[k]]);
+      ev.push_back(p_.cmode[k] == ContactMode::Open ? p_.aux[p_.a_gap + k] : lam[p_.contact_row(k)]);
     for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
-      auto [rx, ry] = p_.o_fric[k];
       if (p_.fmode[k] == FrictionMode::Slide) {
-        double vx = p_.rate_v(rx), vy = p_.eq.friction[k].rotary ? 0 : p_.rate_v(ry);
+        auto [vx, vy] = p_.slip(k);
         ev.push_back(vx * p_.fdir[k][0] + vy * p_.fdir[k][1]);
       } else {
-        auto F = stick_force(k, lam, frow[k]);
+        auto F = stick_force(k, lam);
         ev.push_back(p_.flimit[k] - std::hypot(F[0], F[1]));
       }
     }
@@ -480,8 +463,9 @@ private:
     return ev;
   }
 
-  std::array<double, 2> stick_force(std::size_t k, const std::vector<double>& lam, std::size_t row) const {
+  std::array<double, 2> stick_force(std::size_t k, const std::vector<double>& lam) const {
     // the friction force F = Σ λ_r c_r over the held directions c_r
+    const std::size_t row = p_.friction_row(k);
     std::array<double, 2> F{0, 0};
     for (int r = 0; r < p_.frows[k]; ++r) {
       F[0] += lam[row + static_cast<std::size_t>(r)] * p_.fbasis[k](r, 0);
@@ -525,20 +509,13 @@ private:
     } else {
       std::vector<double> dydt(y_.size());
       p_.rhs(y_.data(), t_, dydt.data());
-      auto F = stick_force(k, std::vector<double>(p_.lambda.data(), p_.lambda.data() + p_.lambda.size()), frow_of(k));
+      auto F = stick_force(k, std::vector<double>(p_.lambda.data(), p_.lambda.data() + p_.lambda.size()));
       double mag = std::hypot(F[0], F[1]);
       p_.fmode[k] = FrictionMode::Slide;
       p_.fdir[k] = {-F[0] / mag, -F[1] / mag};
       note("friction '" + friction_name(k) + "' slips (the load exceeds " + num(p_.flimit[k]) + ")");
     }
     return true;
-  }
-
-  std::size_t frow_of(std::size_t k) const {
-    std::size_t row = p_.nc;
-    for (std::size_t j = 0; j < k; ++j)
-      if (p_.fmode[j] == FrictionMode::Stick) row += static_cast<std::size_t>(p_.frows[j]);
-    return row;
   }
 
   // Stick: hold the slip velocity at zero along the directions the point can slip in (one
@@ -576,9 +553,9 @@ private:
     }
     p_.fmode[k] = FrictionMode::Stick;
     // the velocity held at zero exactly
-    stick_velocity(k);
+    if (p_.frows[k] > 0) project_velocity();
     p_.rhs(y_.data(), t_, dydt.data());
-    auto F = stick_force(k, std::vector<double>(p_.lambda.data(), p_.lambda.data() + p_.lambda.size()), frow_of(k));
+    auto F = stick_force(k, std::vector<double>(p_.lambda.data(), p_.lambda.data() + p_.lambda.size()));
     double mag = std::hypot(F[0], F[1]);
     if (mag <= p_.flimit[k]) {
       if (stopped) note("friction '" + friction_name(k) + "' sticks: the slip has stopped and " + num(mag) + " <= " + num(p_.flimit[k]) + " holds it");
@@ -587,13 +564,6 @@ private:
     p_.fmode[k] = FrictionMode::Slide;
     p_.fdir[k] = {-F[0] / mag, -F[1] / mag};
     if (stopped) note("friction '" + friction_name(k) + "' reverses: the slip stopped, but holding it takes " + num(mag) + " > " + num(p_.flimit[k]));
-  }
-
-  // remove the slip velocity along the held directions (M-orthogonal projection)
-  void stick_velocity(std::size_t k) {
-    if (p_.frows[k] == 0) return;
-    std::vector<std::string> names;
-    project_velocity();
   }
 
   // ---------------------------------------------------------------- impacts
@@ -609,15 +579,9 @@ private:
     // friction forces are finite: they do not hold against an impulse
     Mat Bh = p_.B;
     std::vector<Eigen::Index> keep;
-    {
-      std::size_t row = 0;
-      for (std::size_t c = 0; c < p_.nc; ++c) keep.push_back(static_cast<Eigen::Index>(row++));
-      for (std::size_t k = 0; k < p_.eq.friction.size(); ++k)
-        if (p_.fmode[k] == FrictionMode::Stick) row += static_cast<std::size_t>(p_.frows[k]);
-      for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k)
-        if (p_.cmode[k] == ContactMode::Rest)
-          for (int r = 0; r < (p_.eq.contacts[k].stick ? 2 : 1); ++r) keep.push_back(static_cast<Eigen::Index>(row++));
-    }
+    for (std::size_t c = 0; c < p_.nc; ++c) keep.push_back(static_cast<Eigen::Index>(c));
+    for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k)
+      for (std::size_t r = 0; r < p_.contact_rows(k); ++r) keep.push_back(static_cast<Eigen::Index>(p_.contact_row(k) + r));
     std::size_t rows = keep.size();
     for (std::size_t k : strike) rows += p_.eq.contacts[k].stick ? 2 : 1;
     Mat G(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(n));
@@ -721,7 +685,6 @@ private:
             // positions can resolve: end the bounces with a plastic impact now (its loss is
             // counted) and let the contact rest
             Vec l2 = jump(Vec::Zero(static_cast<Eigen::Index>(n)), {k}, {0.0});
-            double after = p_.rate_v(rn);
             p_.rhs(y_.data(), t_, dydt.data());
             double after2 = p_.rate_v(rn);
             Impact rest;
@@ -732,7 +695,6 @@ private:
             rest.impulse = {l2(0)};
             rest.loss = -0.5 * l2(0) * (vn + after2);
             rest.comes_to_rest = true;
-            (void)after;
             run_.impact_loss += rest.loss;
             run_.impacts.push_back(rest);
             p_.cmode[k] = ContactMode::Rest;
@@ -750,17 +712,16 @@ private:
     for (int pass = 0; pass < 4; ++pass) {
       std::vector<double> dydt(y_.size());
       p_.rhs(y_.data(), t_, dydt.data());
-      std::size_t row = p_.nc;
-      for (std::size_t k = 0; k < p_.eq.friction.size(); ++k)
-        if (p_.fmode[k] == FrictionMode::Stick) row += static_cast<std::size_t>(p_.frows[k]);
+      // (the rows as solved: the modes change only after every contact has been looked at)
+      std::vector<std::size_t> row(p_.eq.contacts.size());
+      for (std::size_t k = 0; k < row.size(); ++k) row[k] = p_.contact_row(k);
       bool changed = false;
       for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
         if (p_.cmode[k] != ContactMode::Rest) continue;
-        if (p_.lambda(static_cast<Eigen::Index>(row)) < 0) {
+        if (p_.lambda(static_cast<Eigen::Index>(row[k])) < 0) {
           p_.cmode[k] = ContactMode::Open;
           changed = true;
         }
-        row += p_.eq.contacts[k].stick ? 2 : 1;
       }
       if (!changed) return;
     }
@@ -771,10 +732,7 @@ private:
   // gaps of resting contacts), rates so that A q̇ + ∂g/∂t = 0, each the M-orthogonal (least
   // kinetic energy) correction  δ = −M⁻¹ Jᵀ (J M⁻¹ Jᵀ)⁻¹ r.
   bool project() {
-    bool any = p_.nc > 0;
-    for (auto mo : p_.cmode) any = any || mo == ContactMode::Rest;
-    for (auto mo : p_.fmode) any = any || mo == FrictionMode::Stick;
-    if (!any) return false;
+    if (!p_.rows_active()) return false;
     const std::size_t n = p_.n;
     for (int it = 0; it < 3; ++it) {
       std::vector<double> dydt(y_.size());
@@ -832,9 +790,8 @@ private:
     std::size_t row = p_.nc;
     for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
       if (p_.fmode[k] != FrictionMode::Stick) continue;
-      auto [rx, ry] = p_.o_fric[k];
-      for (int s = 0; s < p_.frows[k]; ++s, ++row)
-        res[row] = p_.fbasis[k](s, 0) * p_.rate_v(rx) + (p_.eq.friction[k].rotary ? 0 : p_.fbasis[k](s, 1) * p_.rate_v(ry));
+      auto [vx, vy] = p_.slip(k);
+      for (int s = 0; s < p_.frows[k]; ++s, ++row) res[row] = p_.fbasis[k](s, 0) * vx + p_.fbasis[k](s, 1) * vy;
     }
     for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
       if (p_.cmode[k] != ContactMode::Rest) continue;
@@ -864,18 +821,18 @@ private:
   }
 
   // ---------------------------------------------------------------- records
-  void record() {
+  // the state now, with its energies
+  Sample sample() {
     p_.eval_aux(t_, y_.data());
-    Sample s{t_, std::vector<double>(y_.begin(), y_.begin() + static_cast<long>(p_.n)),
-             std::vector<double>(y_.begin() + static_cast<long>(p_.n), y_.begin() + static_cast<long>(2 * p_.n)), p_.T(), p_.V()};
-    run_.samples.push_back(std::move(s));
+    const auto n = static_cast<long>(p_.n);
+    return Sample{t_, std::vector<double>(y_.begin(), y_.begin() + n), std::vector<double>(y_.begin() + n, y_.begin() + 2 * n),
+                  p_.T(), p_.V()};
   }
+  void record() { run_.samples.push_back(sample()); }
 
   void finish() {
     const std::size_t n = p_.n;
-    p_.eval_aux(t_, y_.data());
-    run_.end = Sample{t_, std::vector<double>(y_.begin(), y_.begin() + static_cast<long>(n)),
-                      std::vector<double>(y_.begin() + static_cast<long>(n), y_.begin() + static_cast<long>(2 * n)), p_.T(), p_.V()};
+    run_.end = sample();
     if (run_.samples.empty() || run_.samples.back().t != t_) run_.samples.push_back(run_.end);
     run_.E1 = p_.T() + p_.V();
     max_T_ = std::max(max_T_, p_.T());

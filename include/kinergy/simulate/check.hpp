@@ -16,6 +16,9 @@ GiNaC::exmap simulation_values(const Solution& s);
 
 /// State `index` of a solved scene as numbers; NaN where the solution leaves a value open.
 State state_values(const Solution& s, int index);
+/// The same from a model's given values and `solved` (state symbol → value; empty for a scene
+/// without analyses), the parameters at `params`.
+State state_values(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int index);
 
 /// One analysis as a simulation: from one state to another.
 struct Leg {
