@@ -1,5 +1,7 @@
 #include "kinergy/problem.hpp"
 
+#include "kinergy/effects/contact.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -298,7 +300,7 @@ Solution solve_scene(const scene::SceneDef& def) {
   // a contact can only push: J ≥ 0 along its normal
   for (auto& a : m.analyses)
     for (int ci : a.contacts) {
-      const auto& e = m.effects[ci];
+      const auto& e = effects::contact(m, ci);
       ex J = a.contact_impulses.at(e.name).first.subs(given).subs(sol.branch.sol);
       auto v = numerics::evaluate(J, env, 30);
       if (v && v->is_negative())

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "kinergy/effects/contact.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/units/units.hpp"
@@ -575,7 +576,7 @@ private:
                   " has the positions of " + SB + "), and only impulsive forces act: ")};
     bool any = false;
     for (int ci : a.contacts) {
-      const auto& e = m_.effects[static_cast<std::size_t>(ci)];
+      const auto& e = effects::contact(m_, ci);
       if (any) intro.push_back(W("; "));
       any = true;
       intro.push_back(W("the contact " + e.name + " between " + e.a.text + " and " + e.b.text + ", normal "));
@@ -596,12 +597,12 @@ private:
       }
     }
     for (auto& e : m_.effects)
-      if (e.kind == "impulse") {
+      if (const model::Blow* g = e.blow()) {
         if (any) intro.push_back(W("; "));
         any = true;
-        intro.push_back(W("the given impulse " + e.name + " at " + e.a.text + ", "));
-        intro.push_back(N("\\left(" + latex(tidy(e.Jx)) + ", " + latex(tidy(e.Jy)) + "\\right)",
-                          "(" + plain(tidy(e.Jx)) + ", " + plain(tidy(e.Jy)) + ")"));
+        intro.push_back(W("the given impulse " + e.name + " at " + g->at.text + ", "));
+        intro.push_back(N("\\left(" + latex(tidy(g->Jx)) + ", " + latex(tidy(g->Jy)) + "\\right)",
+                          "(" + plain(tidy(g->Jx)) + ", " + plain(tidy(g->Jy)) + ")"));
       }
     if (!any) intro.push_back(W("none"));
     intro.push_back(W(". Pins and constraints carry workless impulsive reactions; gravity, springs, couples and "

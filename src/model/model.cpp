@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/effects/contact.hpp"
 #include "kinergy/expr/parser.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
@@ -138,7 +139,7 @@ std::pair<ex, ex> Model::velocity(const PointRef& p) const {
   return {rate(x), rate(y)};
 }
 
-static lst rate_list(const std::vector<Coordinate>& coords) {
+lst Model::rates() const {
   lst l;
   for (auto& c : coords) l.append(c.qd);
   return l;
@@ -149,13 +150,13 @@ ex Model::kinetic_energy(int i) const {
   const Body& b = bodies[i];
   ex vx = rate(b.x), vy = rate(b.y), w = omega(i);
   ex T = b.mass * (vx * vx + vy * vy) / 2 + b.inertia * w * w / 2;
-  return collect_simplify(T, rate_list(coords));
+  return collect_simplify(T, rates());
 }
 
 ex Model::kinetic_energy() const {
   ex T = 0;
   for (std::size_t i = 0; i < bodies.size(); ++i) T += kinetic_energy(static_cast<int>(i));
-  return collect_simplify(T, rate_list(coords));
+  return collect_simplify(T, rates());
 }
 
 matrix Model::mass_matrix() const {
@@ -177,33 +178,6 @@ matrix Model::mass_matrix() const {
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i; j < n; ++j) M(j, i) = M(i, j) = trig_simplify(M(i, j));
   return M;
-}
-
-bool Model::conservative(const Effect& e) const {
-  return e.kind == "gravity" || e.kind == "spring" || e.kind == "torsion_spring" || e.kind == "pin";
-}
-
-ex Model::potential_energy(const Effect& e) const {
-  if (e.kind == "gravity") {
-    // V = Σ m g h,  h = −(ĝ · r_G)  (height against the direction of gravity)
-    ex V = 0;
-    for (auto& b : bodies) V += -b.mass * e.g * (e.dir_x * b.x + e.dir_y * b.y);
-    return V.expand();
-  }
-  if (e.kind == "spring") {
-    // V = ½ k (|r_A − r_B| − L₀)²
-    auto [xa, ya] = position(e.a);
-    auto [xb, yb] = position(e.b);
-    ex d2 = trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2));
-    if (e.free.is_zero()) return e.k * d2 / 2;
-    return e.k * pow(spring_length(d2) - e.free, 2) / 2;
-  }
-  if (e.kind == "torsion_spring") {
-    // V = ½ k (φ − φ₀)²,  φ the body's angle (or relative to a second body)
-    ex phi = bodies[e.body].angle - (e.body2 >= 0 ? bodies[e.body2].angle : ex(0));
-    return e.k * pow(phi - e.free, 2) / 2;
-  }
-  return 0;
 }
 
 ex Model::spring_length(const ex& d2) const {
@@ -244,50 +218,8 @@ ex Model::spring_length(const ex& d2) const {
 
 ex Model::potential_energy() const {
   ex V = 0;
-  for (auto& e : effects) V += potential_energy(e);
+  for (auto& e : effects) V += e.potential(*this);
   return V;
-}
-
-ex Model::generalized_force(const Effect& e, std::size_t i) const {
-  const symbol& q = coords[i].q;
-  if (conservative(e)) return -potential_energy(e).diff(q);  // Q_i = −∂V/∂q_i
-  if (e.kind == "couple") return e.M * bodies[e.body].angle.diff(q);  // Q_i = M ∂φ/∂q_i
-  if (e.kind == "force") {
-    auto [dx, dy] = position_derivative(e.a, q);  // Q_i = F · ∂r_P/∂q_i
-    return e.Fx * dx + e.Fy * dy;
-  }
-  return 0;
-}
-
-ex Model::power(const Effect& e) const {
-  if (e.kind == "friction") {
-    // P = −μ N |v_P|
-    auto [vx, vy] = velocity(e.a);
-    return -e.mu * e.normal * sqrt(trig_simplify(vx * vx + vy * vy));
-  }
-  if (e.kind == "friction_couple") return -e.M * abs(omega(e.body));  // P = −M |ω|
-  if (e.kind == "torsion_damper") {
-    // P = −c (ω₁ − ω₂)²
-    ex w = omega(e.body) - (e.body2 >= 0 ? omega(e.body2) : ex(0));
-    return collect_simplify(-e.k * w * w, rate_list(coords));
-  }
-  if (e.kind == "damper") {
-    // P = −c (d·ḋ)²/|d|²,  d = r_B − r_A  (c times the square of the rate of the length)
-    auto [xa, ya] = position(e.a);
-    auto [xb, yb] = position(e.b);
-    ex dx = xb - xa, dy = yb - ya;
-    ex dd = rate(dx) * dx + rate(dy) * dy;
-    return -e.k * pow(collect_simplify(dd, rate_list(coords)), 2) / trig_simplify(dx * dx + dy * dy);
-  }
-  if (e.kind == "power") return e.P;
-  if (e.kind == "couple") return e.M * omega(e.body);                // P = M ω
-  if (e.kind == "force") {
-    auto [vx, vy] = velocity(e.a);                                     // P = F · v
-    return e.Fx * vx + e.Fy * vy;
-  }
-  ex P = 0;  // conservative: P = −dV/dt
-  if (conservative(e)) P = -rate(potential_energy(e));
-  return collect_simplify(P, rate_list(coords));
 }
 
 ex Model::angular_momentum(const PointRef& p) const {
@@ -522,9 +454,7 @@ public:
       auto [x, y] = m_.impulse(e, ai);
       if (f == "impulse_x") return x;
       if (f == "impulse_y") return y;
-      const Effect& ef = m_.effects[e];
-      if (ef.kind == "contact") return m_.analyses[ai].contact_impulses.at(ef.name).first;  // J along n
-      return sqrt(x * x + y * y);
+      return m_.effects[e].impulse_size(m_, ai, x, y);
     }
     throw InputError("unknown function '" + f + "'",
                      "use T, V, T(body), omega(body), x(P), y(P), vx(P), vy(P), speed(P), power(effect), "
@@ -565,7 +495,7 @@ ex Model::parse(const std::string& text, const SourcePos& pos, bool allow_states
 
 // ---------------------------------------------------------------- builder
 
-class Builder {
+class Builder : public EffectReader {
 public:
   explicit Builder(const scene::SceneDef& d) : d_(d) {}
 
@@ -658,7 +588,7 @@ private:
 
   /// Numeric value with the parameters' values, if all are known. @throws SceneError when it
   /// is undefined (a division by zero) or not a real number.
-  std::optional<numeric> value_of(const ex& e, const SourcePos& pos, const std::string& what) {
+  std::optional<numeric> value_of(const ex& e, const SourcePos& pos, const std::string& what) override {
     ex v;
     try {
       v = e.subs(m_.parameter_values()).evalf();
@@ -674,14 +604,14 @@ private:
   }
 
   /// Where a value is written: a lone parameter's value, else the place that uses it.
-  SourcePos value_place(const ex& e, const SourcePos& use) {
+  SourcePos value_place(const ex& e, const SourcePos& use) override {
     if (is_a<symbol>(e))
       for (auto& pd : d_.parameters)
         if (const Parameter* p = m_.parameter(pd.name); p && p->sym.is_equal(e)) return pd.value.pos;
     return use;
   }
 
-  void positive(const ex& e, const SourcePos& pos, const std::string& what, bool allow_zero = false) {
+  void positive(const ex& e, const SourcePos& pos, const std::string& what, bool allow_zero = false) override {
     auto v = value_of(e, pos, what);
     if (!v || !(allow_zero ? v->is_negative() : !v->is_positive())) return;
     const std::string must = allow_zero ? "zero or positive" : "positive";
@@ -835,21 +765,22 @@ private:
     }
   }
 
-  // --- effects ---
-  const Node& option(const scene::EffectDef& e, const std::string& key, const std::string& example) {
+  // --- effects: each kind reads its own options (src/effects/) through these ---
+  const Model& model() const override { return m_; }
+  const Node& option(const scene::EffectDef& e, const std::string& key, const std::string& example) override {
     const Node* n = e.options.get(key);
     if (!n)
       throw SceneError(e.pos, "effect '" + e.name + "' (" + e.kind + ") has no '" + key + "'",
                        "add '" + key + ": " + example + "'");
     return *n;
   }
-  Text text_of(const Node& n, const std::string& key, const std::string& example) {
+  Text text_of(const Node& n, const std::string& key, const std::string& example) override {
     if (!n.is_scalar())
       throw SceneError(n.pos, "'" + key + "' must be a single value, not " + n.kind_name(),
                        "write e.g. '" + key + ": " + example + "'");
     return {n.scalar, n.pos};
   }
-  void only(const scene::EffectDef& e, std::vector<std::string> keys) {
+  void only(const scene::EffectDef& e, std::vector<std::string> keys) override {
     keys.push_back(e.kind);
     for (std::size_t i = 0; i + 1 < e.options.entries.size(); ++i)
       if (e.options.entries[i + 1].second.kind == Node::Kind::Null) check_cut(e.options.entries[i].second);
@@ -865,7 +796,7 @@ private:
                          near.empty() ? "use: " + list : "did you mean '" + near + "'?");
       }
   }
-  PointRef point_ref(const Node& n, const std::string& key) {
+  PointRef point_ref(const Node& n, const std::string& key) override {
     if (!n.is_scalar())
       throw SceneError(n.pos, "'" + key + "' must name a point, not " + n.kind_name(),
                        "write body.point, a body, or a fixed point");
@@ -876,7 +807,7 @@ private:
     }
   }
   /// `direction: positive|negative` of a friction effect: the sign of the motion it opposes.
-  std::optional<int> direction_of(const scene::EffectDef& ed) {
+  std::optional<int> direction_of(const scene::EffectDef& ed) override {
     const Node* d = ed.options.get("direction");
     if (!d) return std::nullopt;
     if (!d->is_scalar() || (d->scalar != "positive" && d->scalar != "negative"))
@@ -886,7 +817,7 @@ private:
   }
 
   // A contact party: a point, a body, or the ground (a line, no point).
-  PointRef party(const Node& n) {
+  PointRef party(const Node& n) override {
     if (n.is_scalar() && n.scalar == "ground") {
       PointRef p;
       p.ground = true;
@@ -896,7 +827,7 @@ private:
     return point_ref(n, "contact");
   }
 
-  int body_ref(const Node& n, const std::string& key) {
+  int body_ref(const Node& n, const std::string& key) override {
     if (!n.is_scalar())
       throw SceneError(n.pos, "'" + key + "' must name a body, not " + n.kind_name(), "write the body's name");
     int b = m_.body_index(n.scalar);
@@ -908,6 +839,10 @@ private:
                        near.empty() ? "name a body of the scene" : "did you mean '" + near + "'?");
     }
     return b;
+  }
+  std::pair<ex, ex> vec(const Node& n, const std::string& key, const Dimension& d, bool geometry,
+                        const std::string& fix) override {
+    return vec(n, key, d, geometry ? SceneContext::Geometry : SceneContext::ParamsOnly, fix);
   }
   std::pair<ex, ex> vec(const Node& n, const std::string& key, const Dimension& d, SceneContext::Level lv,
                         const std::string& fix) {
@@ -926,212 +861,52 @@ private:
     return {x, y};
   }
 
-  void effects() {
-    const Dimension M = Dimension::mass(), L = Dimension::length(), T = Dimension::time();
-    const Dimension F = M * L / (T * T), E = F * L;
-    for (auto& ed : d_.effects) {
-      Effect e;
-      e.name = ed.name;
-      e.kind = ed.kind;
-      e.pos = ed.pos;
-      const std::string& k = ed.kind;
-      if (k == "gravity") {
-        only(ed, {"g", "direction"});
-        Node gnode = ed.arg.kind == Node::Kind::Scalar ? ed.arg : option(ed, "g", "g");
-        if (ed.arg.kind == Node::Kind::Scalar && ed.options.get("g"))
-          throw SceneError(ed.options.get("g")->pos, "gravity is given twice", "give 'g' once");
-        e.g = checked(text_of(gnode, "g", "g"), SceneContext::ParamsOnly, L / (T * T), "g",
-                      "g is an acceleration, e.g. 9.81 m/s^2");
-        positive(e.g, gnode.pos, "g");
-        if (auto* d = ed.options.get("direction")) {
-          auto [dx, dy] = vec(*d, "direction", Dimension{}, SceneContext::ParamsOnly,
-                              "a direction is a pair of pure numbers");
-          ex n2 = dx * dx + dy * dy;
-          if (n2.is_zero()) throw SceneError(d->pos, "the direction of gravity is zero", "write e.g. [0, -1]");
-          e.dir_x = dx / sqrt(n2);
-          e.dir_y = dy / sqrt(n2);
-        }
-      } else if (k == "spring") {
-        only(ed, {"k", "free_length"});
-        if (!ed.arg.is_list() || ed.arg.items.size() != 2)
-          throw SceneError(ed.arg.pos, "a spring joins two points", "write 'spring: [A, bar.B]'");
-        e.a = point_ref(ed.arg.items[0], "spring");
-        e.b = point_ref(ed.arg.items[1], "spring");
-        e.k = checked(text_of(option(ed, "k", "k"), "k", "k"), SceneContext::ParamsOnly, F / L, "k",
-                      "a spring constant is in N/m (or lb/ft)");
-        positive(e.k, option(ed, "k", "k").pos, "the spring constant");
-        if (auto* f = ed.options.get("free_length")) {
-          e.free = checked(text_of(*f, "free_length", "L0"), SceneContext::ParamsOnly, L, "free_length",
-                           "a free length is a length");
-          positive(e.free, f->pos, "the free length", true);
-        }
-      } else if (k == "torsion_spring") {
-        only(ed, {"k", "free_angle"});
-        one_or_two_bodies(ed, e, "a torsion spring");
-        e.k = checked(text_of(option(ed, "k", "k_t"), "k", "k_t"), SceneContext::ParamsOnly, E, "k",
-                      "a torsional constant is in N·m/rad");
-        positive(e.k, option(ed, "k", "k").pos, "the torsional constant");
-        if (auto* f = ed.options.get("free_angle"))
-          e.free = checked(text_of(*f, "free_angle", "0"), SceneContext::ParamsOnly, Dimension{},
-                           "free_angle", "an angle is a pure number (rad)");
-      } else if (k == "damper") {
-        // viscous damper between two points: force c·(rate of its length) along its line
-        only(ed, {"c"});
-        if (!ed.arg.is_list() || ed.arg.items.size() != 2)
-          throw SceneError(ed.arg.pos, "a damper joins two points", "write 'damper: [A, bar.B]'");
-        e.a = point_ref(ed.arg.items[0], "damper");
-        e.b = point_ref(ed.arg.items[1], "damper");
-        e.k = checked(text_of(option(ed, "c", "c"), "c", "c"), SceneContext::ParamsOnly, F * T / L, "c",
-                      "a damping coefficient is in N*s/m (or lb*s/ft)");
-        positive(e.k, option(ed, "c", "c").pos, "the damping coefficient");
-      } else if (k == "torsion_damper") {
-        // viscous couple −c (ω₁ − ω₂) on one body, or between two
-        only(ed, {"c"});
-        one_or_two_bodies(ed, e, "a torsion damper");
-        e.k = checked(text_of(option(ed, "c", "c_t"), "c", "c_t"), SceneContext::ParamsOnly, E * T, "c",
-                      "a torsional damping coefficient is in N*m*s/rad");
-        positive(e.k, option(ed, "c", "c").pos, "the torsional damping coefficient");
-      } else if (k == "couple" || k == "friction_couple") {
-        if (k == "couple") only(ed, {"M"});
-        else only(ed, {"M", "direction"});
-        e.body = body_ref(ed.arg, k);
-        e.M = checked(text_of(option(ed, "M", "M0"), "M", "M0"),
-                      k == "couple" ? SceneContext::Geometry : SceneContext::ParamsOnly, E, "M",
-                      "a couple is in N·m (or lb·ft)");
-        if (k == "friction_couple") {
-          positive(e.M, option(ed, "M", "M").pos, "a friction couple", true);
-          e.direction = direction_of(ed);
-        }
-      } else if (k == "force" || k == "friction") {
-        if (k == "force") only(ed, {"F", "at"});
-        else only(ed, {"mu", "normal", "at", "direction"});
-        if (auto* at = ed.options.get("at")) {
-          e.a.body = body_ref(ed.arg, k);
-          e.a.world_place = true;
-          e.a.text = ed.arg.scalar + " at " + "place";
-          auto [wx, wy] = vec(*at, "at", L, SceneContext::Geometry, "a place is a pair of lengths");
-          e.a.wx = wx;
-          e.a.wy = wy;
-        } else {
-          e.a = point_ref(ed.arg, k);
-          if (e.a.body < 0)
-            throw SceneError(ed.arg.pos, "a " + k + " acts on a body, but '" + ed.arg.scalar + "' is a fixed point",
-                             "name body.point or a body (its mass centre)");
-        }
-        if (k == "force") {
-          auto [fx, fy] = vec(option(ed, "F", "[0, -P]"), "F", F, SceneContext::Geometry, "a force is in N (or lb)");
-          e.Fx = fx;
-          e.Fy = fy;
-        } else {
-          e.mu = checked(text_of(option(ed, "mu", "mu_k"), "mu", "mu_k"), SceneContext::ParamsOnly,
-                         Dimension{}, "mu", "a friction coefficient is a pure number");
-          positive(e.mu, option(ed, "mu", "mu").pos, "the friction coefficient", true);
-          e.normal = checked(text_of(option(ed, "normal", "m*g"), "normal", "m*g"),
-                             SceneContext::ParamsOnly, F, "normal", "a normal force is in N (or lb)");
-          positive(e.normal, option(ed, "normal", "N").pos, "the normal force", true);
-          e.direction = direction_of(ed);
-        }
-      } else if (k == "power") {
-        only(ed, {"P"});
-        e.body = body_ref(ed.arg, k);
-        e.P = checked(text_of(option(ed, "P", "P0"), "P", "P0"), SceneContext::ParamsOnly, E / T, "P",
-                      "a power is in W (or hp)");
-      } else if (k == "contact") {
-        only(ed, {"normal", "e", "tangential"});
-        if (!ed.arg.is_list() || ed.arg.items.size() != 2)
-          throw SceneError(ed.arg.pos, "a contact names two parties",
-                           "write 'contact: [ball, bar.Q]' (body points, bodies, fixed points or ground)");
-        e.a = party(ed.arg.items[0]);
-        e.b = party(ed.arg.items[1]);
-        if (e.a.body < 0 && e.b.body < 0)
-          throw SceneError(ed.arg.pos, "contact '" + ed.name + "' joins two fixed parties; nothing can strike",
-                           "make at least one party a body or a body point");
-        const Node& nn = option(ed, "normal", "[0, 1]");
-        auto [nx, ny] = vec(nn, "normal", Dimension{}, SceneContext::ParamsOnly,
-                            "a normal is a direction: a pair of pure numbers");
-        ex n2 = model::trig_simplify(nx * nx + ny * ny);
-        auto nv = value_of(n2, nn.pos, "the normal of '" + ed.name + "'");
-        if (n2.is_zero() || (nv && nv->is_zero()))
-          throw SceneError(nn.pos, "the normal of contact '" + ed.name + "' is zero", "write a direction, e.g. [0, 1]");
-        // n̂ = n / |n|
-        e.nx = nx / sqrt(n2);
-        e.ny = ny / sqrt(n2);
-        const Node& en = option(ed, "e", "0.5");
-        e.e = checked(text_of(en, "e", "0.5"), SceneContext::ParamsOnly, Dimension{}, "e",
-                      "a coefficient of restitution is a pure number");
-        if (auto v = value_of(e.e, en.pos, "the coefficient of restitution"); v && (v->is_negative() || *v > 1))
-          throw SceneError(value_place(e.e, en.pos), "the coefficient of restitution of '" + ed.name + "' is " + text(*v) + ", outside [0, 1]",
-                           std::string("give ") + (is_a<symbol>(e.e) ? "'" + text(e.e) + "' a value" : std::string("e")) +
-                               " between 0 (plastic: the parties move together) and 1 (elastic)");
-        if (auto* tg = ed.options.get("tangential")) {
-          if (!tg->is_scalar() || (tg->scalar != "stick" && tg->scalar != "smooth"))
-            throw SceneError(tg->pos, "'tangential' must be stick or smooth",
-                             "write 'tangential: stick' for a rough contact that does not slide after the impact");
-          e.stick = tg->scalar == "stick";
-        }
-      } else if (k == "impulse") {
-        only(ed, {"J"});
-        e.a = point_ref(ed.arg, k);
-        if (e.a.body < 0)
-          throw SceneError(ed.arg.pos, "an impulse acts on a body, but '" + ed.arg.scalar + "' is a fixed point",
-                           "name body.point or a body (its mass centre)");
-        auto [jx, jy] = vec(option(ed, "J", "[J0, 0]"), "J", F * T, SceneContext::ParamsOnly,
-                            "an impulse is in N*s (or lb*s)");
-        e.Jx = jx;
-        e.Jy = jy;
-      } else if (k == "pin") {
-        only(ed, {});
-        if (!ed.arg.is_list() || ed.arg.items.size() != 2)
-          throw SceneError(ed.arg.pos, "a pin joins two points", "write 'pin: [O, bar.O]'");
-        e.a = point_ref(ed.arg.items[0], "pin");
-        e.b = point_ref(ed.arg.items[1], "pin");
-        check_pin(e, ed.arg.pos);
-      }
-      if (m_.effect_index(e.name) >= 0)
-        throw SceneError(ed.pos, "effect '" + e.name + "' is defined twice", "rename one");
-      m_.effects.push_back(e);
-    }
+  ex quantity(const Text& t, bool geometry, const Dimension& want, const std::string& key,
+             const std::string& fix) override {
+    return checked(t, geometry ? SceneContext::Geometry : SceneContext::ParamsOnly, want, key, fix);
   }
 
   // `KIND: body` (acts on the body) or `KIND: [a, b]` (between two bodies: relative angle)
-  void one_or_two_bodies(const scene::EffectDef& ed, Effect& e, const std::string& what) {
+  std::pair<int, int> one_or_two_bodies(const scene::EffectDef& ed, const std::string& what) override {
     if (ed.arg.is_list()) {
       if (ed.arg.items.size() != 2)
         throw SceneError(ed.arg.pos, what + " acts on one body or between two", "write '" + ed.kind + ": [a, b]'");
-      e.body = body_ref(ed.arg.items[0], ed.kind);
-      e.body2 = body_ref(ed.arg.items[1], ed.kind);
-    } else {
-      e.body = body_ref(ed.arg, ed.kind);
+      int b1 = body_ref(ed.arg.items[0], ed.kind);
+      return {b1, body_ref(ed.arg.items[1], ed.kind)};
     }
+    return {body_ref(ed.arg, ed.kind), -1};
   }
 
-  // A pin declares that two points coincide for every value of the coordinates.
-  void check_pin(const Effect& e, const SourcePos& pos) {
-    auto [xa, ya] = m_.position(e.a);
-    auto [xb, yb] = m_.position(e.b);
-    ex dx = trig_simplify(xa - xb), dy = trig_simplify(ya - yb);
-    if (dx.is_zero() && dy.is_zero()) return;
-    exmap vals = m_.parameter_values();
-    std::mt19937 rng(12345);
-    std::uniform_real_distribution<double> u(-3, 3);
-    for (int trial = 0; trial < 5; ++trial) {
-      exmap m = vals;
-      for (auto& c : m_.coords) m[c.q] = numeric(u(rng));
-      m[m_.t] = numeric(u(rng) + 3);
-      ex gx, gy;
-      try {
-        gx = dx.subs(m).evalf();
-        gy = dy.subs(m).evalf();
-      } catch (const std::exception&) {
-        continue;  // undefined at this sample position: try another
-      }
-      if (!is_a<numeric>(gx) || !is_a<numeric>(gy)) return;  // symbolic parameters: trust it
-      double d = std::hypot(ex_to<numeric>(gx).to_double(), ex_to<numeric>(gy).to_double());
-      // apart, against the size of the positions themselves (a scene may be a millimetre across)
-      if (!numerics::negligible(dx, m).value_or(true) || !numerics::negligible(dy, m).value_or(true))
-        throw SceneError(pos, "pin '" + e.name + "': " + e.a.text + " and " + e.b.text +
-                                  " do not coincide (apart by " + numerics::format(numeric(d), 6) + " m at some position)",
-                         "fix the body's position/angle or the point so the pinned points stay together");
+  // `KIND: body.P` (a body point or mass centre), or `KIND: body` with `at: [x, y]` (the body's
+  // material point at that world place: a cord leaving a hub, a fixed brake shoe)
+  PointRef acting_point(const scene::EffectDef& ed) override {
+    if (auto* at = ed.options.get("at")) {
+      PointRef a;
+      a.body = body_ref(ed.arg, ed.kind);
+      a.world_place = true;
+      a.text = ed.arg.scalar + " at " + "place";
+      auto [wx, wy] = vec(*at, "at", Dimension::length(), SceneContext::Geometry, "a place is a pair of lengths");
+      a.wx = wx;
+      a.wy = wy;
+      return a;
+    }
+    PointRef a = point_ref(ed.arg, ed.kind);
+    if (a.body < 0)
+      throw SceneError(ed.arg.pos, "a " + ed.kind + " acts on a body, but '" + ed.arg.scalar + "' is a fixed point",
+                       "name body.point or a body (its mass centre)");
+    return a;
+  }
+
+  void effects() {
+    const auto& kinds = effect_kinds();
+    for (auto& ed : d_.effects) {
+      // the scene has checked the kind's name against the same table
+      auto kind = std::find_if(kinds.begin(), kinds.end(), [&](const EffectKind& k) { return k.name == ed.kind; });
+      if (kind == kinds.end()) throw std::logic_error("effect kind '" + ed.kind + "' is not in the table");
+      std::shared_ptr<const Effect> e = kind->read(*this, ed);
+      if (m_.effect_index(e->name) >= 0)
+        throw SceneError(ed.pos, "effect '" + e->name + "' is defined twice", "rename one");
+      m_.effects.push_back(e);
     }
   }
 
@@ -1324,23 +1099,23 @@ private:
           if (!cs->is_list()) throw SceneError(cs->pos, "'contacts' must be a list", "write 'contacts: [hit1, hit2]'");
           for (auto& it : cs->items) names.push_back(&it);
         }
-        bool blows = std::any_of(m_.effects.begin(), m_.effects.end(), [](const Effect& e) { return e.kind == "impulse"; });
+        bool blows = std::any_of(m_.effects.begin(), m_.effects.end(), [](const Effect& e) { return e.blow() != nullptr; });
         if (names.empty() && !blows)
           throw SceneError(ad.pos, "an impact needs a contact or a given impulse",
                            "write 'impact: {from: before, to: after, contact: hit}', or add an effect '{impulse: body.P, J: [Jx, Jy]}'");
         for (auto* n : names) {
           int ei = n->is_scalar() ? m_.effect_index(n->scalar) : -1;
-          if (ei < 0 || m_.effects[ei].kind != "contact") {
+          if (ei < 0 || !effects::as_contact(m_.effects[ei])) {
             std::vector<std::string> contacts;
             for (auto& e : m_.effects)
-              if (e.kind == "contact") contacts.push_back(e.name);
+              if (effects::as_contact(e)) contacts.push_back(e.name);
             std::string near = n->is_scalar() ? scene::closest(n->scalar, contacts) : "";
             throw SceneError(n->pos, "'" + (n->is_scalar() ? n->scalar : std::string("?")) + "' is not a contact effect",
                              near.empty() ? "define it under effects: 'hit: {contact: [A, B], normal: [nx, ny], e: e}'"
                                           : "did you mean '" + near + "'?");
           }
           a.contacts.push_back(ei);
-          const Effect& e = m_.effects[ei];
+          const effects::Contact& e = effects::contact(m_, ei);
           // unknown impulses: J along n (and Jt along the tangent when rough)
           ex J = impulse_symbol("J_" + e.name + "[" + S1 + "," + S2 + "]", P);
           ex Jt = e.stick ? impulse_symbol("Jt_" + e.name + "[" + S1 + "," + S2 + "]", P) : ex(0);
@@ -1359,9 +1134,7 @@ private:
       } else if (ad.kind != "energy") {
         // pins between the body set and the rest carry unknown reactions
         for (auto& e : m_.effects) {
-          if (e.kind != "pin") continue;
-          auto in = [&](int b) { return b >= 0 && std::find(a.bodies.begin(), a.bodies.end(), b) != a.bodies.end(); };
-          if (in(e.a.body) == in(e.b.body)) continue;
+          if (!e.reaction_across(a.bodies)) continue;
           std::string key = e.name + "|" + S1 + "|" + S2;
           if (!pin_reactions.count(key)) {
             ex Rx = impulse_symbol("Rx_" + e.name + "[" + S1 + "," + S2 + "]", P);

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/effects/contact.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
@@ -16,12 +17,8 @@ using model::Effect;
 using model::Model;
 using model::PointRef;
 
-namespace {
-
-
 bool in_set(const std::vector<int>& s, int b) { return std::find(s.begin(), s.end(), b) != s.end(); }
 
-/// Zero for every value of the coordinates (symbolic, then numeric at random points)?
 bool vanishes(const Model& m, const ex& e) {
   ex x = model::trig_simplify(e);
   if (x.is_zero()) return true;
@@ -47,6 +44,22 @@ bool motion_free(const Model& m, const ex& e) {
   return true;
 }
 
+int motion_direction(const Model& m, const Effect& e, std::optional<int> declared, const ex& generic, const Analysis& a,
+                     const Knowledge& k, const std::string& what) {
+  for (int s : {a.from, a.to}) {
+    auto v = k.value(m.bind(generic, s));
+    if (v && !v->is_zero()) return v->is_positive() ? 1 : -1;
+  }
+  if (declared) return *declared;
+  const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;
+  throw SceneError(e.pos, "the direction of " + what + " under '" + e.name + "' between states " + S1 + " and " + S2 +
+                              " is not known (no velocity there tells it)",
+                   "give a nonzero velocity at state '" + S1 + "' or '" + S2 + "', or 'direction: positive|negative' on '" +
+                       e.name + "' (the sign of the " + what + ")");
+}
+
+namespace {
+
 /// ∫_{t₁}^{t₂} f(t) dt for f free of the motion.
 ex time_integral(const Model& m, const Effect& e, const ex& f, const Analysis& a) {
   ex dt = m.states[a.to].t - m.states[a.from].t;
@@ -62,124 +75,10 @@ std::string state_pair(const Model& m, const Analysis& a) {
   return "states " + m.states[a.from].name + " -> " + m.states[a.to].name;
 }
 
-/// Direction of sliding (or turning) over the interval: at the first state, or — starting from
-/// rest — at the second (friction does not reverse a motion within one interval), or as declared.
-int motion_direction(const Model& m, const Effect& e, const ex& generic, const Analysis& a, const Knowledge& k,
-                     const std::string& what) {
-  for (int s : {a.from, a.to}) {
-    auto v = k.value(m.bind(generic, s));
-    if (v && !v->is_zero()) return v->is_positive() ? 1 : -1;
-  }
-  if (e.direction) return *e.direction;
-  const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;
-  throw SceneError(e.pos, "the direction of " + what + " under '" + e.name + "' between states " + S1 + " and " + S2 +
-                              " is not known (no velocity there tells it)",
-                   "give a nonzero velocity at state '" + S1 + "' or '" + S2 + "', or 'direction: positive|negative' on '" +
-                       e.name + "' (the sign of the " + what + ")");
-}
-
-/// A force (and where it acts) that an effect exerts on the body set over the interval.
-struct Push {
-  ex Fx = 0, Fy = 0;  ///< force (generic; may depend on t)
-  ex arm_x = 0, arm_y = 0;  ///< application point (generic)
-  ex M = 0;           ///< a couple (generic)
-  bool unknown = false;  ///< pin reaction
-  ex Rx = 0, Ry = 0;
-};
-
-/// The external forces of effect e on the bodies of analysis a; empty when e is internal or
-/// does not act on them. Throws when its impulse cannot be taken over a duration.
+/// The pushes of effect e on the bodies of analysis a (none when e is internal or does not act on them).
 std::vector<Push> pushes(const Model& m, const Effect& e, const Analysis& a, const Knowledge& k) {
   std::vector<Push> out;
-  const auto& S = a.bodies;
-  const std::string& kind = e.kind;
-  auto on = [&](int b) { return b >= 0 && in_set(S, b); };
-  if (kind == "gravity") {
-    for (int b : S) {
-      Push p;
-      p.Fx = m.bodies[b].mass * e.g * e.dir_x;
-      p.Fy = m.bodies[b].mass * e.g * e.dir_y;
-      p.arm_x = m.bodies[b].x;
-      p.arm_y = m.bodies[b].y;
-      out.push_back(p);
-    }
-  } else if (kind == "force") {
-    if (!on(e.a.body)) return out;
-    Push p;
-    p.Fx = e.Fx;
-    p.Fy = e.Fy;
-    auto [x, y] = m.position(e.a);
-    p.arm_x = x;
-    p.arm_y = y;
-    out.push_back(p);
-  } else if (kind == "couple") {
-    if (!on(e.body)) return out;
-    Push p;
-    p.M = e.M;
-    out.push_back(p);
-  } else if (kind == "friction") {
-    if (!on(e.a.body)) return out;
-    // kinetic friction −μN û against the sliding velocity of the point at the first state
-    auto [vx, vy] = m.velocity(e.a);
-    ex ux, uy;
-    bool x0 = vanishes(m, vy), y0 = vanishes(m, vx);
-    if (x0 && !y0) {
-      ux = motion_direction(m, e, vx, a, k, "sliding");
-      uy = 0;
-    } else if (y0 && !x0) {
-      ux = 0;
-      uy = motion_direction(m, e, vy, a, k, "sliding");
-    } else {
-      throw SceneError(e.pos, "friction '" + e.name + "' slides along a changing direction; its impulse needs the motion in time",
-                       "use friction whose contact slides along a fixed line (x or y)");
-    }
-    Push p;
-    p.Fx = -e.mu * e.normal * ux;
-    p.Fy = -e.mu * e.normal * uy;
-    auto [x, y] = m.position(e.a);
-    p.arm_x = x;
-    p.arm_y = y;
-    out.push_back(p);
-  } else if (kind == "friction_couple") {
-    if (!on(e.body)) return out;
-    Push p;
-    p.M = -e.M * motion_direction(m, e, m.omega(e.body), a, k, "rotation");
-    out.push_back(p);
-  } else if (kind == "pin") {
-    bool ia = on(e.a.body), ib = on(e.b.body);
-    if (ia == ib) return out;  // internal, or not acting on the set
-    auto it = a.reactions.find(e.name);
-    if (it == a.reactions.end()) return out;
-    Push p;
-    p.unknown = true;
-    p.Rx = it->second.first;
-    p.Ry = it->second.second;
-    auto [x, y] = m.position(ia ? e.a : e.b);
-    p.arm_x = x;
-    p.arm_y = y;
-    out.push_back(p);
-  } else if (kind == "impulse") {
-    if (!on(e.a.body)) return out;
-    Push p;  // a given impulse: Fx, Fy hold the impulse itself (no time integral)
-    p.Rx = e.Jx;
-    p.Ry = e.Jy;
-    p.unknown = true;
-    auto [x, y] = m.position(e.a);
-    p.arm_x = x;
-    p.arm_y = y;
-    out.push_back(p);
-  } else if (kind == "spring" || kind == "torsion_spring" || kind == "damper" || kind == "torsion_damper") {
-    bool two_points = kind == "spring" || kind == "damper";
-    bool ia = two_points ? on(e.a.body) : on(e.body);
-    bool ib = two_points ? on(e.b.body) : on(e.body2);
-    if (ia == ib) return out;
-    throw SceneError(e.pos, "the " + kind + " '" + e.name + "' pushes with a force that changes with the motion; its impulse over a duration has no closed form",
-                     "include both of its ends in the analysis' bodies, or use an energy analysis");
-  } else if (kind == "power") {
-    if (!on(e.body)) return out;
-    throw SceneError(e.pos, "a power drive '" + e.name + "' has no impulse of its own",
-                     "give the drive as a couple or a force, or use an energy analysis");
-  }
+  e.pushes(m, a, k, out);
   return out;
 }
 
@@ -249,7 +148,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
             throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
                                         state_pair(m, a) + ": effect '" + e.name + "' has an impulse along it",
                              "remove 'conserved: true', or choose another direction");
-          if (p.unknown && e.kind == "pin" && a.conserved)
+          if (p.reaction && a.conserved)
             throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
                                         state_pair(m, a) + ": effect '" + e.name + "' has an impulse along it (its reaction is unknown)",
                              "remove 'conserved: true', or choose bodies the pin does not hold");
@@ -270,7 +169,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
         std::string how;
         if (p.unknown) {
           In = dot(p.Rx, p.Ry, nx, ny);
-          how = e.kind == "pin" ? "reaction impulse (unknown)" : "given impulse";
+          how = p.reaction ? "reaction impulse (unknown)" : "given impulse";
         } else {
           ex Fn = dot(p.Fx, p.Fy, nx, ny);
           if (vanishes(m, Fn)) continue;
@@ -324,12 +223,12 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         // acts at the first state
         ex ax = model::trig_simplify(p.arm_x - px), ay = model::trig_simplify(p.arm_y - py);
         if (vanishes(m, ax) && vanishes(m, ay)) continue;
-        if (e.kind == "pin" && !(motion_free(m, ax) && motion_free(m, ay)) && !a.instant)
+        if (p.reaction && !(motion_free(m, ax) && motion_free(m, ay)) && !a.instant)
           throw SceneError(e.pos, "the reaction of pin '" + e.name + "' acts at a point that moves relative to " + a.about.text +
                                       ", so its angular impulse is unknown in a way no equation fixes",
                            "take moments about the pin itself, or about a fixed point");
         In = m.bind(cross(ax, ay, p.Rx, p.Ry), a.from);
-        how = e.kind == "pin" ? "moment of the reaction impulse (unknown)" : "moment of the given impulse";
+        how = p.reaction ? "moment of the reaction impulse (unknown)" : "moment of the given impulse";
       } else {
         Mp = model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
         if (vanishes(m, Mp)) continue;
@@ -404,7 +303,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
     }
     ex rhs = 0;
     for (int ci : a.contacts) {
-      const Effect& e = m.effects[ci];
+      const effects::Contact& e = effects::contact(m, ci);
       const auto& [J, Jt] = a.contact_impulses.at(e.name);
       auto dr = [&](const PointRef& p) -> std::pair<ex, ex> {
         if (p.ground || p.body < 0) return {0, 0};
@@ -417,9 +316,10 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
       if (e.stick) rhs += Jt * before(dot(dbx - dax, dby - day, -e.ny, e.nx));
     }
     for (auto& e : m.effects) {
-      if (e.kind != "impulse") continue;
-      auto [dx, dy] = m.position_derivative(e.a, q);
-      rhs += before(dot(e.Jx, e.Jy, dx, dy));
+      const model::Blow* g = e.blow();
+      if (!g) continue;
+      auto [dx, dy] = m.position_derivative(g->at, q);
+      rhs += before(dot(g->Jx, g->Jy, dx, dy));
     }
     for (std::size_t kk = 0; kk < m.constraints.size(); ++kk)
       rhs += a.lambdas[kk] * before(m.constraints[kk].first.diff(q));
@@ -430,7 +330,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
   }
 
   for (int ci : a.contacts) {
-    const Effect& e = m.effects[ci];
+    const effects::Contact& e = effects::contact(m, ci);
     Party pa = party(e.a), pb = party(e.b);
     // the parties must touch at the impact
     if (!e.a.ground && !e.b.ground) {

@@ -15,15 +15,6 @@ std::optional<ex> antiderivative(const ex& f, const symbol& s) { return model::a
 
 // ---------------------------------------------------------------- paths
 
-namespace {
-
-/// One degree of freedom: the free coordinate s and the others as functions of it, from
-/// constraints linear in a coordinate (later-declared coordinates are eliminated first).
-struct Path {
-  std::size_t s = 0;
-  exmap q_of_s;
-};
-
 std::optional<Path> one_dof_path(const Model& m) {
   std::size_t n = m.coords.size();
   if (n == 0 || n - std::min(n, m.constraints.size()) != 1 || m.constraints.size() >= n)
@@ -56,6 +47,8 @@ std::optional<Path> one_dof_path(const Model& m) {
   return p;
 }
 
+namespace {
+
 /// Φ with dΦ = Σ Q_i dq_i when that form is exact (checked), else nothing.
 std::optional<ex> potential(const Model& m, const std::vector<ex>& Q) {
   std::size_t n = Q.size();
@@ -83,8 +76,9 @@ std::optional<ex> potential(const Model& m, const std::vector<ex>& Q) {
   return phi;
 }
 
-int motion_sign(const Model& m, const Effect& e, const Path& p, int s1, int s2, const Knowledge& k) {
-  if (e.direction) return *e.direction;
+int motion_sign(const Model& m, const Effect& e, std::optional<int> declared, const Path& p, int s1, int s2,
+                const Knowledge& k) {
+  if (declared) return *declared;
   const auto& c = m.coords[p.s];
   ex q1 = m.states[s1].sym.at(c.name).first, q2 = m.states[s2].sym.at(c.name).first;
   ex v1 = m.states[s1].sym.at(c.name).second, v2 = m.states[s2].sym.at(c.name).second;
@@ -102,97 +96,66 @@ int motion_sign(const Model& m, const Effect& e, const Path& p, int s1, int s2, 
 
 // ---------------------------------------------------------------- work
 
-Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) {
+Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) { return e.work(m, s1, s2, k); }
+
+Work generalized_force_work(const Model& m, const Effect& e, const std::string& what, const std::string& how, int s1,
+                            int s2) {
   Work w;
   w.effect = e.name;
-  const std::string S1 = m.states[s1].name, S2 = m.states[s2].name;
-  if (e.kind == "power") {
-    // U = P (t₂ − t₁)
-    w.U = e.P * (m.states[s2].t - m.states[s1].t);
-    w.how = "U = P (t2 - t1)";
+  std::vector<ex> Q;
+  bool timed = false;
+  for (std::size_t i = 0; i < m.coords.size(); ++i) {
+    Q.push_back(e.generalized_force(m, i));
+    timed = timed || Q.back().has(m.t);
+  }
+  if (timed)
+    throw SceneError(e.pos, "effect '" + e.name + "' depends on time t, so its work needs the motion in time",
+                     "use an impulse-momentum analysis, or give the " + what + " as a function of the coordinates");
+  if (auto phi = potential(m, Q)) {
+    // U = Φ(q₂) − Φ(q₁) when Σ Q_i dq_i = dΦ (constant forces and couples, gradient fields)
+    w.U = m.bind(*phi, s2) - m.bind(*phi, s1);
+    w.how = how;
     return w;
   }
-  if (e.kind == "damper" || e.kind == "torsion_damper") {
-    // U = −∫ c v² dt depends on how fast the motion went, not on the two states alone
-    throw SceneError(e.pos, "the work of the " + e.kind + " '" + e.name + "' depends on the speeds all along the motion, not on states '" +
-                                S1 + "' and '" + S2 + "' alone",
-                     "simulate the scene (kinergy simulate) for its work, or remove the damper from an energy analysis");
+  auto p = one_dof_path(m);
+  if (!p)
+    throw SceneError(e.pos, "the work of '" + e.name + "' depends on the path, and the scene has more than one degree of freedom",
+                     "add constraints so one coordinate fixes the motion, or make the " + what + " constant");
+  // U = ∫ Σ Q_j(q(s)) ∂q_j/∂s ds along the one-coordinate path
+  const symbol& s = m.coords[p->s].q;
+  ex Qs = 0;
+  for (std::size_t j = 0; j < m.coords.size(); ++j) {
+    ex qj = j == p->s ? ex(s) : m.coords[j].q.subs(p->q_of_s);
+    Qs += Q[j].subs(p->q_of_s) * qj.diff(s);
   }
-  if (e.kind == "couple" || e.kind == "force") {
-    std::vector<ex> Q;
-    bool timed = false;
-    for (std::size_t i = 0; i < m.coords.size(); ++i) {
-      Q.push_back(m.generalized_force(e, i));
-      timed = timed || Q.back().has(m.t);
-    }
-    if (timed)
-      throw SceneError(e.pos, "effect '" + e.name + "' depends on time t, so its work needs the motion in time",
-                       "use an impulse-momentum analysis, or give the " + e.kind + " as a function of the coordinates");
-    if (auto phi = potential(m, Q)) {
-      // U = Φ(q₂) − Φ(q₁) when Σ Q_i dq_i = dΦ (constant forces and couples, gradient fields)
-      w.U = m.bind(*phi, s2) - m.bind(*phi, s1);
-      w.how = e.kind == "couple" ? "U = integral of M dphi" : "U = integral of F . dr";
-      return w;
-    }
-    auto p = one_dof_path(m);
-    if (!p)
-      throw SceneError(e.pos, "the work of '" + e.name + "' depends on the path, and the scene has more than one degree of freedom",
-                       "add constraints so one coordinate fixes the motion, or make the " + e.kind + " constant");
-    // U = ∫ Σ Q_j(q(s)) ∂q_j/∂s ds along the one-coordinate path
-    const symbol& s = m.coords[p->s].q;
-    ex Qs = 0;
-    for (std::size_t j = 0; j < m.coords.size(); ++j) {
-      ex qj = j == p->s ? ex(s) : m.coords[j].q.subs(p->q_of_s);
-      Qs += Q[j].subs(p->q_of_s) * qj.diff(s);
-    }
-    auto F = antiderivative(model::trig_simplify(Qs), s);
-    if (!F)
-      throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name,
-                       "write the " + e.kind + " in a form with an elementary antiderivative");
-    w.U = m.bind(*F, s2) - m.bind(*F, s1);
-    w.how = "U = integral along " + m.coords[p->s].name;
-    return w;
-  }
-  if (e.kind == "friction" || e.kind == "friction_couple") {
-    auto p = one_dof_path(m);
-    if (!p)
-      throw SceneError(e.pos, "the work of friction '" + e.name + "' depends on the path, and the scene has more than one degree of freedom",
-                       "add constraints so one coordinate fixes the motion");
-    const symbol& s = m.coords[p->s].q;
-    // distance slid ℓ(s) with dℓ/ds = |∂r_P/∂s| (or angle turned, |∂φ/∂s|)
-    ex dl;
-    ex c;
-    if (e.kind == "friction") {
-      ex vx, vy;
-      // ∂r_P/∂s along the path: velocity at q̇_s = 1, others following
-      model::Model const& mm = m;
-      auto [x, y] = mm.velocity(e.a);
-      exmap rates;
-      for (std::size_t j = 0; j < m.coords.size(); ++j) {
-        ex qj = j == p->s ? ex(s) : m.coords[j].q.subs(p->q_of_s);
-        rates[m.coords[j].qd] = qj.diff(s);
-      }
-      vx = x.subs(rates).subs(p->q_of_s);
-      vy = y.subs(rates).subs(p->q_of_s);
-      dl = sqrt(model::trig_simplify(vx * vx + vy * vy));
-      c = e.mu * e.normal;
-    } else {
-      ex phi = m.bodies[e.body].angle.subs(p->q_of_s);
-      dl = sqrt(model::trig_simplify(pow(phi.diff(s), 2)));
-      c = e.M;
-    }
-    auto L = antiderivative(dl, s);
-    if (!L)
-      throw SceneError(e.pos, "the distance slid under '" + e.name + "' has no closed form along " + m.coords[p->s].name,
-                       "describe the sliding point so its path is straight or circular");
-    int sigma = motion_sign(m, e, *p, s1, s2, k);
-    // U = −μN · σ (ℓ(s₂) − ℓ(s₁))   (friction against the motion, monotone between the states)
-    w.U = -c * sigma * (m.bind(*L, s2) - m.bind(*L, s1));
-    w.how = e.kind == "friction" ? "U = -mu N * distance" : "U = -M * angle turned";
-    return w;
-  }
-  w.U = 0;
-  w.how = "no work";
+  auto F = antiderivative(model::trig_simplify(Qs), s);
+  if (!F)
+    throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name,
+                     "write the " + what + " in a form with an elementary antiderivative");
+  w.U = m.bind(*F, s2) - m.bind(*F, s1);
+  w.how = "U = integral along " + m.coords[p->s].name;
+  return w;
+}
+
+Work friction_work(const Model& m, const Effect& e, std::optional<int> declared, const ex& c,
+                   const std::function<ex(const Path&)>& rate, const std::string& how, int s1, int s2,
+                   const Knowledge& k) {
+  Work w;
+  w.effect = e.name;
+  auto p = one_dof_path(m);
+  if (!p)
+    throw SceneError(e.pos, "the work of friction '" + e.name + "' depends on the path, and the scene has more than one degree of freedom",
+                     "add constraints so one coordinate fixes the motion");
+  const symbol& s = m.coords[p->s].q;
+  // distance slid ℓ(s) with dℓ/ds = |∂r_P/∂s| (or angle turned, |∂φ/∂s|)
+  auto L = antiderivative(rate(*p), s);
+  if (!L)
+    throw SceneError(e.pos, "the distance slid under '" + e.name + "' has no closed form along " + m.coords[p->s].name,
+                     "describe the sliding point so its path is straight or circular");
+  int sigma = motion_sign(m, e, declared, *p, s1, s2, k);
+  // U = −μN · σ (ℓ(s₂) − ℓ(s₁))   (friction against the motion, monotone between the states)
+  w.U = -c * sigma * (m.bind(*L, s2) - m.bind(*L, s1));
+  w.how = how;
   return w;
 }
 

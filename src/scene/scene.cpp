@@ -34,13 +34,6 @@ SourcePos StateDef::key_pos(const std::string& key) const {
   return pos;
 }
 
-const std::vector<std::string>& effect_kinds() {
-  static const std::vector<std::string> k = {
-      "gravity", "spring", "torsion_spring", "damper", "torsion_damper", "couple", "force", "friction",
-      "friction_couple", "power", "pin", "contact", "impulse"};
-  return k;
-}
-
 bool looks_cut(const std::string& k) {
   int depth = 0;
   for (char c : k) {

@@ -162,17 +162,15 @@ std::vector<Leg> legs(const Solution& s) {
       if (S2.given.count(qs) && (solved || (leg.stop.when && leg.stop.when->has(m.coords[i].q)))) leg.expect.q[i] = kNaN;
       if (S2.given.count(qds) && (solved || (leg.stop.when && leg.stop.when->has(m.coords[i].qd)))) leg.expect.qd[i] = kNaN;
     }
-    // a power drive from rest: its couple P/ω is infinite at ω = 0
-    for (auto& e : m.effects) {
-      if (e.kind != "power" || !leg.why_not.empty()) continue;
+    // an effect undefined at the start (a power drive from rest: its couple P/ω is infinite)
+    if (leg.why_not.empty()) {
       exmap at = params;
       for (std::size_t i = 0; i < m.coords.size(); ++i) {
         at[m.coords[i].q] = numerics::exact(leg.start.q[i]);
         at[m.coords[i].qd] = numerics::exact(leg.start.qd[i]);
       }
-      ex w = m.omega(e.body).subs(at).evalf();
-      if (is_a<numeric>(w) && ex_to<numeric>(w).is_zero())
-        leg.why_not = "power drive '" + e.name + "' starts from rest, where its couple P/omega is infinite";
+      for (auto& e : m.effects)
+        if (leg.why_not.empty()) leg.why_not = e.start_problem(m, at);
     }
     out.push_back(leg);
   }

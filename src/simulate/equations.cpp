@@ -12,26 +12,33 @@ using namespace GiNaC;
 using model::collect_simplify;
 using model::trig_simplify;
 
-namespace {
-
-lst rates(const model::Model& m) {
-  lst l;
-  for (auto& c : m.coords) l.append(c.qd);
-  return l;
-}
-
 // v = Σ J_i q̇_i + b is linear in the rates: J_i = ∂v/∂q̇_i, and dv/dt at q̈ = 0 is the model's
 // rate of v (it differentiates q and t only, so the q̈ terms J_i q̈_i are exactly the ones left out).
 LinearRate linear_rate(const model::Model& m, const ex& v) {
   LinearRate r;
-  lst l = rates(m);
+  lst l = m.rates();
   r.v = collect_simplify(v, l);
   for (auto& c : m.coords) r.J.push_back(trig_simplify(v.diff(c.qd)));
   r.a0 = collect_simplify(m.rate(v), l);
   return r;
 }
 
-}  // namespace
+ForceTerm force_term(const model::Model& m, int self, std::vector<ex> Q, bool conservative) {
+  ForceTerm f{self, std::move(Q), conservative, 0, ""};
+  if (!conservative) {
+    // the power of a generalized force, P = Σ Q_i q̇_i
+    ex P = 0;
+    for (std::size_t i = 0; i < m.coords.size(); ++i) P += f.Q[i] * m.coords[i].qd;
+    f.power = collect_simplify(P, m.rates());
+  }
+  return f;
+}
+
+ForceTerm force_term(const model::Model& m, const model::Effect& e, int self) {
+  std::vector<ex> Q;
+  for (std::size_t i = 0; i < m.coords.size(); ++i) Q.push_back(collect_simplify(e.generalized_force(m, i), m.rates()));
+  return force_term(m, self, std::move(Q), e.conservative());
+}
 
 Equations equations_of_motion(const model::Model& m) {
   Equations eq;
@@ -41,7 +48,7 @@ Equations equations_of_motion(const model::Model& m) {
     eq.qd.push_back(c.qd);
   }
   eq.t = m.t;
-  lst l = rates(m);
+  lst l = m.rates();
 
   // M(q) = Σ_bodies m Jᵀ J + Ī Jωᵀ Jω  (J = ∂r_G/∂q, Jω = ∂φ/∂q)
   eq.M = m.mass_matrix();
@@ -59,87 +66,8 @@ Equations equations_of_motion(const model::Model& m) {
   }
   for (auto& ci : eq.c) ci = collect_simplify(ci, l);
 
-  // the power of a generalized force, P = Σ Q_i q̇_i
-  auto power = [&](const std::vector<ex>& Q) {
-    ex P = 0;
-    for (std::size_t i = 0; i < n; ++i) P += Q[i] * m.coords[i].qd;
-    return collect_simplify(P, l);
-  };
-
-  for (std::size_t k = 0; k < m.effects.size(); ++k) {
-    const model::Effect& e = m.effects[k];
-    const int idx = static_cast<int>(k);
-    if (e.kind == "pin") continue;  // the coordinates already keep the pinned points together
-    if (e.kind == "gravity" || e.kind == "spring" || e.kind == "torsion_spring") {
-      // Q_i = −∂V/∂q_i
-      ForceTerm f{idx, {}, true, 0};
-      for (std::size_t i = 0; i < n; ++i) f.Q.push_back(collect_simplify(m.generalized_force(e, i), l));
-      eq.forces.push_back(f);
-    } else if (e.kind == "couple" || e.kind == "force") {
-      // couple: Q_i = M ∂φ/∂q_i;  force: Q_i = F · ∂r_P/∂q_i
-      ForceTerm f{idx, {}, false, 0};
-      for (std::size_t i = 0; i < n; ++i) f.Q.push_back(collect_simplify(m.generalized_force(e, i), l));
-      f.power = power(f.Q);
-      eq.forces.push_back(f);
-    } else if (e.kind == "power") {
-      // a drive of power P on a body: the couple P/ω, Q_i = (P/ω) ∂φ/∂q_i
-      ForceTerm f{idx, {}, false, e.P};
-      ex w = m.omega(e.body);
-      for (std::size_t i = 0; i < n; ++i) f.Q.push_back(e.P * m.bodies[e.body].angle.diff(m.coords[i].q) / w);
-      eq.forces.push_back(f);
-    } else if (e.kind == "damper" || e.kind == "torsion_damper") {
-      ForceTerm f{idx, {}, false, 0};
-      if (e.kind == "torsion_damper") {
-        // torsional: couple −c (ω₁ − ω₂) on the body (and its reaction on the second),
-        // Q_i = −c (ω₁ − ω₂) ∂(φ₁ − φ₂)/∂q_i
-        ex rel = m.bodies[e.body].angle - (e.body2 >= 0 ? m.bodies[e.body2].angle : ex(0));
-        ex w = m.rate(rel);
-        for (std::size_t i = 0; i < n; ++i) f.Q.push_back(collect_simplify(-e.k * w * rel.diff(m.coords[i].q), l));
-      } else {
-        // along the line of its ends: d = r_B − r_A, the force on B is −c (d·ḋ/|d|²) d, so
-        // Q_i = −c (d·ḋ)(d·∂d/∂q_i)/|d|²  (no root: the unit vector appears twice)
-        auto [xa, ya] = m.position(e.a);
-        auto [xb, yb] = m.position(e.b);
-        ex dx = xb - xa, dy = yb - ya;
-        ex dd = m.rate(dx) * dx + m.rate(dy) * dy;
-        ex d2 = trig_simplify(dx * dx + dy * dy);
-        for (std::size_t i = 0; i < n; ++i) {
-          const symbol& qi = m.coords[i].q;
-          f.Q.push_back(collect_simplify(-e.k * dd * (dx * dx.diff(qi) + dy * dy.diff(qi)) / d2, l));
-        }
-      }
-      f.power = power(f.Q);
-      eq.forces.push_back(f);
-    } else if (e.kind == "friction") {
-      // the slip velocity of the material point under the friction
-      auto [vx, vy] = m.velocity(e.a);
-      eq.friction.push_back({idx, false, linear_rate(m, vx), linear_rate(m, vy), e.mu * e.normal});
-    } else if (e.kind == "friction_couple") {
-      eq.friction.push_back({idx, true, linear_rate(m, m.omega(e.body)), {}, e.M});
-    } else if (e.kind == "contact") {
-      // gap along the normal from party a into party b: g = (r_b − r_a)·n̂ (the plane through a
-      // perpendicular to n̂); its rate is the normal approach speed
-      auto [xa, ya] = m.position(e.a);
-      auto [xb, yb] = m.position(e.b);
-      ContactTerm c{idx, trig_simplify((xb - xa) * e.nx + (yb - ya) * e.ny), {}, {}, e.e, e.stick};
-      auto [vax, vay] = m.velocity(e.a);
-      auto [vbx, vby] = m.velocity(e.b);
-      c.normal = linear_rate(m, (vbx - vax) * e.nx + (vby - vay) * e.ny);
-      c.tangent = linear_rate(m, -(vbx - vax) * e.ny + (vby - vay) * e.nx);
-      eq.contacts.push_back(c);
-    } else if (e.kind == "impulse") {
-      // P_i = J · ∂r_P/∂q_i
-      ImpulseTerm im{idx, {}};
-      for (std::size_t i = 0; i < n; ++i) {
-        auto [dx, dy] = m.position_derivative(e.a, m.coords[i].q);
-        im.P.push_back(trig_simplify(e.Jx * dx + e.Jy * dy));
-      }
-      eq.impulses.push_back(im);
-    } else {
-      throw SceneError(e.pos, "effect '" + e.name + "' of kind '" + e.kind + "' cannot be simulated",
-                       "remove it from the scene to simulate the rest");
-    }
-  }
+  // each effect adds its own terms (a force's Q, a friction's slip, a contact's gap, a blow)
+  for (std::size_t k = 0; k < m.effects.size(); ++k) m.effects[k].motion(m, static_cast<int>(k), eq);
 
   // holonomic constraints g(q, t) = 0:  A q̈ = γ,  γ = −d/dt(A q̇ + ∂g/∂t) at q̈ = 0
   const std::size_t nc = m.constraints.size();

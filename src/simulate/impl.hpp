@@ -455,8 +455,8 @@ struct Simulator::Impl {
     std::string who;
     SourcePos at;
     for (auto& F : eq.forces)
-      if (m.effects[F.effect].kind == "power") {
-        who = " (power drive '" + m.effects[F.effect].name + "' gives the couple P/omega: it is infinite at omega = 0)";
+      if (!F.singular.empty()) {
+        who = F.singular;
         at = m.effects[F.effect].pos;
       }
     throw SimulationError("the acceleration is not a number at t = " + num(t) + " s" + who,

@@ -8,6 +8,7 @@
 
 #include <ginac/ginac.h>
 
+#include "kinergy/model/effect.hpp"
 #include "kinergy/scene/scene.hpp"
 #include "kinergy/units/units.hpp"
 
@@ -38,36 +39,6 @@ struct Body {
   ex mass, inertia;            ///< m and centroidal Ī
   ex x, y, angle;              ///< mass centre and body angle in coordinates (and t)
   std::map<std::string, std::pair<ex, ex>> points;  ///< body axes through G
-};
-
-/// A place that moves with the model: a body point, a body's mass centre, a fixed point, or
-/// the material point of a body that is at a given world place (`at`).
-struct PointRef {
-  std::string text;
-  int body = -1;          ///< -1: fixed point
-  bool world_place = false;  ///< body material point at world place (wx, wy)
-  bool ground = false;    ///< the fixed ground (a contact party without a point)
-  ex lx = 0, ly = 0;      ///< body-local offset from G
-  ex wx = 0, wy = 0;      ///< fixed point / world place
-};
-
-struct Effect {
-  std::string name, kind;
-  SourcePos pos;
-  // gravity
-  ex g = 0, dir_x = 0, dir_y = -1;
-  // spring (a, b, k, free) / torsion_spring (body, body2, k, free)
-  PointRef a, b;
-  ex k = 0, free = 0;
-  int body = -1, body2 = -1;
-  // couple (M) / force (F at a) / friction (mu, normal at a) / friction_couple (M) / power (P)
-  ex M = 0, Fx = 0, Fy = 0, mu = 0, normal = 0, P = 0;
-  std::optional<int> direction;  ///< friction: +1 / −1 sign of the motion, if declared
-  // contact (parties a, b; unit normal from a into b; restitution e; rough without sliding)
-  ex nx = 0, ny = 0, e = 0;
-  bool stick = false;
-  // impulse: a given impulse at point a
-  ex Jx = 0, Jy = 0;
 };
 
 struct State {
@@ -140,7 +111,7 @@ public:
   std::map<std::string, std::pair<ex, ex>> fixed_points;
   std::vector<Body> bodies;
   std::vector<std::pair<ex, SourcePos>> constraints;  ///< generic, == 0
-  std::vector<Effect> effects;
+  EffectList effects;
   std::vector<State> states;
   std::vector<Analysis> analyses;
   std::vector<Find> finds;
@@ -153,6 +124,8 @@ public:
   ex omega(int body) const;
   /// d/dt of a generic expression of q and t: Σ ∂e/∂q q̇ + ∂e/∂t.
   ex rate(const ex& e) const;
+  /// The rates q̇ as a list (to collect in).
+  GiNaC::lst rates() const;
 
   // --- energies (generic, simplified) ---
   ex kinetic_energy() const;
@@ -160,15 +133,15 @@ public:
   /// M(q) = Σ Jᵀ m J + Jωᵀ Ī Jω, entries simplified.
   GiNaC::matrix mass_matrix() const;
   ex potential_energy() const;
-  ex potential_energy(const Effect& e) const;  ///< 0 for effects without a potential
-  bool conservative(const Effect& e) const;
+  ex potential_energy(const Effect& e) const { return e.potential(*this); }  ///< 0 for effects without a potential
+  bool conservative(const Effect& e) const { return e.conservative(); }
   /// Length of a spring from its squared length d² (see the .cpp for the sign rule).
   ex spring_length(const ex& d2) const;
   /// Generalized force Q_i of effect e along coordinate i (non-conservative part included;
   /// conservative effects give −∂V/∂q_i). Friction needs velocities and is not covered here.
-  ex generalized_force(const Effect& e, std::size_t i) const;
+  ex generalized_force(const Effect& e, std::size_t i) const { return e.generalized_force(*this, i); }
   /// Power of an effect, Σ Q_i q̇_i (friction: −μN|v|).
-  ex power(const Effect& e) const;
+  ex power(const Effect& e) const { return e.power(*this); }
   /// Angular momentum of all bodies about point P: Σ Ī ω + (r_G − r_P) × m v̄.
   ex angular_momentum(const PointRef& p) const;
   /// The same for a set of bodies.

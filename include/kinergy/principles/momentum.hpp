@@ -7,6 +7,28 @@
 
 namespace kinergy::principles {
 
+/// A force (and where it acts) that an effect exerts on the body set over the interval, or an
+/// impulse it gives there (an unknown reaction, a given impulse).
+struct Push {
+  ex Fx = 0, Fy = 0;        ///< force (generic; may depend on t)
+  ex arm_x = 0, arm_y = 0;  ///< application point (generic)
+  ex M = 0;                 ///< a couple (generic)
+  bool unknown = false;     ///< an impulse (Rx, Ry), not a force to integrate
+  bool reaction = false;    ///< that impulse is an unknown support reaction (a pin's)
+  ex Rx = 0, Ry = 0;
+};
+
+/// Is body b in the set?
+bool in_set(const std::vector<int>& s, int b);
+/// Zero for every value of the coordinates (symbolic, then numeric at random points)?
+bool vanishes(const model::Model& m, const ex& e);
+/// Free of the coordinates and rates?
+bool motion_free(const model::Model& m, const ex& e);
+/// Direction of sliding (or turning) over the interval: the sign of `generic` at the first
+/// state, or — starting from rest — at the second, or `declared`. @throws SceneError otherwise.
+int motion_direction(const model::Model& m, const model::Effect& e, std::optional<int> declared, const ex& generic,
+                     const model::Analysis& a, const Knowledge& k, const std::string& what);
+
 /// One external impulse in a component equation.
 struct ImpulseTerm {
   std::string effect;

@@ -1,5 +1,6 @@
 /// @file principles.hpp  Principles of the chapter turned into scalar equations between states.
 #pragma once
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -61,6 +62,27 @@ EnergyBalance energy(const model::Model& m, const model::Analysis& a, const Know
 
 /// Work of effect `e` between states s1 → s2 (state symbols).
 Work work(const model::Model& m, const model::Effect& e, int s1, int s2, const Knowledge& k);
+
+/// One degree of freedom: the free coordinate s and the others as functions of it, from
+/// constraints linear in a coordinate (later-declared coordinates are eliminated first).
+struct Path {
+  std::size_t s = 0;
+  GiNaC::exmap q_of_s;
+};
+std::optional<Path> one_dof_path(const model::Model& m);
+
+/// The work of a force or couple from its generalized forces Q_i (constant in time):
+/// Φ(q₂) − Φ(q₁) when Σ Q_i dq_i = dΦ, else the integral along the one-coordinate path.
+/// `what` names it in messages ("couple", "force"); `how` is the exact case's formula.
+Work generalized_force_work(const model::Model& m, const model::Effect& e, const std::string& what,
+                            const std::string& how, int s1, int s2);
+
+/// The work of kinetic friction c along the one-coordinate path, U = −c σ (ℓ(s₂) − ℓ(s₁)), with
+/// dℓ/ds = `rate(path)` (a distance slid, or an angle turned) and σ the sign of the motion
+/// (from the states, or `declared`).
+Work friction_work(const model::Model& m, const model::Effect& e, std::optional<int> declared, const ex& c,
+                   const std::function<ex(const Path&)>& rate, const std::string& how, int s1, int s2,
+                   const Knowledge& k);
 
 /// Constraint equations at a state (positions and velocities) and its `where` conditions.
 std::vector<Equation> state_equations(const model::Model& m, int state);

@@ -104,7 +104,7 @@ struct SceneDef {
   std::vector<ExpectDef> expects;
 };
 
-/// Effect kinds a scene may name.
+/// Effect kinds a scene may name (the table of kinds, src/effects/registry.cpp).
 const std::vector<std::string>& effect_kinds();
 
 /// Read a scene file. @throws SceneError (file:line:col) on any malformed input.

@@ -30,6 +30,7 @@ struct ForceTerm {
   std::vector<ex> Q;          ///< Q_i(q, q̇, t)
   bool conservative = false;  ///< Q = −∂V/∂q (its work is tracked through V)
   ex power;                   ///< Σ Q_i q̇_i (non-conservative effects)
+  std::string singular;       ///< why it may be undefined ("" when it cannot be), for messages
 };
 
 /// Coulomb friction of known normal force N (kinetic μ): a point's slip velocity (friction) or
@@ -79,5 +80,13 @@ struct Equations {
 /// The equations of motion of a model (generic symbols: parameters not substituted).
 /// @throws SceneError naming an effect the simulation cannot take (its place and why).
 Equations equations_of_motion(const model::Model& m);
+
+/// v = Σ J_i q̇_i + b as its Jacobian row and dv/dt at q̈ = 0.
+LinearRate linear_rate(const model::Model& m, const ex& v);
+/// The term of an effect from its generalized forces Q_i = e.generalized_force(i) (with its power
+/// when it is not conservative).
+ForceTerm force_term(const model::Model& m, const model::Effect& e, int self);
+/// The term of effect `self` with the given Q_i.
+ForceTerm force_term(const model::Model& m, int self, std::vector<ex> Q, bool conservative);
 
 }  // namespace kinergy::simulate

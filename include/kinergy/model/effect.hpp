@@ -1,0 +1,165 @@
+/// @file effect.hpp  An effect kind as a type: everything the engine asks of one effect.
+///
+/// Each kind (gravity, spring, couple, pin, contact, …) is one class in its own file under
+/// src/effects/, deriving from `Effect` and registered by name in src/effects/registry.cpp (the one
+/// table of kinds). The builder reads a kind's options through `EffectReader`; principles,
+/// simulator and emitters ask the effect itself and never look at its kind's name.
+#pragma once
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <boost/iterator/indirect_iterator.hpp>
+#include <ginac/ginac.h>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/scene/scene.hpp"
+#include "kinergy/units/units.hpp"
+
+namespace kinergy::principles {
+class Knowledge;
+struct Work;
+struct Push;
+}  // namespace kinergy::principles
+namespace kinergy::simulate {
+struct Equations;
+}
+
+namespace kinergy::model {
+
+using GiNaC::ex;
+class Model;
+struct Analysis;
+
+/// A place that moves with the model: a body point, a body's mass centre, a fixed point, or
+/// the material point of a body that is at a given world place (`at`).
+struct PointRef {
+  std::string text;
+  int body = -1;          ///< -1: fixed point
+  bool world_place = false;  ///< body material point at world place (wx, wy)
+  bool ground = false;    ///< the fixed ground (a contact party without a point)
+  ex lx = 0, ly = 0;      ///< body-local offset from G
+  ex wx = 0, wy = 0;      ///< fixed point / world place
+};
+
+/// A given impulse J at a point: it acts only in impacts.
+struct Blow {
+  PointRef at;
+  ex Jx = 0, Jy = 0;
+};
+
+/// What an effect kind may ask of the scene builder while it reads its options: each call
+/// checks its input and throws a SceneError naming the place and a fix.
+class EffectReader {
+public:
+  virtual ~EffectReader() = default;
+  virtual const Model& model() const = 0;
+  /// The option `key` (throws when it is missing, with `example` in the fix).
+  virtual const scene::Node& option(const scene::EffectDef& e, const std::string& key, const std::string& example) = 0;
+  /// Refuse any key but these (and the kind's own key).
+  virtual void only(const scene::EffectDef& e, std::vector<std::string> keys) = 0;
+  virtual scene::Text text_of(const scene::Node& n, const std::string& key, const std::string& example) = 0;
+  virtual PointRef point_ref(const scene::Node& n, const std::string& key) = 0;
+  /// A contact party: a point, a body, or `ground`.
+  virtual PointRef party(const scene::Node& n) = 0;
+  virtual int body_ref(const scene::Node& n, const std::string& key) = 0;
+  /// `KIND: body` or `KIND: [a, b]` (between two bodies): (body, body2 or −1).
+  virtual std::pair<int, int> one_or_two_bodies(const scene::EffectDef& e, const std::string& what) = 0;
+  /// `KIND: body.P`, or `KIND: body` with `at: [x, y]` (the body's material point at that place).
+  virtual PointRef acting_point(const scene::EffectDef& e) = 0;
+  /// An expression of parameters (or, with `geometry`, of coordinates and t too) of dimension `want`.
+  virtual ex quantity(const scene::Text& t, bool geometry, const units::Dimension& want, const std::string& key,
+                      const std::string& fix) = 0;
+  /// A pair [x, y] of such expressions.
+  virtual std::pair<ex, ex> vec(const scene::Node& n, const std::string& key, const units::Dimension& d, bool geometry,
+                                const std::string& fix) = 0;
+  /// Refuse a value that is not positive (or negative when `allow_zero`).
+  virtual void positive(const ex& e, const SourcePos& pos, const std::string& what, bool allow_zero = false) = 0;
+  virtual std::optional<GiNaC::numeric> value_of(const ex& e, const SourcePos& pos, const std::string& what) = 0;
+  /// Where a value is written: a lone parameter's value, else `use`.
+  virtual SourcePos value_place(const ex& e, const SourcePos& use) = 0;
+  /// `direction: positive|negative` of a friction effect.
+  virtual std::optional<int> direction_of(const scene::EffectDef& e) = 0;
+};
+
+/// One effect of a scene. Defaults describe an effect that does nothing in that respect.
+class Effect {
+public:
+  std::string name;
+  std::string kind;  ///< the name it was registered under (for messages only)
+  SourcePos pos;
+
+  virtual ~Effect() = default;
+
+  // --- energy ---
+  /// V (generic); effects that are not conservative have none.
+  virtual bool conservative() const { return false; }
+  virtual ex potential(const Model&) const { return 0; }
+  /// Q_i along coordinate i: −∂V/∂q_i for conservative effects, else 0 unless overridden.
+  /// (Friction needs velocities and is not covered here.)
+  virtual ex generalized_force(const Model& m, std::size_t i) const;
+  /// P = Σ Q_i q̇_i (conservative: −dV/dt).
+  virtual ex power(const Model& m) const;
+  /// The work of a non-conservative effect between two states (state symbols).
+  virtual principles::Work work(const Model& m, int s1, int s2, const principles::Knowledge& k) const;
+
+  // --- impulse and momentum ---
+  /// The forces (or unknown reactions, given impulses) this effect exerts on the bodies of a
+  /// momentum analysis over its duration. @throws SceneError when they cannot be integrated.
+  virtual void pushes(const Model& m, const Analysis& a, const principles::Knowledge& k,
+                      std::vector<principles::Push>& out) const;
+  /// Does this effect join the body set to the rest with an unknown reaction (a pin)?
+  virtual bool reaction_across(const std::vector<int>& /*bodies*/) const { return false; }
+  /// Impulse (x, y) over analysis `ai` (`impulse_x`, `impulse_y`); `self` is this effect's index.
+  /// @throws InputError when it has none there.
+  virtual std::pair<ex, ex> impulse(const Model& m, int self, int ai) const;
+  /// `impulse(effect, S1, S2)`: the size of that impulse.
+  virtual ex impulse_size(const Model& m, int ai, const ex& x, const ex& y) const;
+
+  // --- impacts ---
+  /// A given impulse, for effects that are one.
+  virtual const Blow* blow() const { return nullptr; }
+  /// The impulse this effect gives body `b` in impact `ai` (a contact's, a blow's), known
+  /// or as unknowns: a pin's reaction is the momentum change less these.
+  virtual std::pair<ex, ex> impact_impulse_on(const Model&, int /*b*/, int /*ai*/) const { return {0, 0}; }
+  /// Energy lost at this effect in impact `ai` (a contact). @throws InputError otherwise.
+  virtual ex impact_loss(const Model& m, int ai) const;
+
+  // --- simulation ---
+  /// Add this effect's terms to the equations of motion (`self`: its index).
+  /// @throws SceneError when it cannot be simulated.
+  virtual void motion(const Model& m, int self, simulate::Equations& eq) const;
+  /// Why a simulation cannot start at these values of q, q̇ (parameters included), or "".
+  virtual std::string start_problem(const Model&, const GiNaC::exmap& /*at*/) const { return ""; }
+};
+
+/// The effects of a model, iterated as `const Effect&`.
+class EffectList {
+  using Vec = std::vector<std::shared_ptr<const Effect>>;
+
+public:
+  using const_iterator = boost::indirect_iterator<Vec::const_iterator, const Effect>;
+  const_iterator begin() const { return v_.begin(); }
+  const_iterator end() const { return v_.end(); }
+  std::size_t size() const { return v_.size(); }
+  bool empty() const { return v_.empty(); }
+  const Effect& operator[](std::size_t i) const { return *v_[i]; }
+  void push_back(std::shared_ptr<const Effect> e) { v_.push_back(std::move(e)); }
+
+private:
+  Vec v_;
+};
+
+/// One entry of the table of effect kinds: its name and how it reads its options.
+struct EffectKind {
+  std::string name;
+  std::function<std::shared_ptr<Effect>(EffectReader&, const scene::EffectDef&)> read;
+};
+
+/// The table of effect kinds (src/effects/registry.cpp).
+const std::vector<EffectKind>& effect_kinds();
+
+}  // namespace kinergy::model

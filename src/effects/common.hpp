@@ -1,0 +1,55 @@
+// Pieces several effect kinds share (private to src/effects).
+#pragma once
+#include <memory>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/model/model.hpp"
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/principles/momentum.hpp"
+#include "kinergy/principles/principles.hpp"
+#include "kinergy/simulate/equations.hpp"
+
+namespace kinergy::effects {
+
+using GiNaC::ex;
+using model::Analysis;
+using model::Effect;
+using model::EffectReader;
+using model::Model;
+using model::PointRef;
+using principles::Knowledge;
+using principles::Push;
+using scene::EffectDef;
+using units::Dimension;
+
+/// A new effect of kind T named and placed as its definition.
+template <class T>
+std::shared_ptr<T> make(const EffectDef& ed) {
+  auto e = std::make_shared<T>();
+  e->name = ed.name;
+  e->kind = ed.kind;
+  e->pos = ed.pos;
+  return e;
+}
+
+/// The units of the chapter: force F, energy (or moment) E.
+inline Dimension force_dim() {
+  return Dimension::mass() * Dimension::length() / (Dimension::time() * Dimension::time());
+}
+inline Dimension energy_dim() { return force_dim() * Dimension::length(); }
+
+/// ∫F dt over the interval of analysis a, for a force free of the motion (constant or of t).
+/// @throws InputError when it changes with the motion or has no closed form in t.
+std::pair<ex, ex> force_impulse(const Model& m, const Effect& e, const ex& Fx, const ex& Fy, const Analysis& a);
+
+/// An element whose force changes with the motion (a spring, a damper) has no impulse over a
+/// duration: refused when it acts across the body set (one end in, `in_a`, the other not).
+void refuse_elastic_push(const Effect& e, bool in_a, bool in_b);
+
+/// A viscous damper's work depends on the speeds all along the motion: refused.
+[[noreturn]] void refuse_speed_dependent_work(const Model& m, const Effect& e, int s1, int s2);
+
+/// Is body b (≥ 0) in the analysis' set?
+inline bool acts_on(const Analysis& a, int b) { return b >= 0 && principles::in_set(a.bodies, b); }
+
+}  // namespace kinergy::effects

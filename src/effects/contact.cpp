@@ -1,0 +1,114 @@
+// A contact: two parties (body points, bodies, fixed points or the ground) that may strike along
+// a normal n̂ (from the first into the second) with restitution e, smooth or rough.
+#include "kinergy/effects/contact.hpp"
+
+#include "common.hpp"
+
+namespace kinergy::effects {
+
+const Contact& contact(const Model& m, int i) {
+  const Contact* c = as_contact(m.effects[static_cast<std::size_t>(i)]);
+  if (!c) throw std::logic_error("effect '" + m.effects[static_cast<std::size_t>(i)].name + "' is not a contact");
+  return *c;
+}
+
+const Contact* as_contact(const Effect& e) { return dynamic_cast<const Contact*>(&e); }
+
+std::pair<ex, ex> Contact::impulse(const Model& m, int, int ai) const {
+  const Analysis& an = m.analyses[ai];
+  auto it = an.contact_impulses.find(name);
+  if (it == an.contact_impulses.end())
+    throw InputError("contact '" + name + "' takes no part in an impact between states " + m.states[an.from].name + " and " +
+                         m.states[an.to].name,
+                     "name it in the impact's 'contact' or 'contacts'");
+  // P = J n + Jt t,  t = (−n_y, n_x)
+  auto [J, Jt] = it->second;
+  return {J * nx - Jt * ny, J * ny + Jt * nx};
+}
+
+// `impulse(hit, S1, S2)` of a contact is J, its impulse along n
+ex Contact::impulse_size(const Model& m, int ai, const ex&, const ex&) const {
+  return m.analyses[ai].contact_impulses.at(name).first;
+}
+
+std::pair<ex, ex> Contact::impact_impulse_on(const Model& m, int body, int ai) const {
+  if (!m.analyses[ai].contact_impulses.count(name)) return {0, 0};
+  // P acts on the second party, −P on the first
+  auto [Px, Py] = impulse(m, -1, ai);
+  int sign = (b.body == body ? 1 : 0) - (a.body == body ? 1 : 0);
+  return {sign * Px, sign * Py};
+}
+
+ex Contact::impact_loss(const Model& m, int ai) const {
+  const Analysis& an = m.analyses[ai];
+  if (!an.instant) return Effect::impact_loss(m, ai);
+  auto it = an.contact_impulses.find(name);
+  if (it == an.contact_impulses.end())
+    throw InputError("contact '" + name + "' takes no part in that impact", "name it in the impact's contacts");
+  auto [J, Jt] = it->second;
+  auto vel = [&](const PointRef& p) -> std::pair<ex, ex> {
+    if (p.ground) return {0, 0};
+    return m.velocity(p);
+  };
+  auto [vbx, vby] = vel(b);
+  auto [vax, vay] = vel(a);
+  ex vn = m.bind((vbx - vax) * nx + (vby - vay) * ny, an.from);
+  ex vt = m.bind(-(vbx - vax) * ny + (vby - vay) * nx, an.from);
+  // T⁺ − T⁻ = Σ P·(v⁻ + v⁺)/2 with v_n⁺ = −e v_n⁻ and (stick) v_t⁺ = 0:
+  //   lost = −½ [(1 − e) J v_n⁻ + Jt v_t⁻]
+  return -((1 - e) * J * vn + (stick ? ex(Jt * vt) : ex(0))) / 2;
+}
+
+void Contact::motion(const Model& m, int self, simulate::Equations& eq) const {
+  // gap along the normal from party a into party b: g = (r_b − r_a)·n̂ (the plane through a
+  // perpendicular to n̂); its rate is the normal approach speed
+  auto [xa, ya] = m.position(a);
+  auto [xb, yb] = m.position(b);
+  simulate::ContactTerm c{self, model::trig_simplify((xb - xa) * nx + (yb - ya) * ny), {}, {}, e, stick};
+  auto [vax, vay] = m.velocity(a);
+  auto [vbx, vby] = m.velocity(b);
+  c.normal = simulate::linear_rate(m, (vbx - vax) * nx + (vby - vay) * ny);
+  c.tangent = simulate::linear_rate(m, -(vbx - vax) * ny + (vby - vay) * nx);
+  eq.contacts.push_back(c);
+}
+
+std::shared_ptr<Effect> Contact::read(EffectReader& r, const EffectDef& ed) {
+  auto c = make<Contact>(ed);
+  r.only(ed, {"normal", "e", "tangential"});
+  if (!ed.arg.is_list() || ed.arg.items.size() != 2)
+    throw SceneError(ed.arg.pos, "a contact names two parties",
+                     "write 'contact: [ball, bar.Q]' (body points, bodies, fixed points or ground)");
+  c->a = r.party(ed.arg.items[0]);
+  c->b = r.party(ed.arg.items[1]);
+  if (c->a.body < 0 && c->b.body < 0)
+    throw SceneError(ed.arg.pos, "contact '" + ed.name + "' joins two fixed parties; nothing can strike",
+                     "make at least one party a body or a body point");
+  const scene::Node& nn = r.option(ed, "normal", "[0, 1]");
+  auto [nx, ny] = r.vec(nn, "normal", Dimension{}, false, "a normal is a direction: a pair of pure numbers");
+  ex n2 = model::trig_simplify(nx * nx + ny * ny);
+  auto nv = r.value_of(n2, nn.pos, "the normal of '" + ed.name + "'");
+  if (n2.is_zero() || (nv && nv->is_zero()))
+    throw SceneError(nn.pos, "the normal of contact '" + ed.name + "' is zero", "write a direction, e.g. [0, 1]");
+  // n̂ = n / |n|
+  c->nx = nx / sqrt(n2);
+  c->ny = ny / sqrt(n2);
+  const scene::Node& en = r.option(ed, "e", "0.5");
+  c->e = r.quantity(r.text_of(en, "e", "0.5"), false, Dimension{}, "e", "a coefficient of restitution is a pure number");
+  if (auto v = r.value_of(c->e, en.pos, "the coefficient of restitution"); v && (v->is_negative() || *v > 1))
+    throw SceneError(r.value_place(c->e, en.pos),
+                     "the coefficient of restitution of '" + ed.name + "' is " + model::text(*v) + ", outside [0, 1]",
+                     std::string("give ") +
+                         (GiNaC::is_a<GiNaC::symbol>(c->e) ? "'" + model::text(c->e) + "' a value" : std::string("e")) +
+                         " between 0 (plastic: the parties move together) and 1 (elastic)");
+  if (auto* tg = ed.options.get("tangential")) {
+    if (!tg->is_scalar() || (tg->scalar != "stick" && tg->scalar != "smooth"))
+      throw SceneError(tg->pos, "'tangential' must be stick or smooth",
+                       "write 'tangential: stick' for a rough contact that does not slide after the impact");
+    c->stick = tg->scalar == "stick";
+  }
+  return c;
+}
+
+std::shared_ptr<Effect> read_contact(EffectReader& r, const EffectDef& ed) { return Contact::read(r, ed); }
+
+}  // namespace kinergy::effects

@@ -1,0 +1,64 @@
+// Viscous damper between two points: a force c·(rate of its length) along its line.
+#include "common.hpp"
+
+namespace kinergy::effects {
+
+namespace {
+
+class Damper : public Effect {
+public:
+  PointRef a, b;
+  ex c = 0;
+
+  /// d = r_B − r_A
+  std::pair<ex, ex> span(const Model& m) const {
+    auto [xa, ya] = m.position(a);
+    auto [xb, yb] = m.position(b);
+    return {xb - xa, yb - ya};
+  }
+
+  ex power(const Model& m) const override {
+    // P = −c (d·ḋ)²/|d|²,  d = r_B − r_A  (c times the square of the rate of the length)
+    auto [dx, dy] = span(m);
+    ex dd = m.rate(dx) * dx + m.rate(dy) * dy;
+    return -c * pow(model::collect_simplify(dd, m.rates()), 2) / model::trig_simplify(dx * dx + dy * dy);
+  }
+
+  principles::Work work(const Model& m, int s1, int s2, const Knowledge&) const override {
+    refuse_speed_dependent_work(m, *this, s1, s2);
+  }
+
+  void pushes(const Model&, const Analysis& an, const Knowledge&, std::vector<Push>&) const override {
+    refuse_elastic_push(*this, acts_on(an, a.body), acts_on(an, b.body));
+  }
+
+  void motion(const Model& m, int self, simulate::Equations& eq) const override {
+    // along the line of its ends: the force on B is −c (d·ḋ/|d|²) d, so
+    // Q_i = −c (d·ḋ)(d·∂d/∂q_i)/|d|²  (no root: the unit vector appears twice)
+    auto [dx, dy] = span(m);
+    ex dd = m.rate(dx) * dx + m.rate(dy) * dy;
+    ex d2 = model::trig_simplify(dx * dx + dy * dy);
+    std::vector<ex> Q;
+    for (auto& co : m.coords)
+      Q.push_back(model::collect_simplify(-c * dd * (dx * dx.diff(co.q) + dy * dy.diff(co.q)) / d2, m.rates()));
+    eq.forces.push_back(simulate::force_term(m, self, Q, false));
+  }
+};
+
+}  // namespace
+
+std::shared_ptr<Effect> read_damper(EffectReader& r, const EffectDef& ed) {
+  auto e = make<Damper>(ed);
+  r.only(ed, {"c"});
+  if (!ed.arg.is_list() || ed.arg.items.size() != 2)
+    throw SceneError(ed.arg.pos, "a damper joins two points", "write 'damper: [A, bar.B]'");
+  e->a = r.point_ref(ed.arg.items[0], "damper");
+  e->b = r.point_ref(ed.arg.items[1], "damper");
+  e->c = r.quantity(r.text_of(r.option(ed, "c", "c"), "c", "c"), false,
+                    force_dim() * Dimension::time() / Dimension::length(), "c",
+                    "a damping coefficient is in N*s/m (or lb*s/ft)");
+  r.positive(e->c, r.option(ed, "c", "c").pos, "the damping coefficient");
+  return e;
+}
+
+}  // namespace kinergy::effects

@@ -1,0 +1,51 @@
+// What an effect answers when its kind says nothing else: no potential, no work, no impulse.
+#include "kinergy/model/effect.hpp"
+
+#include "kinergy/model/model.hpp"
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/principles/momentum.hpp"
+#include "kinergy/principles/principles.hpp"
+#include "kinergy/simulate/equations.hpp"
+
+namespace kinergy::model {
+
+ex Effect::generalized_force(const Model& m, std::size_t i) const {
+  if (conservative()) return -potential(m).diff(m.coords[i].q);  // Q_i = −∂V/∂q_i
+  return 0;
+}
+
+ex Effect::power(const Model& m) const {
+  ex P = 0;  // conservative: P = −dV/dt
+  if (conservative()) P = -m.rate(potential(m));
+  return collect_simplify(P, m.rates());
+}
+
+principles::Work Effect::work(const Model&, int, int, const principles::Knowledge&) const {
+  principles::Work w;
+  w.effect = name;
+  w.U = 0;
+  w.how = "no work";
+  return w;
+}
+
+void Effect::pushes(const Model&, const Analysis&, const principles::Knowledge&, std::vector<principles::Push>&) const {}
+
+std::pair<ex, ex> Effect::impulse(const Model& m, int, int ai) const {
+  const Analysis& a = m.analyses[ai];
+  throw InputError("effect '" + name + "' (" + kind + ") has no impulse to report between states " + m.states[a.from].name +
+                       " and " + m.states[a.to].name,
+                   "ask for the impulse of a contact, a pin, a given impulse, or a force over a momentum analysis");
+}
+
+ex Effect::impulse_size(const Model&, int, const ex& x, const ex& y) const { return sqrt(x * x + y * y); }
+
+ex Effect::impact_loss(const Model&, int) const {
+  throw InputError("'loss' takes a contact and the two states of its impact", "write loss(hit, before, after)");
+}
+
+void Effect::motion(const Model&, int, simulate::Equations&) const {
+  throw SceneError(pos, "effect '" + name + "' of kind '" + kind + "' cannot be simulated",
+                   "remove it from the scene to simulate the rest");
+}
+
+}  // namespace kinergy::model

@@ -1,0 +1,50 @@
+// A friction couple M on a body (a bearing, a brake): −M against its turning.
+#include "common.hpp"
+
+namespace kinergy::effects {
+
+namespace {
+
+class FrictionCouple : public Effect {
+public:
+  int body = -1;
+  ex M = 0;
+  std::optional<int> direction;  ///< the sign of the rotation it opposes, if declared
+
+  ex power(const Model& m) const override { return -M * abs(m.omega(body)); }  // P = −M |ω|
+
+  principles::Work work(const Model& m, int s1, int s2, const Knowledge& k) const override {
+    // angle turned: dℓ/ds = |∂φ/∂s| along the path
+    auto turned = [&](const principles::Path& p) {
+      ex phi = m.bodies[body].angle.subs(p.q_of_s);
+      return sqrt(model::trig_simplify(pow(phi.diff(m.coords[p.s].q), 2)));
+    };
+    return principles::friction_work(m, *this, direction, M, turned, "U = -M * angle turned", s1, s2, k);
+  }
+
+  void pushes(const Model& m, const Analysis& a, const Knowledge& k, std::vector<Push>& out) const override {
+    if (!acts_on(a, body)) return;
+    Push p;
+    p.M = -M * principles::motion_direction(m, *this, direction, m.omega(body), a, k, "rotation");
+    out.push_back(p);
+  }
+
+  void motion(const Model& m, int self, simulate::Equations& eq) const override {
+    eq.friction.push_back({self, true, simulate::linear_rate(m, m.omega(body)), {}, M});
+  }
+};
+
+}  // namespace
+
+std::shared_ptr<Effect> read_friction_couple(EffectReader& r, const EffectDef& ed) {
+  auto e = make<FrictionCouple>(ed);
+  r.only(ed, {"M", "direction"});
+  e->body = r.body_ref(ed.arg, ed.kind);
+  e->M = r.quantity(r.text_of(r.option(ed, "M", "M0"), "M", "M0"), false, energy_dim(), "M",
+                    "a couple is in N·m (or lb·ft)");
+  r.positive(e->M, r.option(ed, "M", "M").pos, "a friction couple", true);
+  e->direction = r.direction_of(ed);
+  return e;
+}
+
+}  // namespace kinergy::effects

@@ -1,0 +1,124 @@
+// A pin: two points that the coordinates keep together (a support the scene names, so that
+// its reaction can be asked for). It does no work; its reaction is an unknown of a momentum
+// analysis across it, and in an impact the pinned body's momentum change less the other impulses.
+#include <random>
+
+#include "common.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+
+namespace kinergy::effects {
+
+namespace {
+
+class Pin : public Effect {
+public:
+  PointRef a, b;
+
+  bool conservative() const override { return true; }  // V = 0
+
+  bool reaction_across(const std::vector<int>& set) const override {
+    auto in = [&](int x) { return x >= 0 && principles::in_set(set, x); };
+    return in(a.body) != in(b.body);
+  }
+
+  void pushes(const Model& m, const Analysis& an, const Knowledge&, std::vector<Push>& out) const override {
+    bool ia = acts_on(an, a.body), ib = acts_on(an, b.body);
+    if (ia == ib) return;  // internal, or not acting on the set
+    auto it = an.reactions.find(name);
+    if (it == an.reactions.end()) return;
+    Push p;
+    p.unknown = true;
+    p.reaction = true;
+    p.Rx = it->second.first;
+    p.Ry = it->second.second;
+    auto [x, y] = m.position(ia ? a : b);
+    p.arm_x = x;
+    p.arm_y = y;
+    out.push_back(p);
+  }
+
+  std::pair<ex, ex> impulse(const Model& m, int self, int ai) const override {
+    const Analysis& an = m.analyses[ai];
+    if (!an.instant) {
+      auto it = an.reactions.find(name);
+      if (it == an.reactions.end())
+        throw InputError("pin '" + name + "' is not external to the bodies of the analysis between states " +
+                             m.states[an.from].name + " and " + m.states[an.to].name,
+                         "list in 'bodies' the body the pin holds, and not the body on its other side");
+      return it->second;
+    }
+    // impact: the impulse on the pinned body = its momentum change minus the other impulses on it
+    int bi = b.body >= 0 ? b.body : a.body;
+    if (bi < 0) throw InputError("pin '" + name + "' joins no body", "pin a body point to a point");
+    const model::Body& B = m.bodies[bi];
+    for (auto& c : m.constraints)
+      for (auto& co : m.coords)
+        if (c.first.has(co.q) && (B.x.has(co.q) || B.y.has(co.q) || B.angle.has(co.q)))
+          throw InputError("the impulse of pin '" + name + "' cannot be told apart from the constraint impulses on '" + B.name + "'",
+                           "describe the body's motion with coordinates that need no constraint");
+    for (std::size_t j = 0; j < m.effects.size(); ++j) {
+      const Effect& o = m.effects[j];
+      if (static_cast<int>(j) != self && o.reaction_across({bi}))
+        throw InputError("body '" + B.name + "' has two pins, '" + name + "' and '" + o.name +
+                             "'; their impulses cannot be told apart",
+                         "ask for the impulse of a pin that holds a body alone");
+    }
+    // R = m (v̄⁺ − v̄⁻) − Σ P (contact impulses and given blows on the body)
+    ex vx = m.rate(B.x), vy = m.rate(B.y);
+    ex Rx = B.mass * (m.bind_mixed(vx, an.from, an.to) - m.bind(vx, an.from));
+    ex Ry = B.mass * (m.bind_mixed(vy, an.from, an.to) - m.bind(vy, an.from));
+    for (auto& o : m.effects) {
+      auto [Px, Py] = o.impact_impulse_on(m, bi, ai);
+      Rx -= Px;
+      Ry -= Py;
+    }
+    return {Rx, Ry};
+  }
+
+  void motion(const Model&, int, simulate::Equations&) const override {}  // the coordinates keep the points together
+};
+
+// A pin declares that two points coincide for every value of the coordinates.
+void check_pin(const Model& m, const Pin& e, const SourcePos& pos) {
+  auto [xa, ya] = m.position(e.a);
+  auto [xb, yb] = m.position(e.b);
+  ex dx = model::trig_simplify(xa - xb), dy = model::trig_simplify(ya - yb);
+  if (dx.is_zero() && dy.is_zero()) return;
+  GiNaC::exmap vals = m.parameter_values();
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(-3, 3);
+  for (int trial = 0; trial < 5; ++trial) {
+    GiNaC::exmap at = vals;
+    for (auto& c : m.coords) at[c.q] = GiNaC::numeric(u(rng));
+    at[m.t] = GiNaC::numeric(u(rng) + 3);
+    ex gx, gy;
+    try {
+      gx = dx.subs(at).evalf();
+      gy = dy.subs(at).evalf();
+    } catch (const std::exception&) {
+      continue;  // undefined at this sample position: try another
+    }
+    if (!GiNaC::is_a<GiNaC::numeric>(gx) || !GiNaC::is_a<GiNaC::numeric>(gy)) return;  // symbolic parameters: trust it
+    double d = std::hypot(GiNaC::ex_to<GiNaC::numeric>(gx).to_double(), GiNaC::ex_to<GiNaC::numeric>(gy).to_double());
+    // apart, against the size of the positions themselves (a scene may be a millimetre across)
+    if (!numerics::negligible(dx, at).value_or(true) || !numerics::negligible(dy, at).value_or(true))
+      throw SceneError(pos, "pin '" + e.name + "': " + e.a.text + " and " + e.b.text +
+                                " do not coincide (apart by " + numerics::format(GiNaC::numeric(d), 6) + " m at some position)",
+                       "fix the body's position/angle or the point so the pinned points stay together");
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<Effect> read_pin(EffectReader& r, const EffectDef& ed) {
+  auto e = make<Pin>(ed);
+  r.only(ed, {});
+  if (!ed.arg.is_list() || ed.arg.items.size() != 2)
+    throw SceneError(ed.arg.pos, "a pin joins two points", "write 'pin: [O, bar.O]'");
+  e->a = r.point_ref(ed.arg.items[0], "pin");
+  e->b = r.point_ref(ed.arg.items[1], "pin");
+  check_pin(r.model(), *e, ed.arg.pos);
+  return e;
+}
+
+}  // namespace kinergy::effects

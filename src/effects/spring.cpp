@@ -1,0 +1,54 @@
+// Linear spring between two points: V = ½ k (|r_A − r_B| − L₀)².
+#include "common.hpp"
+
+namespace kinergy::effects {
+
+namespace {
+
+class Spring : public Effect {
+public:
+  PointRef a, b;
+  ex k = 0, free = 0;
+
+  bool conservative() const override { return true; }
+
+  ex potential(const Model& m) const override {
+    // V = ½ k (|r_A − r_B| − L₀)²
+    auto [xa, ya] = m.position(a);
+    auto [xb, yb] = m.position(b);
+    ex d2 = model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2));
+    if (free.is_zero()) return k * d2 / 2;
+    return k * pow(m.spring_length(d2) - free, 2) / 2;
+  }
+
+  void pushes(const Model&, const Analysis& an, const Knowledge&, std::vector<Push>&) const override {
+    refuse_elastic_push(*this, acts_on(an, a.body), acts_on(an, b.body));
+  }
+
+  void motion(const Model& m, int self, simulate::Equations& eq) const override {
+    eq.forces.push_back(simulate::force_term(m, *this, self));  // Q_i = −∂V/∂q_i
+  }
+};
+
+}  // namespace
+
+std::shared_ptr<Effect> read_spring(EffectReader& r, const EffectDef& ed) {
+  auto e = make<Spring>(ed);
+  r.only(ed, {"k", "free_length"});
+  if (!ed.arg.is_list() || ed.arg.items.size() != 2)
+    throw SceneError(ed.arg.pos, "a spring joins two points", "write 'spring: [A, bar.B]'");
+  e->a = r.point_ref(ed.arg.items[0], "spring");
+  e->b = r.point_ref(ed.arg.items[1], "spring");
+  const scene::Node& kn = r.option(ed, "k", "k");
+  e->k = r.quantity(r.text_of(kn, "k", "k"), false, force_dim() / Dimension::length(), "k",
+                    "a spring constant is in N/m (or lb/ft)");
+  r.positive(e->k, kn.pos, "the spring constant");
+  if (auto* f = ed.options.get("free_length")) {
+    e->free = r.quantity(r.text_of(*f, "free_length", "L0"), false, Dimension::length(), "free_length",
+                         "a free length is a length");
+    r.positive(e->free, f->pos, "the free length", true);
+  }
+  return e;
+}
+
+}  // namespace kinergy::effects

@@ -1,0 +1,45 @@
+// Torsion spring on a body (or between two): V = ½ k (φ − φ₀)².
+#include "common.hpp"
+
+namespace kinergy::effects {
+
+namespace {
+
+class TorsionSpring : public Effect {
+public:
+  int body = -1, body2 = -1;
+  ex k = 0, free = 0;
+
+  bool conservative() const override { return true; }
+
+  ex potential(const Model& m) const override {
+    // V = ½ k (φ − φ₀)²,  φ the body's angle (or relative to a second body)
+    ex phi = m.bodies[body].angle - (body2 >= 0 ? m.bodies[body2].angle : ex(0));
+    return k * pow(phi - free, 2) / 2;
+  }
+
+  void pushes(const Model&, const Analysis& a, const Knowledge&, std::vector<Push>&) const override {
+    refuse_elastic_push(*this, acts_on(a, body), acts_on(a, body2));
+  }
+
+  void motion(const Model& m, int self, simulate::Equations& eq) const override {
+    eq.forces.push_back(simulate::force_term(m, *this, self));  // Q_i = −∂V/∂q_i
+  }
+};
+
+}  // namespace
+
+std::shared_ptr<Effect> read_torsion_spring(EffectReader& r, const EffectDef& ed) {
+  auto e = make<TorsionSpring>(ed);
+  r.only(ed, {"k", "free_angle"});
+  std::tie(e->body, e->body2) = r.one_or_two_bodies(ed, "a torsion spring");
+  e->k = r.quantity(r.text_of(r.option(ed, "k", "k_t"), "k", "k_t"), false, energy_dim(), "k",
+                    "a torsional constant is in N·m/rad");
+  r.positive(e->k, r.option(ed, "k", "k").pos, "the torsional constant");
+  if (auto* f = ed.options.get("free_angle"))
+    e->free = r.quantity(r.text_of(*f, "free_angle", "0"), false, Dimension{}, "free_angle",
+                         "an angle is a pure number (rad)");
+  return e;
+}
+
+}  // namespace kinergy::effects
