@@ -67,7 +67,7 @@ struct Selector {
     };
     for (auto& a : m.analyses)
       for (auto& c : m.coords) {
-        if (a.kind != "energy") break;  // impulses may reverse a motion; energy alone keeps it going
+        if (a.type->impulsive()) break;  // impulses may reverse a motion; energy alone keeps it going
         auto& [q1, v1] = m.states[a.from].sym.at(c.name);
         auto& [q2, v2] = m.states[a.to].sym.at(c.name);
         auto d = val(q2 - q1), r1 = val(v1), r2 = val(v2);
@@ -177,7 +177,7 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
 }
 
 Solution solve_scene(const scene::SceneDef& def) {
-  Solution sol{Model::build(def), {}, {}, {}, {}, {}, {}};
+  Solution sol{Model::build(def), {}, {}, {}, {}, {}, {}, {}};
   Model& m = sol.model;
   exmap env = m.numeric_environment();
   // the constraints evaluated at the values given may be undefined there (x/tan(theta), theta = pi/2)
@@ -254,24 +254,12 @@ Solution solve_scene(const scene::SceneDef& def) {
     const auto& a = m.analyses[ai];
     add_state(a.from);
     add_state(a.to);
-    if (a.kind == "energy") {
-      try {
-        sol.balances.push_back(principles::energy(m, a, know));
-      } catch (const SceneError&) {
-        throw;
-      } catch (const std::exception& err) {
-        throw undefined(a.pos, "the energy analysis", err);
-      }
-      sol.equations.push_back(sol.balances.back().equation);
-    } else if (a.kind == "momentum" || a.kind == "angular_momentum") {
-      sol.momenta.push_back(a.kind == "momentum" ? principles::linear_momentum(m, a, know)
-                                                 : principles::angular_momentum(m, a, know));
-      for (auto& c : sol.momenta.back().components) sol.equations.push_back(c.equation);
-    } else if (a.kind == "impact") {
-      sol.impacts.push_back(principles::impact(m, a, know));
-      const auto& ib = sol.impacts.back();
-      for (auto* group : {&ib.positions, &ib.momentum, &ib.restitution})
-        for (auto& e : *group) sol.equations.push_back(e);
+    try {
+      sol.parts.push_back(a.type->equations(m, a, know, sol));
+    } catch (const SceneError&) {
+      throw;
+    } catch (const std::exception& err) {
+      throw undefined(a.pos, "the " + a.kind + " analysis", err);
     }
     if (ai + 1 < m.analyses.size()) {
       // what this analysis determines is known to the next (a direction of motion, say)

@@ -51,6 +51,7 @@ struct Solution {
   std::vector<principles::EnergyBalance> balances;     ///< energy analyses, in order
   std::vector<principles::MomentumBalance> momenta;    ///< momentum and angular momentum analyses
   std::vector<principles::ImpactBalance> impacts;      ///< impact analyses
+  std::vector<int> parts;  ///< per analysis: the index of its balance among those of its kind
   std::vector<principles::Equation> equations;  ///< every equation solved, in order
   solve::Branch branch;                         ///< the chosen solution
   std::vector<Result> results;

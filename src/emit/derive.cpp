@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "kinergy/effects/contact.hpp"
+#include "kinergy/emit/sections.hpp"
+#include "kinergy/model/inertia.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/units/units.hpp"
@@ -77,7 +79,7 @@ struct Tags {
   }
 };
 
-class Builder {
+class Builder : public Sections {
 public:
   Builder(const Solution& s, const scene::SceneDef& def, const DeriveOptions& o)
       : s_(s), m_(s.model), def_(def), o_(o), given_(s.model.given_values()), tag_of_(s.equations.size()) {}
@@ -91,15 +93,9 @@ public:
     given();
     kinematics();
     states();
-    int k = 0, ie = 0, im = 0, ii = 0;
-    for (auto& a : m_.analyses) {
-      ++k;
-      if (a.kind == "energy" && ie < static_cast<int>(s_.balances.size())) energy(k, a, s_.balances[ie++]);
-      else if ((a.kind == "momentum" || a.kind == "angular_momentum") && im < static_cast<int>(s_.momenta.size()))
-        momentum(k, a, s_.momenta[im++]);
-      else if (a.kind == "impact" && ii < static_cast<int>(s_.impacts.size()))
-        impact(k, a, s_.impacts[ii++]);
-    }
+    // each analysis writes its own section
+    for (std::size_t i = 0; i < m_.analyses.size() && i < s_.parts.size(); ++i)
+      m_.analyses[i].type->derive(*this, static_cast<int>(i) + 1, m_.analyses[i], s_, s_.parts[i]);
     system();
     solution();
     results();
@@ -309,13 +305,8 @@ private:
       if (particle) {
         sp.push_back(W(", a particle."));
       } else {
-        static const std::map<std::string, std::string> words = {
-            {"slender_rod", "a slender rod"}, {"disk", "a disk"},   {"cylinder", "a cylinder"},
-            {"ring", "a ring"},               {"hoop", "a hoop"},   {"plate", "a rectangular plate"},
-            {"sphere", "a sphere"},           {"spherical_shell", "a spherical shell"},
-            {"gyration", "given radius of gyration"}, {"centroidal", "given centroidal moment of inertia"}};
-        auto it = words.find(kind);
-        sp.push_back(W(it != words.end() ? ", " + it->second + ", " : ", "));
+        std::string words = kind.empty() ? "" : model::inertia_shape(kind).words;
+        sp.push_back(W(!words.empty() ? ", " + words + ", " : ", "));
         sp.push_back(Span::m(Math::named("\\bar{I}", "I", tidy(b.inertia))));
         sp.push_back(W("."));
       }
@@ -398,7 +389,7 @@ private:
 
   // --- energy ---------------------------------------------------------------------------------
 
-  void energy(int k, const model::Analysis& a, const principles::EnergyBalance& b) {
+  void energy(int k, const model::Analysis& a, const principles::EnergyBalance& b) override {
     const std::string S1 = state_name(a.from), S2 = state_name(a.to);
     section(std::string(b.conservative ? "Conservation of energy" : "Work and energy") + ", states " + text_interval(S1, S2));
     Tags tags{"E" + std::to_string(k)};
@@ -476,9 +467,9 @@ private:
     return tex_name(p);
   }
 
-  void momentum(int k, const model::Analysis& a, const principles::MomentumBalance& mb) {
+  void momentum(int k, const model::Analysis& a, const principles::MomentumBalance& mb) override {
     const std::string S1 = state_name(a.from), S2 = state_name(a.to);
-    bool angular = a.kind == "angular_momentum";
+    bool angular = mb.angular;
     std::string bodies;
     for (std::size_t i = 0; i < a.bodies.size(); ++i)
       bodies += std::string(i ? (i + 1 == a.bodies.size() ? " and " : ", ") : "") + m_.bodies[static_cast<std::size_t>(a.bodies[i])].name;
@@ -568,7 +559,7 @@ private:
 
   // --- impact ---------------------------------------------------------------------------------
 
-  void impact(int k, const model::Analysis& a, const principles::ImpactBalance& ib) {
+  void impact(int k, const model::Analysis& a, const principles::ImpactBalance& ib) override {
     const std::string SB = state_name(a.from), SA = state_name(a.to);
     section("Impact, " + text_interval(SB, SA));
     Tags tags{"I" + std::to_string(k)};

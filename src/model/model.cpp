@@ -9,6 +9,7 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/effects/contact.hpp"
 #include "kinergy/expr/parser.hpp"
+#include "kinergy/model/inertia.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
@@ -696,27 +697,17 @@ private:
       b.pos = bd.pos;
       b.mass = checked(bd.mass, SceneContext::ParamsOnly, M, "mass", "a mass is in kg, g or slug");
       positive(b.mass, bd.mass.pos, "the mass of '" + bd.name + "'");
-      // Ī from the shape: rod m L²/12, disk m r²/2, ring m r², plate m(a²+b²)/12,
-      // sphere 2 m r²/5, spherical shell 2 m r²/3, gyration m k²
+      // Ī from the shape (model/inertia.cpp)
       const auto& in = bd.inertia;
+      const InertiaShape& shape = inertia_shape(in.kind);
       std::vector<ex> a;
       for (auto& t : in.args) {
-        Dimension want = in.kind == "centroidal" ? M * L * L : L;
-        ex e = checked(t, SceneContext::ParamsOnly, want, in.kind,
-                       in.kind == "centroidal" ? "Ī is in kg·m^2" : "a size is a length");
+        Dimension want = shape.given ? M * L * L : L;
+        ex e = checked(t, SceneContext::ParamsOnly, want, in.kind, shape.given ? "Ī is in kg·m^2" : "a size is a length");
         positive(e, t.pos, "the size '" + t.s + "' of " + in.kind);
         a.push_back(e);
       }
-      const std::string& k = in.kind;
-      if (k == "particle") b.inertia = 0;
-      else if (k == "slender_rod") b.inertia = b.mass * pow(a[0], 2) / 12;
-      else if (k == "disk" || k == "cylinder") b.inertia = b.mass * pow(a[0], 2) / 2;
-      else if (k == "ring" || k == "hoop") b.inertia = b.mass * pow(a[0], 2);
-      else if (k == "plate") b.inertia = b.mass * (pow(a[0], 2) + pow(a[1], 2)) / 12;
-      else if (k == "sphere") b.inertia = 2 * b.mass * pow(a[0], 2) / 5;
-      else if (k == "spherical_shell") b.inertia = 2 * b.mass * pow(a[0], 2) / 3;
-      else if (k == "gyration") b.inertia = b.mass * pow(a[0], 2);
-      else b.inertia = a[0];  // centroidal
+      b.inertia = shape.inertia(b.mass, a);
       b.x = checked(bd.x, SceneContext::Geometry, L, "position[0]", "positions are lengths");
       b.y = checked(bd.y, SceneContext::Geometry, L, "position[1]", "positions are lengths");
       b.angle = bd.angle ? checked(*bd.angle, SceneContext::Geometry, Dimension{}, "angle",
@@ -1012,23 +1003,27 @@ private:
     return s;
   }
 
+  ex unknown(const std::string& name, const Dimension& d) override { return impulse_symbol(name, d); }
+
   void analyses() {
-    static const std::vector<std::string> kinds = {"energy", "momentum", "angular_momentum", "impact"};
-    const Dimension M = Dimension::mass(), L = Dimension::length(), T = Dimension::time();
-    const Dimension P = M * L / T;  // impulse
+    const auto& kinds = analysis_kinds();
+    std::vector<std::string> names;
+    for (auto* k : kinds) names.push_back(k->name);
+    const Dimension P = Dimension::mass() * Dimension::length() / Dimension::time();  // impulse
     std::map<std::string, std::pair<ex, ex>> pin_reactions;  // "pin|S1|S2" → (Rx, Ry)
     for (auto& ad : d_.analyses) {
-      if (std::find(kinds.begin(), kinds.end(), ad.kind) == kinds.end()) {
-        std::string near = scene::closest(ad.kind, kinds);
+      auto kind = std::find_if(kinds.begin(), kinds.end(), [&](const AnalysisKind* k) { return k->name == ad.kind; });
+      if (kind == kinds.end()) {
+        std::string near = scene::closest(ad.kind, names), all;
+        for (std::size_t i = 0; i < names.size(); ++i)
+          all += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
         throw SceneError(ad.pos, "unknown analysis '" + ad.kind + "'",
-                         near.empty() ? "use: energy, momentum, angular_momentum or impact" : "did you mean '" + near + "'?");
+                         near.empty() ? "use: " + all : "did you mean '" + near + "'?");
       }
       if (!ad.options.is_map())
         throw SceneError(ad.pos, "'" + ad.kind + "' needs its states", "write '" + ad.kind + ": {from: 1, to: 2}'");
       std::vector<std::string> keys = {"from", "to"};
-      if (ad.kind == "momentum") keys.insert(keys.end(), {"bodies", "along", "conserved"});
-      if (ad.kind == "angular_momentum") keys.insert(keys.end(), {"bodies", "about", "conserved"});
-      if (ad.kind == "impact") keys.insert(keys.end(), {"contact", "contacts"});
+      for (auto& k : (*kind)->keys()) keys.push_back(k);
       for (auto& [k, v] : ad.options.entries)
         if (std::find(keys.begin(), keys.end(), k.scalar) == keys.end()) {
           std::string list, near = scene::closest(k.scalar, keys);
@@ -1038,6 +1033,7 @@ private:
         }
       Analysis a;
       a.kind = ad.kind;
+      a.type = *kind;
       a.pos = ad.pos;
       a.from = state_ref(ad.options, "from", ad.pos, ad.kind);
       a.to = state_ref(ad.options, "to", ad.pos, ad.kind);
@@ -1052,87 +1048,9 @@ private:
           throw SceneError(c->pos, "'conserved' must be true or false", "write 'conserved: true'");
         a.conserved = c->scalar == "true";
       }
-      if (ad.kind == "momentum") {
-        if (auto* al = ad.options.get("along")) {
-          a.has_along = true;
-          if (al->is_scalar() && (al->scalar == "x" || al->scalar == "y")) {
-            a.nx = al->scalar == "x" ? 1 : 0;
-            a.ny = al->scalar == "y" ? 1 : 0;
-            a.along_name = al->scalar;
-          } else {
-            auto [nx, ny] = vec(*al, "along", Dimension{}, SceneContext::ParamsOnly, "a direction is a pair of pure numbers");
-            ex n2 = nx * nx + ny * ny;
-            if (n2.is_zero()) throw SceneError(al->pos, "the direction is zero", "write x, y or [nx, ny]");
-            a.nx = nx / sqrt(n2);
-            a.ny = ny / sqrt(n2);
-            a.along_name = "[" + text(nx) + ", " + text(ny) + "]";
-          }
-        }
-      }
-      if (ad.kind == "angular_momentum") {
-        const Node* ab = ad.options.get("about");
-        if (!ab)
-          throw SceneError(ad.pos, "angular_momentum needs the point 'about' which moments are taken",
-                           "write 'about: O' (a fixed point) or 'about: disk' (its mass centre)");
-        a.about = point_ref(*ab, "about");
-        // H_P₂ − H_P₁ = ∫M_P dt holds about a fixed point, or about the mass centre of the body
-        bool fixed = a.about.body < 0;
-        if (!fixed) {  // a body point that the coordinates never move (a pulley's centre) is fixed too
-          auto [ax, ay] = m_.position(a.about);
-          fixed = true;
-          for (auto& co : m_.coords) fixed = fixed && !ax.has(co.q) && !ay.has(co.q);
-          fixed = fixed && !ax.has(m_.t) && !ay.has(m_.t);
-        }
-        bool own_centre = a.about.body >= 0 && a.about.lx.is_zero() && a.about.ly.is_zero() && !a.about.world_place &&
-                          a.bodies.size() == 1 && a.bodies[0] == a.about.body;
-        if (!fixed && !own_centre)
-          throw SceneError(ab->pos, "angular impulse-momentum about '" + ab->scalar + "' does not hold: that point moves",
-                           "take moments about a fixed point (under 'points') or about the mass centre of the one body analysed");
-      }
-      if (ad.kind == "impact") {
-        a.instant = true;
-        std::vector<const Node*> names;
-        const Node* c1 = ad.options.get("contact");
-        const Node* cs = ad.options.get("contacts");
-        if (c1) names.push_back(c1);
-        if (cs) {
-          if (!cs->is_list()) throw SceneError(cs->pos, "'contacts' must be a list", "write 'contacts: [hit1, hit2]'");
-          for (auto& it : cs->items) names.push_back(&it);
-        }
-        bool blows = std::any_of(m_.effects.begin(), m_.effects.end(), [](const Effect& e) { return e.blow() != nullptr; });
-        if (names.empty() && !blows)
-          throw SceneError(ad.pos, "an impact needs a contact or a given impulse",
-                           "write 'impact: {from: before, to: after, contact: hit}', or add an effect '{impulse: body.P, J: [Jx, Jy]}'");
-        for (auto* n : names) {
-          int ei = n->is_scalar() ? m_.effect_index(n->scalar) : -1;
-          if (ei < 0 || !effects::as_contact(m_.effects[ei])) {
-            std::vector<std::string> contacts;
-            for (auto& e : m_.effects)
-              if (effects::as_contact(e)) contacts.push_back(e.name);
-            std::string near = n->is_scalar() ? scene::closest(n->scalar, contacts) : "";
-            throw SceneError(n->pos, "'" + (n->is_scalar() ? n->scalar : std::string("?")) + "' is not a contact effect",
-                             near.empty() ? "define it under effects: 'hit: {contact: [A, B], normal: [nx, ny], e: e}'"
-                                          : "did you mean '" + near + "'?");
-          }
-          a.contacts.push_back(ei);
-          const effects::Contact& e = effects::contact(m_, ei);
-          // unknown impulses: J along n (and Jt along the tangent when rough)
-          ex J = impulse_symbol("J_" + e.name + "[" + S1 + "," + S2 + "]", P);
-          ex Jt = e.stick ? impulse_symbol("Jt_" + e.name + "[" + S1 + "," + S2 + "]", P) : ex(0);
-          a.contact_impulses[e.name] = {J, Jt};
-          a.unknowns.push_back(J);
-          if (e.stick) a.unknowns.push_back(Jt);
-        }
-        // one impulsive reaction per constraint: its generalized impulse λ ∂c/∂q has the
-        // dimension of (kg·m²/s) / [q], so λ has (kg·m²/s) / [c]
-        for (std::size_t kk = 0; kk < m_.constraints.size(); ++kk) {
-          Dimension dc = m_.dimension(m_.constraints[kk].first);
-          ex lam = impulse_symbol("lambda" + std::to_string(kk + 1) + "[" + S1 + "," + S2 + "]", M * L * L / T / dc);
-          a.lambdas.push_back(lam);
-          a.unknowns.push_back(lam);
-        }
-      } else if (ad.kind != "energy") {
-        // pins between the body set and the rest carry unknown reactions
+      a.type->read(*this, ad, a);
+      if (a.type->takes_reactions()) {
+        // supports between the body set and the rest (pins) carry unknown reactions
         for (auto& e : m_.effects) {
           if (!e.reaction_across(a.bodies)) continue;
           std::string key = e.name + "|" + S1 + "|" + S2;

@@ -61,7 +61,7 @@ ex Model::bind_mixed(const ex& e, int ps, int rs) const {
 
 int Model::analysis_between(int from, int to) const {
   for (std::size_t i = 0; i < analyses.size(); ++i)
-    if (analyses[i].from == from && analyses[i].to == to && analyses[i].kind != "energy") return static_cast<int>(i);
+    if (analyses[i].from == from && analyses[i].to == to && analyses[i].type->impulsive()) return static_cast<int>(i);
   return -1;
 }
 

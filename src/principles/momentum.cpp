@@ -205,6 +205,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
 MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
   check_constraints(m, a);
   MomentumBalance out;
+  out.angular = true;
   out.conserved = a.conserved;
   MomentumBalance::Component c;
   c.name = "moment about " + a.about.text;

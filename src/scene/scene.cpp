@@ -221,32 +221,39 @@ struct Loader {
   }
 
   InertiaDef inertia(const Node& n) const {
-    static const std::vector<std::string> kinds = {
-        "slender_rod", "disk", "cylinder", "ring", "hoop", "plate", "sphere", "spherical_shell",
-        "gyration",    "centroidal", "particle"};
+    const auto& shapes = inertia_shapes();
+    std::vector<std::string> kinds;
+    for (auto& [name, sizes] : shapes) kinds.push_back(name);
+    auto sizes_of = [&](const std::string& name) {
+      for (auto& [k, sizes] : shapes)
+        if (k == name) return sizes;
+      return -1;
+    };
     InertiaDef d;
     d.pos = n.pos;
     if (n.is_scalar()) {
-      if (n.scalar != "particle")
+      if (sizes_of(n.scalar) != 0)
         throw SceneError(n.pos, "inertia '" + n.scalar + "' needs a size",
                          "write e.g. {slender_rod: l}, {disk: r}, {gyration: k} or particle");
-      d.kind = "particle";
+      d.kind = n.scalar;
       return d;
     }
     if (!n.is_map() || n.entries.size() != 1)
       throw SceneError(n.pos, "'inertia' must name one shape",
                        "write e.g. {slender_rod: l}, {disk: r}, {centroidal: I_G} or particle");
     const auto& [k, v] = n.entries[0];
-    if (std::find(kinds.begin(), kinds.end(), k.scalar) == kinds.end()) {
-      std::string near = closest(k.scalar, kinds);
+    int sizes = sizes_of(k.scalar);
+    if (sizes < 0) {
+      std::string near = closest(k.scalar, kinds), all;
+      for (std::size_t i = 0; i < kinds.size(); ++i)
+        all += (i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + kinds[i];
       throw SceneError(k.pos, "unknown inertia shape '" + k.scalar + "'",
-                       near.empty() ? "use slender_rod, disk, cylinder, ring, hoop, plate, sphere, spherical_shell, gyration, centroidal or particle"
-                                    : "did you mean '" + near + "'?");
+                       near.empty() ? "use " + all : "did you mean '" + near + "'?");
     }
     d.kind = k.scalar;
     d.pos = k.pos;
-    if (d.kind == "plate") {
-      auto [a, b] = pair(v, "plate", "{plate: [a, b]}");
+    if (sizes == 2) {
+      auto [a, b] = pair(v, d.kind, "{" + d.kind + ": [a, b]}");
       d.args = {a, b};
     } else {
       d.args = {text(v, d.kind, "{" + d.kind + ": r}")};

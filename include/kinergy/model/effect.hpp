@@ -83,6 +83,8 @@ public:
   virtual SourcePos value_place(const ex& e, const SourcePos& use) = 0;
   /// `direction: positive|negative` of a friction effect.
   virtual std::optional<int> direction_of(const scene::EffectDef& e) = 0;
+  /// A new unknown impulse of the given dimension (a contact's, a constraint's reaction).
+  virtual ex unknown(const std::string& name, const units::Dimension& d) = 0;
 };
 
 /// One effect of a scene. Defaults describe an effect that does nothing in that respect.

@@ -8,6 +8,7 @@
 
 #include <ginac/ginac.h>
 
+#include "kinergy/model/analysis.hpp"
 #include "kinergy/model/effect.hpp"
 #include "kinergy/scene/scene.hpp"
 #include "kinergy/units/units.hpp"
@@ -51,7 +52,8 @@ struct State {
 };
 
 struct Analysis {
-  std::string kind;  ///< energy, momentum, angular_momentum, impact
+  std::string kind;  ///< energy, momentum, angular_momentum, impact (for messages)
+  const AnalysisKind* type = nullptr;  ///< what it does (src/analyses/)
   SourcePos pos;
   int from = -1, to = -1;
   std::vector<int> bodies;        ///< the body set (all bodies unless listed)

@@ -46,6 +46,7 @@ struct MomentumBalance {
   };
   std::vector<Component> components;
   bool conserved = false;
+  bool angular = false;  ///< angular (about a point), else linear
 };
 
 /// Linear impulse–momentum Σ m v̄₂·n = Σ m v̄₁·n + Σ ∫F·n dt for the analysis' bodies.

@@ -107,6 +107,10 @@ struct SceneDef {
 /// Effect kinds a scene may name (the table of kinds, src/effects/registry.cpp).
 const std::vector<std::string>& effect_kinds();
 
+/// Inertia shapes a body may name, with how many sizes each takes (the table of shapes,
+/// src/model/inertia.cpp).
+const std::vector<std::pair<std::string, int>>& inertia_shapes();
+
 /// Read a scene file. @throws SceneError (file:line:col) on any malformed input.
 SceneDef load_file(const std::string& path);
 /// Read scene text; `file` names it in errors.

@@ -1,0 +1,46 @@
+/// @file analysis.hpp  An analysis kind as a type: what it reads, the unknowns it brings, the
+/// equations it contributes, its section of the derivation.
+///
+/// Each kind (energy, momentum, angular_momentum, impact) is one class in its own file under
+/// src/analyses/, registered by name in src/analyses/registry.cpp (the one table of analyses).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "kinergy/model/effect.hpp"
+
+namespace kinergy {
+struct Solution;
+}
+namespace kinergy::emit {
+class Sections;
+}
+
+namespace kinergy::model {
+
+class AnalysisKind {
+public:
+  std::string name;
+  explicit AnalysisKind(std::string n) : name(std::move(n)) {}
+  virtual ~AnalysisKind() = default;
+
+  /// The option keys it takes besides `from` and `to`.
+  virtual std::vector<std::string> keys() const { return {}; }
+  /// Read its own options (the builder has read from, to, bodies and conserved); add the
+  /// unknowns it brings through `r.unknown`.
+  virtual void read(EffectReader&, const scene::AnalysisDef&, Analysis&) const {}
+  /// Over a duration with the impulses of supports across its body set (pin reactions)?
+  virtual bool takes_reactions() const { return false; }
+  /// Does it balance impulses (so `impulse(effect, S1, S2)` refers to it, and a motion may
+  /// reverse between its states)? Work–energy does not.
+  virtual bool impulsive() const { return true; }
+  /// Add its equations to the solution; returns the index of its balance among those of its kind.
+  virtual int equations(const Model& m, const Analysis& a, const principles::Knowledge& k, Solution& s) const = 0;
+  /// Write its section of the derivation (`k`: its number; `part`: what `equations` returned).
+  virtual void derive(emit::Sections& w, int k, const Analysis& a, const Solution& s, int part) const = 0;
+};
+
+/// The table of analysis kinds (src/analyses/registry.cpp).
+const std::vector<const AnalysisKind*>& analysis_kinds();
+
+}  // namespace kinergy::model

@@ -1,0 +1,25 @@
+/// @file inertia.hpp  The inertia shapes a body may name: the one table of shapes.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace kinergy::model {
+
+struct InertiaShape {
+  std::string name;
+  int sizes = 1;       ///< how many sizes it takes (0: written alone, e.g. `particle`)
+  bool given = false;  ///< its one argument is Ī itself (kg·m²), not a length
+  std::string words;   ///< in a derivation's text: "a slender rod" ("" for none)
+  /// Ī from the mass and the sizes
+  std::function<GiNaC::ex(const GiNaC::ex& m, const std::vector<GiNaC::ex>& a)> inertia;
+};
+
+/// The table of shapes (src/model/inertia.cpp), in the order messages list them.
+const std::vector<InertiaShape>& inertia_shapes();
+/// The shape of that name. @pre the name is in the table (the scene checked it).
+const InertiaShape& inertia_shape(const std::string& name);
+
+}  // namespace kinergy::model

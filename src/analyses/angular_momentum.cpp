@@ -1,0 +1,58 @@
+// Angular impulse–momentum about a point P over a duration: Σ H_P₂ = Σ H_P₁ + Σ ∫M_P dt, about a
+// fixed point or the mass centre of the one body analysed; conservation when claimed.
+#include "kinergy/emit/sections.hpp"
+#include "kinergy/problem.hpp"
+
+namespace kinergy::analyses {
+
+namespace {
+
+class AngularMomentum : public model::AnalysisKind {
+public:
+  AngularMomentum() : AnalysisKind("angular_momentum") {}
+
+  std::vector<std::string> keys() const override { return {"bodies", "about", "conserved"}; }
+
+  void read(model::EffectReader& r, const scene::AnalysisDef& ad, model::Analysis& a) const override {
+    const model::Model& m = r.model();
+    const scene::Node* ab = ad.options.get("about");
+    if (!ab)
+      throw SceneError(ad.pos, "angular_momentum needs the point 'about' which moments are taken",
+                       "write 'about: O' (a fixed point) or 'about: disk' (its mass centre)");
+    a.about = r.point_ref(*ab, "about");
+    // H_P₂ − H_P₁ = ∫M_P dt holds about a fixed point, or about the mass centre of the body
+    bool fixed = a.about.body < 0;
+    if (!fixed) {  // a body point that the coordinates never move (a pulley's centre) is fixed too
+      auto [ax, ay] = m.position(a.about);
+      fixed = true;
+      for (auto& co : m.coords) fixed = fixed && !ax.has(co.q) && !ay.has(co.q);
+      fixed = fixed && !ax.has(m.t) && !ay.has(m.t);
+    }
+    bool own_centre = a.about.body >= 0 && a.about.lx.is_zero() && a.about.ly.is_zero() && !a.about.world_place &&
+                      a.bodies.size() == 1 && a.bodies[0] == a.about.body;
+    if (!fixed && !own_centre)
+      throw SceneError(ab->pos, "angular impulse-momentum about '" + ab->scalar + "' does not hold: that point moves",
+                       "take moments about a fixed point (under 'points') or about the mass centre of the one body analysed");
+  }
+
+  bool takes_reactions() const override { return true; }
+
+  int equations(const model::Model& m, const model::Analysis& a, const principles::Knowledge& k, Solution& s) const override {
+    s.momenta.push_back(principles::angular_momentum(m, a, k));
+    for (auto& c : s.momenta.back().components) s.equations.push_back(c.equation);
+    return static_cast<int>(s.momenta.size()) - 1;
+  }
+
+  void derive(emit::Sections& w, int k, const model::Analysis& a, const Solution& s, int part) const override {
+    w.momentum(k, a, s.momenta[static_cast<std::size_t>(part)]);
+  }
+};
+
+}  // namespace
+
+const model::AnalysisKind& angular_momentum() {
+  static const AngularMomentum kind;
+  return kind;
+}
+
+}  // namespace kinergy::analyses

@@ -1,0 +1,89 @@
+// An impact: positions and time kept, velocities jump; generalized impulse–momentum along each
+// coordinate with the contact impulses (J along n, Jt along the tangent when rough), given blows and
+// one impulsive reaction per constraint; restitution at each contact.
+#include "kinergy/effects/contact.hpp"
+#include "kinergy/emit/sections.hpp"
+#include "kinergy/problem.hpp"
+
+namespace kinergy::analyses {
+
+namespace {
+
+using GiNaC::ex;
+using units::Dimension;
+
+class Impact : public model::AnalysisKind {
+public:
+  Impact() : AnalysisKind("impact") {}
+
+  std::vector<std::string> keys() const override { return {"contact", "contacts"}; }
+
+  void read(model::EffectReader& r, const scene::AnalysisDef& ad, model::Analysis& a) const override {
+    const model::Model& m = r.model();
+    const Dimension M = Dimension::mass(), L = Dimension::length(), T = Dimension::time();
+    const Dimension P = M * L / T;  // impulse
+    const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;
+    a.instant = true;
+    std::vector<const scene::Node*> names;
+    const scene::Node* c1 = ad.options.get("contact");
+    const scene::Node* cs = ad.options.get("contacts");
+    if (c1) names.push_back(c1);
+    if (cs) {
+      if (!cs->is_list()) throw SceneError(cs->pos, "'contacts' must be a list", "write 'contacts: [hit1, hit2]'");
+      for (auto& it : cs->items) names.push_back(&it);
+    }
+    bool blows = std::any_of(m.effects.begin(), m.effects.end(), [](const model::Effect& e) { return e.blow() != nullptr; });
+    if (names.empty() && !blows)
+      throw SceneError(ad.pos, "an impact needs a contact or a given impulse",
+                       "write 'impact: {from: before, to: after, contact: hit}', or add an effect '{impulse: body.P, J: [Jx, Jy]}'");
+    for (auto* n : names) {
+      int ei = n->is_scalar() ? m.effect_index(n->scalar) : -1;
+      if (ei < 0 || !effects::as_contact(m.effects[ei])) {
+        std::vector<std::string> contacts;
+        for (auto& e : m.effects)
+          if (effects::as_contact(e)) contacts.push_back(e.name);
+        std::string near = n->is_scalar() ? scene::closest(n->scalar, contacts) : "";
+        throw SceneError(n->pos, "'" + (n->is_scalar() ? n->scalar : std::string("?")) + "' is not a contact effect",
+                         near.empty() ? "define it under effects: 'hit: {contact: [A, B], normal: [nx, ny], e: e}'"
+                                      : "did you mean '" + near + "'?");
+      }
+      a.contacts.push_back(ei);
+      const effects::Contact& e = effects::contact(m, ei);
+      // unknown impulses: J along n (and Jt along the tangent when rough)
+      ex J = r.unknown("J_" + e.name + "[" + S1 + "," + S2 + "]", P);
+      ex Jt = e.stick ? r.unknown("Jt_" + e.name + "[" + S1 + "," + S2 + "]", P) : ex(0);
+      a.contact_impulses[e.name] = {J, Jt};
+      a.unknowns.push_back(J);
+      if (e.stick) a.unknowns.push_back(Jt);
+    }
+    // one impulsive reaction per constraint: its generalized impulse λ ∂c/∂q has the
+    // dimension of (kg·m²/s) / [q], so λ has (kg·m²/s) / [c]
+    for (std::size_t kk = 0; kk < m.constraints.size(); ++kk) {
+      Dimension dc = m.dimension(m.constraints[kk].first);
+      ex lam = r.unknown("lambda" + std::to_string(kk + 1) + "[" + S1 + "," + S2 + "]", M * L * L / T / dc);
+      a.lambdas.push_back(lam);
+      a.unknowns.push_back(lam);
+    }
+  }
+
+  int equations(const model::Model& m, const model::Analysis& a, const principles::Knowledge& k, Solution& s) const override {
+    s.impacts.push_back(principles::impact(m, a, k));
+    const auto& ib = s.impacts.back();
+    for (auto* group : {&ib.positions, &ib.momentum, &ib.restitution})
+      for (auto& e : *group) s.equations.push_back(e);
+    return static_cast<int>(s.impacts.size()) - 1;
+  }
+
+  void derive(emit::Sections& w, int k, const model::Analysis& a, const Solution& s, int part) const override {
+    w.impact(k, a, s.impacts[static_cast<std::size_t>(part)]);
+  }
+};
+
+}  // namespace
+
+const model::AnalysisKind& impact() {
+  static const Impact kind;
+  return kind;
+}
+
+}  // namespace kinergy::analyses
