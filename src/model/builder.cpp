@@ -1,0 +1,735 @@
+// The builder: SceneDef → Model (symbols, units, bodies, effects, states, analyses, results),
+// every input checked where it stands.
+#include "kinergy/model/model.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/effects/contact.hpp"
+#include "kinergy/expr/parser.hpp"
+#include "kinergy/model/inertia.hpp"
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+
+#include "context.hpp"
+
+namespace kinergy::model {
+
+using namespace GiNaC;
+using scene::Node;
+using scene::Text;
+
+/// The unit to write for a dimension, in words for a fix ("m/s"; angles: "rad or deg").
+static std::string unit_words(const Dimension& d) {
+  std::string n = units::si_name(d);
+  return n.empty() ? std::string("rad or deg (or a pure number)") : n;
+}
+
+/// A dimension as a student reads it: "a pure number", "N (kg·m/s^2)", "m".
+static std::string dim_words(const Dimension& d) {
+  if (d.dimensionless()) return "a pure number (or an angle)";
+  std::string n = units::si_name(d), s = d.str();
+  if (n == "J") n = "J = N\u00b7m";  // a couple and an energy share it
+  return "in " + (n == s ? s : n + " (" + s + ")");
+}
+
+/// An expression YAML cut at a comma inside `{…}` or `[…]` (its '(' is never closed): the error.
+static void check_cut(const Node& n) {
+  if (!n.is_scalar()) return;
+  int depth = 0;
+  for (char c : n.scalar) depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+  if (depth > 0)
+    throw SceneError(n.pos, "'" + n.scalar + "' is cut at a comma: inside {…} and […] a comma separates entries, even within f(a, b)",
+                     "put the expression in quotes, e.g. \"" + n.scalar + ", …)\"");
+}
+
+// ---------------------------------------------------------------- builder
+
+class Builder : public EffectReader {
+public:
+  explicit Builder(const scene::SceneDef& d) : d_(d) {}
+
+  Model run() {
+    m_.file = d_.file;
+    m_.title = d_.title;
+    m_.description = d_.description;
+    parameters();
+    coordinates();
+    fixed_points();
+    bodies();
+    constraints();
+    effects();
+    states();
+    analyses();
+    finds();
+    expects();
+    return std::move(m_);
+  }
+
+private:
+  const scene::SceneDef& d_;
+  Model m_;
+  std::set<std::string> taken_;
+
+  void reserve(const std::string& n, const SourcePos& pos, const std::string& what) {
+    static const std::set<std::string> reserved = {"t", "pi", "T", "V"};
+    if (reserved.count(n) || expr::is_math_function(n))
+      throw SceneError(pos, "'" + n + "' is a reserved name and cannot name a " + what,
+                       "choose another name, e.g. '" + n + "_1'");
+    if (!taken_.insert(n).second)
+      throw SceneError(pos, "the name '" + n + "' is used twice",
+                       "give each parameter, coordinate and rate its own name");
+  }
+
+  ex parse(const Text& t, SceneContext::Level lv, bool states = false, const std::string& key = "") {
+    SceneContext ctx(m_, lv, states);
+    try {
+      return expr::parse(t.s, ctx);
+    } catch (const InputError& e) {
+      // "3 N*m" where an expression of parameters stands: say so, not "unexpected 'N'"
+      std::optional<units::Quantity> q;
+      try {
+        q = units::parse_quantity(t.s);
+      } catch (const InputError&) {
+      }
+      if (q && q->has_number && !q->unit.text.empty()) {
+        bool name_ok = !key.empty() && std::isalpha(static_cast<unsigned char>(key[0]));
+        for (char c : key) name_ok = name_ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+        std::string p = name_ok ? key + "0" : std::string("q0");
+        // "2 m" may mean 2 times the parameter m
+        std::string u = q->unit.text, also;
+        if (m_.names_.count(u)) {
+          std::string num = t.s.substr(0, t.s.find(u));
+          while (!num.empty() && num.back() == ' ') num.pop_back();
+          while (!num.empty() && num.front() == ' ') num.erase(0, 1);
+          also = ", or write '" + num + "*" + u + "' for " + num + " times the parameter '" + u + "'";
+        }
+        throw SceneError(t.pos, "'" + t.s + "' is a number with a unit, but " +
+                                    (key.empty() ? std::string("this") : "'" + key + "'") +
+                                    " takes an expression of parameters",
+                         "add a parameter '" + p + ": " + t.s + "' under parameters and write '" + p + "' here" + also);
+      }
+      rethrow_at(t.pos, e);
+    }
+  }
+
+  Dimension dim(const ex& e, const SourcePos& pos, const std::string& key) {
+    try {
+      return m_.dimension(e);
+    } catch (const DimensionError& err) {
+      throw SceneError(pos, std::string("inconsistent units in '") + key + "': " + err.what(),
+                       "make every term of a sum the same kind of quantity");
+    }
+  }
+
+  void expect_dim(const ex& e, const Dimension& want, const SourcePos& pos, const std::string& key,
+                  const std::string& fix) {
+    Dimension got = dim(e, pos, key);
+    if (!e.is_zero() && got != want)
+      throw SceneError(pos, "'" + key + "' is " + dim_words(got) + " but must be " + dim_words(want), fix);
+  }
+
+  ex checked(const Text& t, SceneContext::Level lv, const Dimension& want, const std::string& key,
+             const std::string& fix) {
+    ex e = parse(t, lv, false, key);
+    expect_dim(e, want, t.pos, key, fix);
+    return e;
+  }
+
+  /// Numeric value with the parameters' values, if all are known. @throws SceneError when it
+  /// is undefined (a division by zero) or not a real number.
+  std::optional<numeric> value_of(const ex& e, const SourcePos& pos, const std::string& what) override {
+    ex v;
+    try {
+      v = e.subs(m_.parameter_values()).evalf();
+    } catch (const std::exception& err) {
+      throw SceneError(pos, what + " is undefined for the parameters' values (" + math_fault(err) + ")",
+                       "check the values of the parameters it uses");
+    }
+    if (!is_a<numeric>(v)) return std::nullopt;
+    if (!ex_to<numeric>(v).is_real())
+      throw SceneError(pos, what + " is not a real number for the parameters' values (it is " + text(v) + ")",
+                       "check the values of the parameters it uses (a square root of a negative number?)");
+    return ex_to<numeric>(v);
+  }
+
+  /// Where a value is written: a lone parameter's value, else the place that uses it.
+  SourcePos value_place(const ex& e, const SourcePos& use) override {
+    if (is_a<symbol>(e))
+      for (auto& pd : d_.parameters)
+        if (const Parameter* p = m_.parameter(pd.name); p && p->sym.is_equal(e)) return pd.value.pos;
+    return use;
+  }
+
+  void positive(const ex& e, const SourcePos& pos, const std::string& what, bool allow_zero = false) override {
+    auto v = value_of(e, pos, what);
+    if (!v || !(allow_zero ? v->is_negative() : !v->is_positive())) return;
+    const std::string must = allow_zero ? "zero or positive" : "positive";
+    // a single parameter: the fix is where its value is written
+    if (is_a<symbol>(e))
+      for (auto& pd : d_.parameters)
+        if (const Parameter* p = m_.parameter(pd.name); p && p->sym.is_equal(e))
+          throw SceneError(pd.value.pos, "parameter '" + pd.name + "' is " + pd.value.s + ", but it stands for " + what +
+                                             ", which must be " + must,
+                           "give '" + pd.name + "' a " + (allow_zero ? "non-negative" : "positive") + " value");
+    throw SceneError(pos, what + " must be " + must + ", but it is " + numerics::format(*v, 6),
+                     "give it a " + std::string(allow_zero ? "non-negative" : "positive") + " value");
+  }
+
+  void parameters() {
+    for (auto& p : d_.parameters) {
+      reserve(p.name, p.pos, "parameter");
+      units::Quantity q;
+      try {
+        q = units::parse_quantity(p.value.s);
+      } catch (const InputError& e) {
+        rethrow_at(p.value.pos, e);
+      }
+      Parameter par;
+      par.name = p.name;
+      par.pos = p.pos;
+      par.dim = q.unit.dim;
+      par.unknown = q.unknown;
+      if (q.has_number) par.value = q.si;
+      bool pos = !q.unknown && (!q.has_number || q.number.is_positive());
+      if (pos) par.sym = possymbol(p.name);
+      else par.sym = realsymbol(p.name);
+      m_.add_symbol(par.sym, par.dim);
+      m_.names_[p.name] = par.sym;
+      m_.params.push_back(par);
+    }
+  }
+
+  void coordinates() {
+    for (auto& c : d_.coordinates) {
+      reserve(c.name, c.pos, "coordinate");
+      reserve(c.name + "_dot", c.pos, "rate");
+      units::Unit u;
+      try {
+        u = units::parse_unit(c.unit.s);
+      } catch (const InputError& e) {
+        rethrow_at(c.unit.pos, e);
+      }
+      if (!u.dim.dimensionless() && u.dim != Dimension::length())
+        throw SceneError(c.unit.pos, "coordinate '" + c.name + "' has unit '" + c.unit.s +
+                                         "'; a coordinate is a length or an angle",
+                         "write 'm' (or ft, in …) or 'rad'");
+      Coordinate co{c.name, c.pos, realsymbol(c.name), realsymbol(c.name + "_dot"), u.dim};
+      m_.add_symbol(co.q, co.dim);
+      m_.add_symbol(co.qd, co.dim / Dimension::time());
+      m_.names_[c.name] = co.q;
+      m_.names_[c.name + "_dot"] = co.qd;
+      m_.coords.push_back(co);
+    }
+    m_.add_symbol(m_.t, Dimension::time());
+  }
+
+  void fixed_points() {
+    for (auto& p : d_.points) {
+      ex x = checked(p.x, SceneContext::ParamsOnly, Dimension::length(), p.name + "[0]",
+                     "a point's coordinates are lengths");
+      ex y = checked(p.y, SceneContext::ParamsOnly, Dimension::length(), p.name + "[1]",
+                     "a point's coordinates are lengths");
+      if (m_.fixed_points.count(p.name))
+        throw SceneError(p.pos, "point '" + p.name + "' is defined twice", "rename one of them");
+      m_.fixed_points[p.name] = {x, y};
+    }
+  }
+
+  void bodies() {
+    const Dimension L = Dimension::length(), M = Dimension::mass();
+    for (auto& bd : d_.bodies) {
+      if (m_.fixed_points.count(bd.name))
+        throw SceneError(bd.pos, "'" + bd.name + "' names both a point and a body", "rename one");
+      Body b;
+      b.name = bd.name;
+      b.pos = bd.pos;
+      b.mass = checked(bd.mass, SceneContext::ParamsOnly, M, "mass", "a mass is in kg, g or slug");
+      positive(b.mass, bd.mass.pos, "the mass of '" + bd.name + "'");
+      // Ī from the shape (model/inertia.cpp)
+      const auto& in = bd.inertia;
+      const InertiaShape& shape = inertia_shape(in.kind);
+      std::vector<ex> a;
+      for (auto& t : in.args) {
+        Dimension want = shape.given ? M * L * L : L;
+        ex e = checked(t, SceneContext::ParamsOnly, want, in.kind, shape.given ? "Ī is in kg·m^2" : "a size is a length");
+        positive(e, t.pos, "the size '" + t.s + "' of " + in.kind);
+        a.push_back(e);
+      }
+      b.inertia = shape.inertia(b.mass, a);
+      b.x = checked(bd.x, SceneContext::Geometry, L, "position[0]", "positions are lengths");
+      b.y = checked(bd.y, SceneContext::Geometry, L, "position[1]", "positions are lengths");
+      b.angle = bd.angle ? checked(*bd.angle, SceneContext::Geometry, Dimension{}, "angle",
+                                   "an angle is a pure number (rad)")
+                         : ex(0);
+      for (auto& p : bd.points) {
+        ex px = checked(p.x, SceneContext::ParamsOnly, L, p.name + "[0]",
+                        "body points are lengths in body axes (parameters only)");
+        ex py = checked(p.y, SceneContext::ParamsOnly, L, p.name + "[1]",
+                        "body points are lengths in body axes (parameters only)");
+        b.points[p.name] = {px, py};
+      }
+      if (m_.body_index(bd.name) >= 0)
+        throw SceneError(bd.pos, "body '" + bd.name + "' is defined twice", "rename one");
+      m_.bodies.push_back(b);
+    }
+    if (m_.bodies.empty() && !d_.analyses.empty())
+      throw SceneError({d_.file, 1, 1}, "the scene has no bodies", "add a 'bodies:' section");
+  }
+
+  /// "lhs = rhs" as lhs − rhs, with its units checked; errors at the text's place.
+  ex equation(const Text& t, SceneContext::Level lv, const std::string& key) {
+    SceneContext ctx(m_, lv, false);
+    ex e;
+    try {
+      e = expr::parse_equation(t.s, ctx);
+    } catch (const InputError& err) {
+      rethrow_at(t.pos, err);
+    }
+    dim(e, t.pos, key);
+    return e;
+  }
+
+  void constraints() {
+    for (auto& c : d_.constraints) {
+      ex e = equation(c, SceneContext::Geometry, "constraint");
+      if (e.is_zero())
+        throw SceneError(c.pos, "the constraint '" + c.s + "' says nothing (0 = 0)",
+                         "write a relation between coordinates, e.g. x + r*phi = 0");
+      bool has_q = false;
+      for (auto& co : m_.coords) has_q = has_q || e.has(co.q);
+      if (!has_q)
+        throw SceneError(c.pos, "the constraint '" + c.s + "' has no coordinate",
+                         "a constraint relates coordinates, e.g. x + r*phi = 0");
+      m_.constraints.push_back({e, c.pos});
+    }
+  }
+
+  // --- effects: each kind reads its own options (src/effects/) through these ---
+  const Model& model() const override { return m_; }
+  const Node& option(const scene::EffectDef& e, const std::string& key, const std::string& example) override {
+    const Node* n = e.options.get(key);
+    if (!n)
+      throw SceneError(e.pos, "effect '" + e.name + "' (" + e.kind + ") has no '" + key + "'",
+                       "add '" + key + ": " + example + "'");
+    return *n;
+  }
+  Text text_of(const Node& n, const std::string& key, const std::string& example) override {
+    if (!n.is_scalar())
+      throw SceneError(n.pos, "'" + key + "' must be a single value, not " + n.kind_name(),
+                       "write e.g. '" + key + ": " + example + "'");
+    return {n.scalar, n.pos};
+  }
+  void only(const scene::EffectDef& e, std::vector<std::string> keys) override {
+    keys.push_back(e.kind);
+    for (std::size_t i = 0; i + 1 < e.options.entries.size(); ++i)
+      if (e.options.entries[i + 1].second.kind == Node::Kind::Null) check_cut(e.options.entries[i].second);
+    for (auto& [k, v] : e.options.entries)
+      if (std::find(keys.begin(), keys.end(), k.scalar) == keys.end()) {
+        if (v.kind == Node::Kind::Null && scene::looks_cut(k.scalar))
+          throw SceneError(k.pos, "'" + k.scalar + "' looks like the end of an expression cut at a comma: inside {…} a comma separates entries",
+                           "put the expression in quotes, e.g. M: \"atan2(y, x)*M0\"");
+        std::string list;
+        for (auto& s : keys) list += (list.empty() ? "" : ", ") + s;
+        std::string near = scene::closest(k.scalar, keys);
+        throw SceneError(k.pos, "unknown key '" + k.scalar + "' in " + e.kind + " effect '" + e.name + "'",
+                         near.empty() ? "use: " + list : "did you mean '" + near + "'?");
+      }
+  }
+  PointRef point_ref(const Node& n, const std::string& key) override {
+    if (!n.is_scalar())
+      throw SceneError(n.pos, "'" + key + "' must name a point, not " + n.kind_name(),
+                       "write body.point, a body, or a fixed point");
+    try {
+      return m_.point(n.scalar);
+    } catch (const InputError& err) {
+      rethrow_at(n.pos, err);
+    }
+  }
+  /// `direction: positive|negative` of a friction effect: the sign of the motion it opposes.
+  std::optional<int> direction_of(const scene::EffectDef& ed) override {
+    const Node* d = ed.options.get("direction");
+    if (!d) return std::nullopt;
+    if (!d->is_scalar() || (d->scalar != "positive" && d->scalar != "negative"))
+      throw SceneError(d->pos, "'direction' must be positive or negative",
+                       "write 'direction: positive' (the motion the friction opposes goes the positive way)");
+    return d->scalar == "positive" ? 1 : -1;
+  }
+
+  // A contact party: a point, a body, or the ground (a line, no point).
+  PointRef party(const Node& n) override {
+    if (n.is_scalar() && n.scalar == "ground") {
+      PointRef p;
+      p.ground = true;
+      p.text = "ground";
+      return p;
+    }
+    return point_ref(n, "contact");
+  }
+
+  int body_ref(const Node& n, const std::string& key) override {
+    if (!n.is_scalar())
+      throw SceneError(n.pos, "'" + key + "' must name a body, not " + n.kind_name(), "write the body's name");
+    int b = m_.body_index(n.scalar);
+    if (b < 0) {
+      std::vector<std::string> names;
+      for (auto& x : m_.bodies) names.push_back(x.name);
+      std::string near = scene::closest(n.scalar, names);
+      throw SceneError(n.pos, "no body named '" + n.scalar + "'",
+                       near.empty() ? "name a body of the scene" : "did you mean '" + near + "'?");
+    }
+    return b;
+  }
+  std::pair<ex, ex> vec(const Node& n, const std::string& key, const Dimension& d, bool geometry,
+                        const std::string& fix) override {
+    return vec(n, key, d, geometry ? SceneContext::Geometry : SceneContext::ParamsOnly, fix);
+  }
+  std::pair<ex, ex> vec(const Node& n, const std::string& key, const Dimension& d, SceneContext::Level lv,
+                        const std::string& fix) {
+    const std::string example = key == "along" ? "along: x, y or a direction [nx, ny] such as [1, 1]"
+                                : key == "normal" || key == "direction" ? key + ": [0, 1]"
+                                : key == "J" ? "J: [J0, 0]" : key + ": [0, -P]";
+    if (!n.is_list() || n.items.size() != 2) {
+      for (auto& it : n.items) check_cut(it);
+      if (n.is_list())
+        throw SceneError(n.pos, "'" + key + "' must have 2 entries [x, y], not " + std::to_string(n.items.size()),
+                         "write e.g. " + example);
+      throw SceneError(n.pos, "'" + key + "' must be a list [x, y], not " + n.kind_name(), "write e.g. " + example);
+    }
+    ex x = checked(text_of(n.items[0], key, "0"), lv, d, key + "[0]", fix);
+    ex y = checked(text_of(n.items[1], key, "0"), lv, d, key + "[1]", fix);
+    return {x, y};
+  }
+
+  ex quantity(const Text& t, bool geometry, const Dimension& want, const std::string& key,
+             const std::string& fix) override {
+    return checked(t, geometry ? SceneContext::Geometry : SceneContext::ParamsOnly, want, key, fix);
+  }
+
+  // `KIND: body` (acts on the body) or `KIND: [a, b]` (between two bodies: relative angle)
+  std::pair<int, int> one_or_two_bodies(const scene::EffectDef& ed, const std::string& what) override {
+    if (ed.arg.is_list()) {
+      if (ed.arg.items.size() != 2)
+        throw SceneError(ed.arg.pos, what + " acts on one body or between two", "write '" + ed.kind + ": [a, b]'");
+      int b1 = body_ref(ed.arg.items[0], ed.kind);
+      return {b1, body_ref(ed.arg.items[1], ed.kind)};
+    }
+    return {body_ref(ed.arg, ed.kind), -1};
+  }
+
+  // `KIND: body.P` (a body point or mass centre), or `KIND: body` with `at: [x, y]` (the body's
+  // material point at that world place: a cord leaving a hub, a fixed brake shoe)
+  PointRef acting_point(const scene::EffectDef& ed) override {
+    if (auto* at = ed.options.get("at")) {
+      PointRef a;
+      a.body = body_ref(ed.arg, ed.kind);
+      a.world_place = true;
+      a.text = ed.arg.scalar + " at " + "place";
+      auto [wx, wy] = vec(*at, "at", Dimension::length(), SceneContext::Geometry, "a place is a pair of lengths");
+      a.wx = wx;
+      a.wy = wy;
+      return a;
+    }
+    PointRef a = point_ref(ed.arg, ed.kind);
+    if (a.body < 0)
+      throw SceneError(ed.arg.pos, "a " + ed.kind + " acts on a body, but '" + ed.arg.scalar + "' is a fixed point",
+                       "name body.point or a body (its mass centre)");
+    return a;
+  }
+
+  void effects() {
+    const auto& kinds = effect_kinds();
+    for (auto& ed : d_.effects) {
+      // the scene has checked the kind's name against the same table
+      auto kind = std::find_if(kinds.begin(), kinds.end(), [&](const EffectKind& k) { return k.name == ed.kind; });
+      if (kind == kinds.end()) throw std::logic_error("effect kind '" + ed.kind + "' is not in the table");
+      std::shared_ptr<const Effect> e = kind->read(*this, ed);
+      if (m_.effect_index(e->name) >= 0)
+        throw SceneError(ed.pos, "effect '" + e->name + "' is defined twice", "rename one");
+      m_.effects.push_back(e);
+    }
+  }
+
+  void states() {
+    for (auto& sd : d_.states) {
+      State s;
+      s.name = sd.name;
+      s.pos = sd.pos;
+      for (auto& c : m_.coords) {
+        realsymbol q(c.name + "@" + sd.name), qd(c.name + "_dot@" + sd.name);
+        m_.add_symbol(q, c.dim);
+        m_.add_symbol(qd, c.dim / Dimension::time());
+        s.sym.emplace(c.name, std::make_pair(q, qd));
+      }
+      s.t = realsymbol("t@" + sd.name);
+      m_.add_symbol(s.t, Dimension::time());
+      if (m_.state_index(sd.name) >= 0)
+        throw SceneError(sd.pos, "state '" + sd.name + "' is defined twice", "rename one");
+      m_.states.push_back(s);
+    }
+    for (std::size_t si = 0; si < d_.states.size(); ++si) {
+      auto& sd = d_.states[si];
+      State& s = m_.states[si];
+      for (auto& [key, val] : sd.values) {
+        ex sym;
+        Dimension want;
+        for (auto& c : m_.coords) {
+          if (key == c.name) { sym = s.sym.at(c.name).first; want = c.dim; }
+          if (key == c.name + "_dot") { sym = s.sym.at(c.name).second; want = c.dim / Dimension::time(); }
+        }
+        if (key == "t") { sym = s.t; want = Dimension::time(); }
+        if (sym.is_zero()) {
+          std::vector<std::string> names = {"t", "where"};
+          for (auto& c : m_.coords) { names.push_back(c.name); names.push_back(c.name + "_dot"); }
+          std::string near = scene::closest(key, names);
+          throw SceneError(sd.key_pos(key), "state '" + sd.name + "' gives '" + key + "', which is not a coordinate, rate or t",
+                           near.empty() ? "give coordinates (theta), rates (theta_dot), t or where" : "did you mean '" + near + "'?");
+        }
+        ex v;
+        // "NUMBER UNIT" is a quantity; anything else an expression of parameters
+        bool done = false;
+        try {
+          units::Quantity q = units::parse_quantity(val.s);
+          if (q.has_number && !q.unit.text.empty()) {
+            v = q.si;
+            if (q.unit.dim != want)
+              throw SceneError(val.pos, "'" + key + "' is given in " + q.unit.text +
+                                            (q.unit.text == q.unit.dim.str() ? std::string() : " (" + q.unit.dim.str() + ")") +
+                                            " but must be " + (want.dimensionless() ? std::string("an angle or pure number") : want.str()),
+                               "give it in " + unit_words(want));
+            done = true;
+          } else if (q.has_number && !q.number.is_zero() && !want.dimensionless()) {
+            throw SceneError(val.pos, "'" + key + ": " + val.s + "' has no unit, but '" + key + "' is in " + units::si_name(want),
+                             "write it with its unit, e.g. '" + key + ": " + val.s + " " + units::si_name(want) + "'");
+          }
+        } catch (const InputError&) {
+        }
+        if (!done)
+          v = checked(val, SceneContext::ParamsOnly, want, key,
+                      want.dimensionless() ? std::string("give an angle: a value such as 30 deg, a parameter in rad or deg, or a pure number")
+                                           : "give it in " + units::si_name(want) + " (a parameter with that unit, or NUMBER UNIT)");
+        value_of(v, val.pos, "'" + key + "' at state '" + sd.name + "'");  // defined and real
+        s.given[sym] = v;
+      }
+      for (auto& w : sd.where) {
+        ex e = equation(w, SceneContext::Quantities, "where");
+        s.where.push_back({m_.bind(e, static_cast<int>(si)), w.pos});
+      }
+    }
+  }
+
+  int state_ref(const Node& opts, const std::string& key, const SourcePos& pos, const std::string& kind) {
+    const Node* n = opts.get(key);
+    if (!n)
+      throw SceneError(pos, kind + " analysis has no '" + key + "'", "write '" + kind + ": {from: 1, to: 2}'");
+    if (!n->is_scalar()) throw SceneError(n->pos, "'" + key + "' must name a state", "write '" + key + ": 1'");
+    int i = m_.state_index(n->scalar);
+    if (i < 0) {
+      std::vector<std::string> names;
+      for (auto& st : m_.states) names.push_back(st.name);
+      std::string near = scene::closest(n->scalar, names);
+      throw SceneError(n->pos, "no state named '" + n->scalar + "'",
+                       near.empty() ? "define it under 'states' (the states are " + state_list(m_) + ")"
+                                    : "did you mean '" + near + "'?");
+    }
+    return i;
+  }
+
+  std::vector<int> body_set(const Node& n) {
+    std::vector<int> out;
+    if (n.is_scalar()) out.push_back(body_ref(n, "bodies"));
+    else if (n.is_list())
+      for (auto& it : n.items) out.push_back(body_ref(it, "bodies"));
+    else
+      throw SceneError(n.pos, "'bodies' must list bodies", "write 'bodies: [disk, block]'");
+    if (out.empty()) throw SceneError(n.pos, "'bodies' is empty", "list at least one body");
+    return out;
+  }
+
+  ex impulse_symbol(const std::string& name, const Dimension& d) {
+    realsymbol s(name);
+    m_.add_symbol(s, d);
+    return s;
+  }
+
+  ex unknown(const std::string& name, const Dimension& d) override { return impulse_symbol(name, d); }
+
+  void analyses() {
+    const auto& kinds = analysis_kinds();
+    std::vector<std::string> names;
+    for (auto* k : kinds) names.push_back(k->name);
+    const Dimension P = Dimension::mass() * Dimension::length() / Dimension::time();  // impulse
+    std::map<std::string, std::pair<ex, ex>> pin_reactions;  // "pin|S1|S2" → (Rx, Ry)
+    for (auto& ad : d_.analyses) {
+      auto kind = std::find_if(kinds.begin(), kinds.end(), [&](const AnalysisKind* k) { return k->name == ad.kind; });
+      if (kind == kinds.end()) {
+        std::string near = scene::closest(ad.kind, names), all;
+        for (std::size_t i = 0; i < names.size(); ++i)
+          all += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+        throw SceneError(ad.pos, "unknown analysis '" + ad.kind + "'",
+                         near.empty() ? "use: " + all : "did you mean '" + near + "'?");
+      }
+      if (!ad.options.is_map())
+        throw SceneError(ad.pos, "'" + ad.kind + "' needs its states", "write '" + ad.kind + ": {from: 1, to: 2}'");
+      std::vector<std::string> keys = {"from", "to"};
+      for (auto& k : (*kind)->keys()) keys.push_back(k);
+      for (auto& [k, v] : ad.options.entries)
+        if (std::find(keys.begin(), keys.end(), k.scalar) == keys.end()) {
+          std::string list, near = scene::closest(k.scalar, keys);
+          for (auto& x : keys) list += (list.empty() ? "" : ", ") + x;
+          throw SceneError(k.pos, "unknown key '" + k.scalar + "' in " + ad.kind + " analysis",
+                           near.empty() ? "use: " + list : "did you mean '" + near + "'?");
+        }
+      Analysis a;
+      a.kind = ad.kind;
+      a.type = *kind;
+      a.pos = ad.pos;
+      a.from = state_ref(ad.options, "from", ad.pos, ad.kind);
+      a.to = state_ref(ad.options, "to", ad.pos, ad.kind);
+      if (a.from == a.to)
+        throw SceneError(ad.options.get("to")->pos, "'from' and 'to' are the same state", "name two different states");
+      const std::string S1 = m_.states[a.from].name, S2 = m_.states[a.to].name;
+      if (auto* b = ad.options.get("bodies")) a.bodies = body_set(*b);
+      else
+        for (std::size_t i = 0; i < m_.bodies.size(); ++i) a.bodies.push_back(static_cast<int>(i));
+      if (auto* c = ad.options.get("conserved")) {
+        if (!c->is_scalar() || (c->scalar != "true" && c->scalar != "false"))
+          throw SceneError(c->pos, "'conserved' must be true or false", "write 'conserved: true'");
+        a.conserved = c->scalar == "true";
+      }
+      a.type->read(*this, ad, a);
+      if (a.type->takes_reactions()) {
+        // supports between the body set and the rest (pins) carry unknown reactions
+        for (auto& e : m_.effects) {
+          if (!e.reaction_across(a.bodies)) continue;
+          std::string key = e.name + "|" + S1 + "|" + S2;
+          if (!pin_reactions.count(key)) {
+            ex Rx = impulse_symbol("Rx_" + e.name + "[" + S1 + "," + S2 + "]", P);
+            ex Ry = impulse_symbol("Ry_" + e.name + "[" + S1 + "," + S2 + "]", P);
+            pin_reactions[key] = {Rx, Ry};
+          }
+          a.reactions[e.name] = pin_reactions[key];
+          a.unknowns.push_back(pin_reactions[key].first);
+          a.unknowns.push_back(pin_reactions[key].second);
+        }
+      }
+      m_.analyses.push_back(a);
+    }
+  }
+
+  bool has_generic(const ex& e) {
+    for (auto& c : m_.coords)
+      if (e.has(c.q) || e.has(c.qd)) return true;
+    return e.has(m_.t);
+  }
+
+  ex bound_expr(const Text& t, const std::string& key) {
+    ex e = m_.parse(t.s, t.pos, true);
+    if (has_generic(e))
+      throw SceneError(t.pos, "'" + key + "' depends on the motion but names no state",
+                       "bind it to a state with @, e.g. theta_dot@2 or (T + V)@1");
+    return e;
+  }
+
+  RootSpec root_spec(const Node& n) {
+    RootSpec r;
+    if (n.is_scalar() && n.scalar == "positive") r.kind = RootSpec::Kind::Positive;
+    else if (n.is_scalar() && n.scalar == "negative") r.kind = RootSpec::Kind::Negative;
+    else if (n.is_map() && n.get("in") && n.entries.size() == 1 && n.get("in")->is_list() &&
+             n.get("in")->items.size() == 2) {
+      r.kind = RootSpec::Kind::Interval;
+      auto& it = n.get("in")->items;
+      auto bound = [&](const Node& b) {
+        if (!b.is_scalar()) throw SceneError(b.pos, "a root bound must be a value", "write e.g. {in: [0, 2 m]}");
+        try {
+          units::Quantity q = units::parse_quantity(b.scalar);
+          if (q.has_number) return ex(q.si);
+        } catch (const InputError&) {
+        }
+        return parse(Text{b.scalar, b.pos}, SceneContext::ParamsOnly);
+      };
+      r.lo = bound(it[0]);
+      r.hi = bound(it[1]);
+    } else {
+      throw SceneError(n.pos, "'root' must be positive, negative or {in: [lo, hi]}",
+                       "write 'root: positive'");
+    }
+    return r;
+  }
+
+  void finds() {
+    for (auto& fd : d_.finds) {
+      Find f;
+      f.name = fd.name;
+      f.pos = fd.pos;
+      f.value = bound_expr(fd.value, fd.name);
+      f.dim = dim(f.value, fd.value.pos, fd.name);
+      if (fd.root) f.root = root_spec(*fd.root);
+      if (fd.unit) {
+        units::Unit u;
+        try {
+          u = units::parse_unit(fd.unit->s);
+        } catch (const InputError& e) {
+          rethrow_at(fd.unit->pos, e);
+        }
+        if (f.value.is_zero()) f.dim = u.dim;  // an exact 0 has every dimension: take the unit's
+        if (u.dim != f.dim)
+          throw SceneError(fd.unit->pos, "the unit '" + u.text + "'" +
+                                             (u.text == u.dim.str() ? std::string() : " (" + u.dim.str() + ")") +
+                                             " does not fit find '" + fd.name + "', which has dimension " + f.dim.str(),
+                           "use " + (units::si_name(f.dim).empty() ? std::string("rad, deg or no unit") : "a unit of " + units::si_name(f.dim)));
+        f.unit = u;
+      }
+      m_.finds.push_back(f);
+    }
+  }
+
+  void expects() {
+    for (auto& xd : d_.expects) {
+      auto it = std::find_if(m_.finds.begin(), m_.finds.end(), [&](const Find& f) { return f.name == xd.name; });
+      if (it == m_.finds.end()) {
+        std::vector<std::string> names;
+        for (auto& f : m_.finds) names.push_back(f.name);
+        std::string near = scene::closest(xd.name, names);
+        throw SceneError(xd.pos, "expect '" + xd.name + "' names no result under find",
+                         near.empty() ? "add '" + xd.name + "' under find" : "did you mean '" + near + "'?");
+      }
+      Expect x;
+      x.name = xd.name;
+      x.pos = xd.pos;
+      if (xd.form) {
+        x.form = bound_expr(*xd.form, "form");
+        x.form_pos = xd.form->pos;
+        Dimension d = dim(*x.form, xd.form->pos, "form");
+        if (d != it->dim && !x.form->is_zero())
+          throw SceneError(xd.form->pos, "the claimed form has dimension " + d.str() + " but '" + xd.name +
+                                             "' has " + it->dim.str(),
+                           "check the claimed formula");
+      }
+      if (xd.value) {
+        units::Quantity q;
+        try {
+          q = units::parse_quantity(xd.value->s);
+        } catch (const InputError& e) {
+          rethrow_at(xd.value->pos, e);
+        }
+        if (!q.has_number)
+          throw SceneError(xd.value->pos, "the claimed value has no number", "write e.g. 'value: 3.50 rad/s'");
+        if (q.unit.dim != it->dim)
+          throw SceneError(xd.value->pos, "the claimed value is in " + (q.unit.text.empty() ? std::string("no unit") : q.unit.text) +
+                                              (q.unit.text == q.unit.dim.str() ? std::string() : " (" + q.unit.dim.str() + ")") +
+                                              " but '" + xd.name + "' has " + it->dim.str(),
+                           "give the value in " + (units::si_name(it->dim).empty() ? std::string("rad or deg, or as a pure number") : "a unit of " + units::si_name(it->dim)));
+        x.value = q;
+        x.value_pos = xd.value->pos;
+      }
+      m_.expects.push_back(x);
+    }
+  }
+};
+
+Model Model::build(const scene::SceneDef& def) { return Builder(def).run(); }
+
+}  // namespace kinergy::model

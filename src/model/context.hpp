@@ -1,0 +1,167 @@
+// The expression context of a scene (private to src/model): which names an expression may use
+// where it stands, and the built-in quantities (T, V, speed(P), impulse(effect, S1, S2), …).
+#pragma once
+#include <string>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/expr/parser.hpp"
+#include "kinergy/model/model.hpp"
+
+namespace kinergy::model {
+
+using namespace GiNaC;
+
+/// The list of a model's states, for a fix.
+inline std::string state_list(const Model& m) {
+  std::string s;
+  for (auto& st : m.states) s += (s.empty() ? "" : ", ") + st.name;
+  return s.empty() ? std::string("none yet") : s;
+}
+
+/// Names a scene expression may use, by where it stands.
+class SceneContext : public expr::Context {
+public:
+  enum Level { ParamsOnly, Geometry, Quantities };
+  SceneContext(const Model& m, Level lv, bool states) : m_(m), level_(lv), states_(states) {}
+
+  ex name(const std::string& id) override {
+    if (id.find('.') != std::string::npos)
+      throw InputError("'" + id + "' is a point, not a number",
+                       "use x(" + id + "), y(" + id + "), speed(" + id + ") …");
+    auto it = m_.names_.find(id);
+    if (it != m_.names_.end()) {
+      bool is_param = false;
+      for (auto& p : m_.params) is_param = is_param || p.name == id;
+      if (!is_param && level_ == ParamsOnly)
+        throw InputError("'" + id + "' is a coordinate or rate; only parameters may stand here",
+                         "write this in parameters only");
+      bool is_rate = id.size() > 4 && id.compare(id.size() - 4, 4, "_dot") == 0;
+      if (is_rate && level_ == Geometry)
+        throw InputError("a rate '" + id + "' cannot stand in geometry",
+                         "write positions in coordinates; velocities follow by differentiation");
+      return it->second;
+    }
+    if (id == "t") {
+      if (level_ == ParamsOnly)
+        throw InputError("time 't' cannot stand here", "write this in parameters only");
+      return m_.t;
+    }
+    if (level_ == Quantities) {
+      if (id == "T") return m_.kinetic_energy();
+      if (id == "V") return m_.potential_energy();
+      if (id == "px" || id == "py") return quantity(id, {});
+    }
+    std::vector<std::string> names;
+    for (auto& [k, v] : m_.names_) names.push_back(k);
+    std::string near = scene::closest(id, names);
+    throw InputError("unknown name '" + id + "'",
+                     near.empty() ? "define it under parameters or coordinates"
+                                  : "did you mean '" + near + "'?");
+  }
+
+  ex quantity(const std::string& f, const std::vector<std::string>& args) override {
+    if (level_ != Quantities)
+      throw InputError("'" + f + "(…)' is not a function here",
+                       "use sin, cos, tan, asin, acos, atan, atan2, sqrt, exp, log, abs");
+    auto one = [&](const char* what) -> const std::string& {
+      if (args.size() != 1)
+        throw InputError(f + " takes one argument, not " + std::to_string(args.size()),
+                         std::string("write ") + f + "(" + what + ")");
+      return args[0];
+    };
+    auto body = [&](const std::string& n) {
+      int b = m_.body_index(n);
+      if (b < 0) {
+        std::vector<std::string> names;
+        for (auto& x : m_.bodies) names.push_back(x.name);
+        std::string near = scene::closest(n, names);
+        throw InputError("no body named '" + n + "'",
+                         near.empty() ? "name a body of the scene" : "did you mean '" + near + "'?");
+      }
+      return b;
+    };
+    if (f == "T") {
+      if (args.empty()) return m_.kinetic_energy();
+      return m_.kinetic_energy(body(one("body")));
+    }
+    if (f == "V") {
+      if (args.empty()) return m_.potential_energy();
+      int e = m_.effect_index(one("effect"));
+      if (e < 0) throw InputError("no effect named '" + args[0] + "'", "name an effect of the scene");
+      return m_.potential_energy(m_.effects[e]);
+    }
+    if (f == "omega") return m_.omega(body(one("body")));
+    if (f == "x" || f == "y" || f == "vx" || f == "vy" || f == "speed") {
+      PointRef p = m_.point(one("P"));
+      if (f == "x") return m_.position(p).first;
+      if (f == "y") return m_.position(p).second;
+      auto [vx, vy] = m_.velocity(p);
+      if (f == "vx") return vx;
+      if (f == "vy") return vy;
+      return sqrt(trig_simplify(vx * vx + vy * vy));
+    }
+    if (f == "power") {
+      int e = m_.effect_index(one("effect"));
+      if (e < 0) throw InputError("no effect named '" + args[0] + "'", "name an effect of the scene");
+      return m_.power(m_.effects[e]);
+    }
+    if (f == "H") {
+      if (args.size() == 2) return m_.angular_momentum(m_.point(args[0]), {body(args[1])});
+      return m_.angular_momentum(m_.point(one("P")));
+    }
+    if (f == "px" || f == "py") {
+      std::vector<int> set;
+      if (args.empty())
+        for (std::size_t i = 0; i < m_.bodies.size(); ++i) set.push_back(static_cast<int>(i));
+      else
+        set.push_back(body(one("body")));
+      auto [Lx, Ly] = m_.linear_momentum(set);
+      return f == "px" ? Lx : Ly;
+    }
+    if (f == "impulse_x" || f == "impulse_y" || f == "impulse" || f == "loss") {
+      if (args.size() != 3)
+        throw InputError(f + " takes an effect and two states", "write " + f + "(hit, before, after)");
+      int e = m_.effect_index(args[0]);
+      if (e < 0) throw InputError("no effect named '" + args[0] + "'", "name an effect of the scene");
+      int s1 = m_.state_index(args[1]), s2 = m_.state_index(args[2]);
+      if (s1 < 0 || s2 < 0)
+        throw InputError("no state named '" + (s1 < 0 ? args[1] : args[2]) + "'", "name two states of the scene");
+      int ai = m_.analysis_between(s1, s2);
+      if (ai < 0)
+        throw InputError("no momentum or impact analysis goes from state '" + args[1] + "' to '" + args[2] + "'",
+                         "add one, e.g. '- impact: {from: " + args[1] + ", to: " + args[2] + ", contact: …}'");
+      if (f == "loss") return m_.impact_loss(e, ai);
+      auto [x, y] = m_.impulse(e, ai);
+      if (f == "impulse_x") return x;
+      if (f == "impulse_y") return y;
+      return m_.effects[e].impulse_size(m_, ai, x, y);
+    }
+    throw InputError("unknown function '" + f + "'",
+                     "use T, V, T(body), omega(body), x(P), y(P), vx(P), vy(P), speed(P), power(effect), "
+                     "H(P), H(P, body), px, py, impulse(effect, S1, S2), impulse_x, impulse_y, loss(contact, S1, S2) "
+                     "or a math function");
+  }
+
+  ex at_state(const ex& e, const std::string& s) override {
+    if (!states_)
+      throw InputError("'@" + s + "' binds to a state, which cannot be done here",
+                       "remove '@" + s + "'");
+    int i = m_.state_index(s);
+    if (i < 0) {
+      std::vector<std::string> names;
+      for (auto& st : m_.states) names.push_back(st.name);
+      std::string near = scene::closest(s, names);
+      throw InputError("no state named '" + s + "'",
+                       near.empty() ? "define it under 'states' (the states are " + state_list(m_) + ")"
+                                    : "did you mean '@" + near + "'?");
+    }
+    return m_.bind(e, i);
+  }
+
+private:
+  const Model& m_;
+  Level level_;
+  bool states_;
+};
+
+}  // namespace kinergy::model
