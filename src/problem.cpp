@@ -176,86 +176,110 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
   return Value{d->value, Value::How::Precise, d->working, 0};
 }
 
-Solution solve_scene(const scene::SceneDef& def) {
-  Solution sol{Model::build(def), {}, {}, {}, {}, {}, {}, {}};
-  Model& m = sol.model;
-  exmap env = m.numeric_environment();
+namespace {
+
+/// The steps of solving a scene: the unknowns, the equations of each analysis in order (what
+/// one determines is known to the next), the solver, the choice among its branches, the results.
+class SceneSolver {
+public:
+  explicit SceneSolver(Solution& sol) : sol_(sol), m(sol.model), env(m.numeric_environment()), given(m.given_values()) {}
+
+  void run() {
+    knowledge();
+    collect_unknowns();
+    root_hints();
+    for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) analysis(ai);
+    // states that results name but no analysis uses still obey the constraints
+    for (auto& f : m.finds)
+      for (std::size_t s = 0; s < m.states.size(); ++s)
+        for (auto& [name, qs] : m.states[s].sym)
+          if (f.value.has(qs.first) || f.value.has(qs.second)) add_state(static_cast<int>(s));
+    for (auto& e : sol_.equations) check_units(e);
+    choose(solve(sol_.equations));
+    for (auto& f : m.finds) sol_.results.push_back(result(f));
+  }
+
+private:
+  Solution& sol_;
+  const Model& m;
+  const exmap env;
+  const exmap given;
+  std::optional<principles::Knowledge> know_;
+  std::vector<ex> unknowns;
+  exmap reference;  ///< a coordinate's value at another state, for numeric root searches
+  std::map<ex, std::pair<ex, ex>, ex_is_less> ranges;  ///< root ranges of results that are one unknown
+  std::set<int> states_in;
+
   // the constraints evaluated at the values given may be undefined there (x/tan(theta), theta = pi/2)
-  auto undefined = [&](const SourcePos& pos, const std::string& what, const std::exception& err) {
+  static SceneError undefined(const SourcePos& pos, const std::string& what, const std::exception& err) {
     return SceneError(pos, what + " is undefined for the values given at the states (" + model::math_fault(err) + ")",
                       "check the values given at the states");
-  };
-  std::optional<principles::Knowledge> known;
-  try {
-    known.emplace(m);
-  } catch (const std::exception& err) {
-    throw undefined(m.constraints.empty() ? SourcePos{m.file, 1, 1} : m.constraints.front().second, "a constraint", err);
   }
-  principles::Knowledge& know = *known;
 
-  const exmap given = m.given_values();
-
-  std::vector<ex> unknowns;
-  for (auto& s : m.states) {
-    for (auto& c : m.coords)
-      for (const ex& x : {ex(s.sym.at(c.name).first), ex(s.sym.at(c.name).second)})
-        if (!given.count(x)) unknowns.push_back(x);
-    if (!given.count(s.t)) unknowns.push_back(s.t);
-  }
-  for (auto& p : m.params)
-    if (p.unknown) unknowns.push_back(p.sym);
-  for (auto& a : m.analyses)  // impulses the analyses bring: contacts, pins, constraints
-    for (auto& u : a.unknowns)
-      if (std::find_if(unknowns.begin(), unknowns.end(), [&](const ex& x) { return x.is_equal(u); }) == unknowns.end())
-        unknowns.push_back(u);
-
-  exmap reference;  // a coordinate's value at another state, for numeric root searches
-  for (auto& a : m.analyses)
-    for (auto& c : m.coords) {
-      ex q1 = m.states[a.from].sym.at(c.name).first, q2 = m.states[a.to].sym.at(c.name).first;
-      if (auto it = given.find(q1); it != given.end()) reference[q2] = it->second;
+  void knowledge() {
+    try {
+      know_.emplace(m);
+    } catch (const std::exception& err) {
+      throw undefined(m.constraints.empty() ? SourcePos{m.file, 1, 1} : m.constraints.front().second, "a constraint", err);
     }
+  }
 
-  std::set<int> states_in;
-  auto add_state = [&](int s) {
+  /// State values not given, parameters written `unknown`, and the impulses the analyses bring.
+  void collect_unknowns() {
+    for (auto& s : m.states) {
+      for (auto& c : m.coords)
+        for (const ex& x : {ex(s.sym.at(c.name).first), ex(s.sym.at(c.name).second)})
+          if (!given.count(x)) unknowns.push_back(x);
+      if (!given.count(s.t)) unknowns.push_back(s.t);
+    }
+    for (auto& p : m.params)
+      if (p.unknown) unknowns.push_back(p.sym);
+    for (auto& a : m.analyses)  // impulses the analyses bring: contacts, pins, constraints
+      for (auto& u : a.unknowns)
+        if (std::find_if(unknowns.begin(), unknowns.end(), [&](const ex& x) { return x.is_equal(u); }) == unknowns.end())
+          unknowns.push_back(u);
+  }
+
+  /// Where to look for numeric roots: a coordinate's value at the other state of an analysis, and
+  /// the root range of a result that is one unknown.
+  void root_hints() {
+    for (auto& a : m.analyses)
+      for (auto& c : m.coords) {
+        ex q1 = m.states[a.from].sym.at(c.name).first, q2 = m.states[a.to].sym.at(c.name).first;
+        if (auto it = given.find(q1); it != given.end()) reference[q2] = it->second;
+      }
+    for (auto& f : m.finds) {
+      if (f.root.kind != model::RootSpec::Kind::Interval) continue;
+      try {
+        ex v = f.value.subs(given);
+        if (is_a<symbol>(v)) ranges[v] = {f.root.lo, f.root.hi};
+      } catch (const std::exception&) {
+        // undefined at the given values: reported with the result itself
+      }
+    }
+  }
+
+  void add_state(int s) {
     if (!states_in.insert(s).second) return;
-    for (auto& e : principles::state_equations(m, s)) sol.equations.push_back(e);
-  };
-  auto check_units = [&](const principles::Equation& e) {
+    for (auto& e : principles::state_equations(m, s)) sol_.equations.push_back(e);
+  }
+
+  void check_units(const principles::Equation& e) const {
     try {
       m.dimension(e.residual());
     } catch (const model::DimensionError& err) {
       throw SceneError(e.pos, "inconsistent units in the " + e.label + ": " + err.what(),
                        "check the units of the parameters in these terms");
     }
-  };
-  // a result that is one unknown with a root range says where to look for a numeric root
-  std::map<ex, std::pair<ex, ex>, ex_is_less> ranges;
-  for (auto& f : m.finds) {
-    if (f.root.kind != model::RootSpec::Kind::Interval) continue;
-    try {
-      ex v = f.value.subs(given);
-      if (is_a<symbol>(v)) ranges[v] = {f.root.lo, f.root.hi};
-    } catch (const std::exception&) {
-      // undefined at the given values: reported with the result itself
-    }
   }
-  auto run_solver = [&](const std::vector<principles::Equation>& eqs) {
-    solve::Problem p{eqs, unknowns, given, env, reference, ranges};
-    try {
-      return solve::solve(p);
-    } catch (const solve::SolveError& e) {
-      SourcePos pos = e.pos().line > 0 ? e.pos() : (m.analyses.empty() ? SourcePos{m.file, 1, 1} : m.analyses.front().pos);
-      throw SceneError(pos, e.what(), e.fix());
-    }
-  };
 
-  for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
+  /// The equations of analysis ai (and of its states).
+  void analysis(std::size_t ai) {
     const auto& a = m.analyses[ai];
     add_state(a.from);
     add_state(a.to);
     try {
-      sol.parts.push_back(a.type->equations(m, a, know, sol));
+      sol_.parts.push_back(a.type->equations(m, a, *know_, sol_));
     } catch (const SceneError&) {
       throw;
     } catch (const std::exception& err) {
@@ -264,110 +288,111 @@ Solution solve_scene(const scene::SceneDef& def) {
     if (ai + 1 < m.analyses.size()) {
       // what this analysis determines is known to the next (a direction of motion, say)
       try {
-        auto bs = run_solver(sol.equations);
-        Selector sel{m, env, given};
-        solve::Branch b = sel.pick(bs);
+        solve::Branch b = Selector{m, env, given}.pick(solve(sol_.equations));
         for (auto& [k, v] : b.sol)
-          if (auto x = numerics::evaluate(v, env, 30)) know.set(k, *x);
+          if (auto x = numerics::evaluate(v, env, 30)) know_->set(k, *x);
       } catch (const SceneError&) {
         // decided later, with every equation
       }
     }
   }
-  // states that results name but no analysis uses still obey the constraints
-  for (auto& f : m.finds)
-    for (std::size_t s = 0; s < m.states.size(); ++s)
-      for (auto& [name, qs] : m.states[s].sym)
-        if (f.value.has(qs.first) || f.value.has(qs.second)) add_state(static_cast<int>(s));
-  for (auto& e : sol.equations) check_units(e);
 
-  std::vector<solve::Branch> branches = run_solver(sol.equations);
-  Selector sel{m, env, given};
-  sol.branch = branches.size() == 1 ? branches.front() : sel.pick(branches);
-
-  // a contact can only push: J ≥ 0 along its normal
-  for (auto& a : m.analyses)
-    for (int ci : a.contacts) {
-      const auto& e = effects::contact(m, ci);
-      ex J = a.contact_impulses.at(e.name).first.subs(given).subs(sol.branch.sol);
-      auto v = numerics::evaluate(J, env, 30);
-      if (v && v->is_negative())
-        throw SceneError(e.pos, "contact '" + e.name + "' would have to pull (impulse " + numerics::format(*v, 6) +
-                                    " N*s along its normal) in the impact " + m.states[a.from].name + " -> " + m.states[a.to].name,
-                         "check the normal: it points from the first party (" + e.a.text + ") into the second (" + e.b.text + ")");
-    }
-
-  for (auto& f : m.finds) {
-    Result r;
-    r.name = f.name;
-    r.pos = f.pos;
-    r.dim = f.dim;
-    ex c;
+  std::vector<solve::Branch> solve(const std::vector<principles::Equation>& eqs) const {
+    solve::Problem p{eqs, unknowns, given, env, reference, ranges};
     try {
-      c = f.value.subs(given).subs(sol.branch.sol);
-    } catch (const std::exception& err) {
-      throw SceneError(f.pos, "'" + f.name + "' is undefined at the states (" + model::math_fault(err) + ")",
-                       "check the value of '" + f.name + "' and the values given at its states");
+      return solve::solve(p);
+    } catch (const solve::SolveError& e) {
+      SourcePos pos = e.pos().line > 0 ? e.pos() : (m.analyses.empty() ? SourcePos{m.file, 1, 1} : m.analyses.front().pos);
+      throw SceneError(pos, e.what(), e.fix());
     }
-    for (auto& u : unknowns)
-      if (c.has(u)) {
-        std::size_t n = sol.equations.size();
-        // an impulse left free means the state values around it are missing, not the impulse
-        bool impulse = false;
-        for (auto& a : m.analyses)
-          for (auto& x : a.unknowns) impulse = impulse || x.is_equal(u);
-        // the state values that nothing fixed are what is missing
-        // the state values that were solved only in terms of the free impulse are what is missing
-        std::string missing;
-        if (impulse)
-          for (auto& x : unknowns) {
-            bool is_impulse = false;
-            for (auto& a : m.analyses)
-              for (auto& y : a.unknowns) is_impulse = is_impulse || y.is_equal(x);
-            auto it = sol.branch.sol.find(x);
-            if (!is_impulse && it != sol.branch.sol.end() && it->second.has(u))
-              missing += (missing.empty() ? "" : ", ") + model::text(x);
-          }
-        throw SceneError(f.pos, "'" + f.name + "' is not determined: " + model::text(u) + (impulse ? " (an impulse)" : "") +
-                                    " is unknown (the analyses give " + std::to_string(n) +
-                                    (n == 1 ? " equation" : " equations") + " for more unknowns)",
-                         impulse ? "give " + (missing.empty() ? std::string("the missing values at the states around that analysis") : missing) +
-                                       " (velocities before an impact, a time), or add an analysis"
-                                 : "give " + model::text(u) + " at its state, or add an analysis or a 'where' condition that fixes it");
-      }
-    // a float in the result comes only from a numeric root: no closed form
-    r.closed_form = !has_float(c);
-    r.closed = model::factored(model::root_simplify(model::tidy(model::tidy_function_arguments(c))));
-    if (f.unit) {
-      r.unit = f.unit->text;
-      r.unit_factor = f.unit->factor;
-    } else {
-      r.unit = units::si_name(f.dim);
-    }
-    bool all_values = true;
-    const model::Parameter* missing = nullptr;
-    for (auto& p : m.params)
-      if (r.closed.has(p.sym) && !p.value) {
-        all_values = false;
-        if (!missing) missing = &p;
-      }
-    // a unit on the result, or a claimed number, asks for a number
-    bool number_asked = f.unit.has_value();
-    for (auto& x : m.expects) number_asked = number_asked || (x.name == f.name && x.value);
-    if (!all_values && number_asked)
-      throw SceneError(missing->pos, "parameter '" + missing->name + "' has no value, but a number is asked for '" +
-                                         f.name + "'",
-                       "give it a value with its unit, e.g. '" + missing->name + ": " +
-                           (units::si_name(missing->dim).empty() ? std::string("30 deg") : "2 " + units::si_name(missing->dim)) + "'");
-    if (all_values) {
-      auto v = numerics::evaluate(r.closed, env, 30);
-      if (!v)
-        throw SceneError(f.pos, "'" + f.name + "' has no real value (" + model::text(r.closed) + ")",
-                         "check the states and parameters: this result is undefined or complex for them");
-      r.si = v;
-    }
-    sol.results.push_back(r);
   }
+
+  /// The branch the results' root choices and continuity select; each analysis checks it.
+  void choose(const std::vector<solve::Branch>& branches) {
+    sol_.branch = branches.size() == 1 ? branches.front() : Selector{m, env, given}.pick(branches);
+    for (auto& a : m.analyses) a.type->check(m, a, given, sol_.branch, env);
+  }
+
+  /// One named result: its closed form (every unknown in it determined) and value.
+  Result result(const model::Find& f) const {
+    const Solution& sol = sol_;
+  Result r;
+  r.name = f.name;
+  r.pos = f.pos;
+  r.dim = f.dim;
+  ex c;
+  try {
+    c = f.value.subs(given).subs(sol.branch.sol);
+  } catch (const std::exception& err) {
+    throw SceneError(f.pos, "'" + f.name + "' is undefined at the states (" + model::math_fault(err) + ")",
+                     "check the value of '" + f.name + "' and the values given at its states");
+  }
+  for (auto& u : unknowns)
+    if (c.has(u)) {
+      std::size_t n = sol.equations.size();
+      // an impulse left free means the state values around it are missing, not the impulse
+      bool impulse = false;
+      for (auto& a : m.analyses)
+        for (auto& x : a.unknowns) impulse = impulse || x.is_equal(u);
+      // the state values that nothing fixed are what is missing
+      // the state values that were solved only in terms of the free impulse are what is missing
+      std::string missing;
+      if (impulse)
+        for (auto& x : unknowns) {
+          bool is_impulse = false;
+          for (auto& a : m.analyses)
+            for (auto& y : a.unknowns) is_impulse = is_impulse || y.is_equal(x);
+          auto it = sol.branch.sol.find(x);
+          if (!is_impulse && it != sol.branch.sol.end() && it->second.has(u))
+            missing += (missing.empty() ? "" : ", ") + model::text(x);
+        }
+      throw SceneError(f.pos, "'" + f.name + "' is not determined: " + model::text(u) + (impulse ? " (an impulse)" : "") +
+                                  " is unknown (the analyses give " + std::to_string(n) +
+                                  (n == 1 ? " equation" : " equations") + " for more unknowns)",
+                       impulse ? "give " + (missing.empty() ? std::string("the missing values at the states around that analysis") : missing) +
+                                     " (velocities before an impact, a time), or add an analysis"
+                               : "give " + model::text(u) + " at its state, or add an analysis or a 'where' condition that fixes it");
+    }
+  // a float in the result comes only from a numeric root: no closed form
+  r.closed_form = !has_float(c);
+  r.closed = model::factored(model::root_simplify(model::tidy(model::tidy_function_arguments(c))));
+  if (f.unit) {
+    r.unit = f.unit->text;
+    r.unit_factor = f.unit->factor;
+  } else {
+    r.unit = units::si_name(f.dim);
+  }
+  bool all_values = true;
+  const model::Parameter* missing = nullptr;
+  for (auto& p : m.params)
+    if (r.closed.has(p.sym) && !p.value) {
+      all_values = false;
+      if (!missing) missing = &p;
+    }
+  // a unit on the result, or a claimed number, asks for a number
+  bool number_asked = f.unit.has_value();
+  for (auto& x : m.expects) number_asked = number_asked || (x.name == f.name && x.value);
+  if (!all_values && number_asked)
+    throw SceneError(missing->pos, "parameter '" + missing->name + "' has no value, but a number is asked for '" +
+                                       f.name + "'",
+                     "give it a value with its unit, e.g. '" + missing->name + ": " +
+                         (units::si_name(missing->dim).empty() ? std::string("30 deg") : "2 " + units::si_name(missing->dim)) + "'");
+  if (all_values) {
+    auto v = numerics::evaluate(r.closed, env, 30);
+    if (!v)
+      throw SceneError(f.pos, "'" + f.name + "' has no real value (" + model::text(r.closed) + ")",
+                       "check the states and parameters: this result is undefined or complex for them");
+    r.si = v;
+  }
+    return r;
+  }
+};
+
+}  // namespace
+
+Solution solve_scene(const scene::SceneDef& def) {
+  Solution sol{Model::build(def), {}, {}, {}, {}, {}, {}, {}};
+  SceneSolver(sol).run();
   return sol;
 }
 

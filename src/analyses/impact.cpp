@@ -3,6 +3,7 @@
 // one impulsive reaction per constraint; restitution at each contact.
 #include "kinergy/effects/contact.hpp"
 #include "kinergy/emit/sections.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/problem.hpp"
 
 namespace kinergy::analyses {
@@ -72,6 +73,20 @@ public:
     for (auto* group : {&ib.positions, &ib.momentum, &ib.restitution})
       for (auto& e : *group) s.equations.push_back(e);
     return static_cast<int>(s.impacts.size()) - 1;
+  }
+
+  void check(const model::Model& m, const model::Analysis& a, const GiNaC::exmap& given, const solve::Branch& b,
+             const GiNaC::exmap& env) const override {
+    // a contact can only push: J ≥ 0 along its normal
+    for (int ci : a.contacts) {
+      const auto& e = effects::contact(m, ci);
+      ex J = a.contact_impulses.at(e.name).first.subs(given).subs(b.sol);
+      auto v = numerics::evaluate(J, env, 30);
+      if (v && v->is_negative())
+        throw SceneError(e.pos, "contact '" + e.name + "' would have to pull (impulse " + numerics::format(*v, 6) +
+                                    " N*s along its normal) in the impact " + m.states[a.from].name + " -> " + m.states[a.to].name,
+                         "check the normal: it points from the first party (" + e.a.text + ") into the second (" + e.b.text + ")");
+    }
   }
 
   void derive(emit::Sections& w, int k, const model::Analysis& a, const Solution& s, int part) const override {

@@ -15,6 +15,9 @@ struct Solution;
 namespace kinergy::emit {
 class Sections;
 }
+namespace kinergy::solve {
+struct Branch;
+}
 
 namespace kinergy::model {
 
@@ -36,6 +39,10 @@ public:
   virtual bool impulsive() const { return true; }
   /// Add its equations to the solution; returns the index of its balance among those of its kind.
   virtual int equations(const Model& m, const Analysis& a, const principles::Knowledge& k, Solution& s) const = 0;
+  /// Check the chosen solution (`given`: the states' given values; `env`: the parameters').
+  /// @throws SceneError when it is physically impossible for this analysis.
+  virtual void check(const Model&, const Analysis&, const GiNaC::exmap& /*given*/, const solve::Branch&,
+                     const GiNaC::exmap& /*env*/) const {}
   /// Write its section of the derivation (`k`: its number; `part`: what `equations` returned).
   virtual void derive(emit::Sections& w, int k, const Analysis& a, const Solution& s, int part) const = 0;
 };
