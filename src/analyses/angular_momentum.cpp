@@ -1,15 +1,14 @@
 // Angular impulse–momentum about a point P over a duration: Σ H_P₂ = Σ H_P₁ + Σ ∫M_P dt, about a
 // fixed point or the mass centre of the one body analysed; conservation when claimed.
-#include "kinergy/emit/sections.hpp"
-#include "kinergy/problem.hpp"
+#include "common.hpp"
 
 namespace kinergy::analyses {
 
 namespace {
 
-class AngularMomentum : public model::AnalysisKind {
+class AngularMomentum : public Balanced<principles::MomentumBalance, &Solution::momenta, principles::angular_momentum> {
 public:
-  AngularMomentum() : AnalysisKind("angular_momentum") {}
+  AngularMomentum() : Balanced("angular_momentum") {}
 
   std::vector<std::string> keys() const override { return {"bodies", "about", "conserved"}; }
 
@@ -36,23 +35,10 @@ public:
   }
 
   bool takes_reactions() const override { return true; }
-
-  int equations(const model::Model& m, const model::Analysis& a, const principles::Knowledge& k, Solution& s) const override {
-    s.momenta.push_back(principles::angular_momentum(m, a, k));
-    for (auto& c : s.momenta.back().components) s.equations.push_back(c.equation);
-    return static_cast<int>(s.momenta.size()) - 1;
-  }
-
-  void derive(emit::Sections& w, int k, const model::Analysis& a, const Solution& s, int part) const override {
-    w.momentum(k, a, s.momenta[static_cast<std::size_t>(part)]);
-  }
 };
 
 }  // namespace
 
-const model::AnalysisKind& angular_momentum() {
-  static const AngularMomentum kind;
-  return kind;
-}
+const model::AnalysisKind& angular_momentum() { return instance<AngularMomentum>(); }
 
 }  // namespace kinergy::analyses

@@ -2,9 +2,8 @@
 // coordinate with the contact impulses (J along n, Jt along the tangent when rough), given blows and
 // one impulsive reaction per constraint; restitution at each contact.
 #include "kinergy/effects/contact.hpp"
-#include "kinergy/emit/sections.hpp"
 #include "kinergy/numeric/evaluate.hpp"
-#include "kinergy/problem.hpp"
+#include "common.hpp"
 
 namespace kinergy::analyses {
 
@@ -13,9 +12,9 @@ namespace {
 using GiNaC::ex;
 using units::Dimension;
 
-class Impact : public model::AnalysisKind {
+class Impact : public Balanced<principles::ImpactBalance, &Solution::impacts, principles::impact> {
 public:
-  Impact() : AnalysisKind("impact") {}
+  Impact() : Balanced("impact") {}
 
   std::vector<std::string> keys() const override { return {"contact", "contacts"}; }
 
@@ -67,14 +66,6 @@ public:
     }
   }
 
-  int equations(const model::Model& m, const model::Analysis& a, const principles::Knowledge& k, Solution& s) const override {
-    s.impacts.push_back(principles::impact(m, a, k));
-    const auto& ib = s.impacts.back();
-    for (auto* group : {&ib.positions, &ib.momentum, &ib.restitution})
-      for (auto& e : *group) s.equations.push_back(e);
-    return static_cast<int>(s.impacts.size()) - 1;
-  }
-
   void check(const model::Model& m, const model::Analysis& a, const GiNaC::exmap& given, const solve::Branch& b,
              const GiNaC::exmap& env) const override {
     // a contact can only push: J ≥ 0 along its normal
@@ -88,17 +79,10 @@ public:
                          "check the normal: it points from the first party (" + e.a.text + ") into the second (" + e.b.text + ")");
     }
   }
-
-  void derive(emit::Sections& w, int k, const model::Analysis& a, const Solution& s, int part) const override {
-    w.impact(k, a, s.impacts[static_cast<std::size_t>(part)]);
-  }
 };
 
 }  // namespace
 
-const model::AnalysisKind& impact() {
-  static const Impact kind;
-  return kind;
-}
+const model::AnalysisKind& impact() { return instance<Impact>(); }
 
 }  // namespace kinergy::analyses

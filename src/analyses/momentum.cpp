@@ -1,8 +1,7 @@
 // Linear impulse–momentum of a body set over a duration: Σ m v̄₂·n = Σ m v̄₁·n + Σ ∫F·n dt, along
 // x and y, or along one direction (`along`); conservation when claimed (`conserved: true`).
-#include "kinergy/emit/sections.hpp"
 #include "kinergy/model/simplify.hpp"
-#include "kinergy/problem.hpp"
+#include "common.hpp"
 
 namespace kinergy::analyses {
 
@@ -10,9 +9,9 @@ namespace {
 
 using GiNaC::ex;
 
-class Momentum : public model::AnalysisKind {
+class Momentum : public Balanced<principles::MomentumBalance, &Solution::momenta, principles::linear_momentum> {
 public:
-  Momentum() : AnalysisKind("momentum") {}
+  Momentum() : Balanced("momentum") {}
 
   std::vector<std::string> keys() const override { return {"bodies", "along", "conserved"}; }
 
@@ -36,23 +35,10 @@ public:
   }
 
   bool takes_reactions() const override { return true; }
-
-  int equations(const model::Model& m, const model::Analysis& a, const principles::Knowledge& k, Solution& s) const override {
-    s.momenta.push_back(principles::linear_momentum(m, a, k));
-    for (auto& c : s.momenta.back().components) s.equations.push_back(c.equation);
-    return static_cast<int>(s.momenta.size()) - 1;
-  }
-
-  void derive(emit::Sections& w, int k, const model::Analysis& a, const Solution& s, int part) const override {
-    w.momentum(k, a, s.momenta[static_cast<std::size_t>(part)]);
-  }
 };
 
 }  // namespace
 
-const model::AnalysisKind& momentum() {
-  static const Momentum kind;
-  return kind;
-}
+const model::AnalysisKind& momentum() { return instance<Momentum>(); }
 
 }  // namespace kinergy::analyses

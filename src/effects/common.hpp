@@ -52,4 +52,12 @@ void refuse_elastic_push(const Effect& e, bool in_a, bool in_b);
 /// Is body b (≥ 0) in the analysis' set?
 inline bool acts_on(const Analysis& a, int b) { return b >= 0 && principles::in_set(a.bodies, b); }
 
+/// An effect on one body (a couple, a friction couple, a drive).
+class BodyEffect : public Effect {
+public:
+  int body = -1;
+  /// Does it act on the bodies of analysis a?
+  bool on(const Analysis& a) const { return acts_on(a, body); }
+};
+
 }  // namespace kinergy::effects

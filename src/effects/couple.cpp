@@ -5,9 +5,8 @@ namespace kinergy::effects {
 
 namespace {
 
-class Couple : public Effect {
+class Couple : public BodyEffect {
 public:
-  int body = -1;
   ex M = 0;
 
   // Q_i = M ∂φ/∂q_i
@@ -20,7 +19,7 @@ public:
   }
 
   void pushes(const Model&, const Analysis& a, const Knowledge&, std::vector<Push>& out) const override {
-    if (!acts_on(a, body)) return;
+    if (!on(a)) return;
     Push p;
     p.M = M;
     out.push_back(p);

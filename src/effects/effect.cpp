@@ -43,7 +43,12 @@ ex Effect::impact_loss(const Model&, int) const {
   throw InputError("'loss' takes a contact and the two states of its impact", "write loss(hit, before, after)");
 }
 
-void Effect::motion(const Model&, int, simulate::Equations&) const {
+void Effect::motion(const Model& m, int self, simulate::Equations& eq) const {
+  // a potential's generalized force Q_i = −∂V/∂q_i
+  if (conservative()) {
+    eq.forces.push_back(simulate::force_term(m, *this, self));
+    return;
+  }
   throw SceneError(pos, "effect '" + name + "' of kind '" + kind + "' cannot be simulated",
                    "remove it from the scene to simulate the rest");
 }

@@ -71,13 +71,13 @@ std::shared_ptr<Effect> read_friction(EffectReader& r, const EffectDef& ed) {
   auto e = make<Friction>(ed);
   r.only(ed, {"mu", "normal", "at", "direction"});
   e->a = r.acting_point(ed);
+  e->direction = r.direction_of(ed);
   e->mu = r.quantity(r.text_of(r.option(ed, "mu", "mu_k"), "mu", "mu_k"), false, Dimension{}, "mu",
                      "a friction coefficient is a pure number");
   r.positive(e->mu, r.option(ed, "mu", "mu").pos, "the friction coefficient", true);
   e->normal = r.quantity(r.text_of(r.option(ed, "normal", "m*g"), "normal", "m*g"), false, force_dim(), "normal",
                          "a normal force is in N (or lb)");
   r.positive(e->normal, r.option(ed, "normal", "N").pos, "the normal force", true);
-  e->direction = r.direction_of(ed);
   return e;
 }
 

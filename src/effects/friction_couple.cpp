@@ -5,9 +5,8 @@ namespace kinergy::effects {
 
 namespace {
 
-class FrictionCouple : public Effect {
+class FrictionCouple : public BodyEffect {
 public:
-  int body = -1;
   ex M = 0;
   std::optional<int> direction;  ///< the sign of the rotation it opposes, if declared
 
@@ -23,7 +22,7 @@ public:
   }
 
   void pushes(const Model& m, const Analysis& a, const Knowledge& k, std::vector<Push>& out) const override {
-    if (!acts_on(a, body)) return;
+    if (!on(a)) return;
     Push p;
     p.M = -M * principles::motion_direction(m, *this, direction, m.omega(body), a, k, "rotation");
     out.push_back(p);

@@ -41,10 +41,6 @@ public:
     }
     return force_impulse(m, *this, Fx, Fy, a);
   }
-
-  void motion(const Model& m, int self, simulate::Equations& eq) const override {
-    eq.forces.push_back(simulate::force_term(m, *this, self));  // Q_i = −∂V/∂q_i
-  }
 };
 
 }  // namespace

@@ -5,9 +5,8 @@ namespace kinergy::effects {
 
 namespace {
 
-class Power : public Effect {
+class Power : public BodyEffect {
 public:
-  int body = -1;
   ex P = 0;
 
   ex power(const Model&) const override { return P; }
@@ -22,7 +21,7 @@ public:
   }
 
   void pushes(const Model&, const Analysis& a, const Knowledge&, std::vector<Push>&) const override {
-    if (!acts_on(a, body)) return;
+    if (!on(a)) return;
     throw SceneError(pos, "a power drive '" + name + "' has no impulse of its own",
                      "give the drive as a couple or a force, or use an energy analysis");
   }

@@ -24,10 +24,6 @@ public:
   void pushes(const Model&, const Analysis& an, const Knowledge&, std::vector<Push>&) const override {
     refuse_elastic_push(*this, acts_on(an, a.body), acts_on(an, b.body));
   }
-
-  void motion(const Model& m, int self, simulate::Equations& eq) const override {
-    eq.forces.push_back(simulate::force_term(m, *this, self));  // Q_i = −∂V/∂q_i
-  }
 };
 
 }  // namespace

@@ -389,7 +389,7 @@ private:
 
   // --- energy ---------------------------------------------------------------------------------
 
-  void energy(int k, const model::Analysis& a, const principles::EnergyBalance& b) override {
+  void section(int k, const model::Analysis& a, const principles::EnergyBalance& b) override {
     const std::string S1 = state_name(a.from), S2 = state_name(a.to);
     section(std::string(b.conservative ? "Conservation of energy" : "Work and energy") + ", states " + text_interval(S1, S2));
     Tags tags{"E" + std::to_string(k)};
@@ -467,7 +467,7 @@ private:
     return tex_name(p);
   }
 
-  void momentum(int k, const model::Analysis& a, const principles::MomentumBalance& mb) override {
+  void section(int k, const model::Analysis& a, const principles::MomentumBalance& mb) override {
     const std::string S1 = state_name(a.from), S2 = state_name(a.to);
     bool angular = mb.angular;
     std::string bodies;
@@ -559,7 +559,7 @@ private:
 
   // --- impact ---------------------------------------------------------------------------------
 
-  void impact(int k, const model::Analysis& a, const principles::ImpactBalance& ib) override {
+  void section(int k, const model::Analysis& a, const principles::ImpactBalance& ib) override {
     const std::string SB = state_name(a.from), SA = state_name(a.to);
     section("Impact, " + text_interval(SB, SA));
     Tags tags{"I" + std::to_string(k)};

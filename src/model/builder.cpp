@@ -22,6 +22,16 @@ using scene::Node;
 using scene::Text;
 
 /// The unit to write for a dimension, in words for a fix ("m/s"; angles: "rad or deg").
+/// A unit or a quantity parsed from a text, an error placed at the text.
+template <class F>
+static auto read_at(const Text& t, F parse) {
+  try {
+    return parse(t.s);
+  } catch (const InputError& e) {
+    rethrow_at(t.pos, e);
+  }
+}
+
 static std::string unit_words(const Dimension& d) {
   std::string n = units::si_name(d);
   return n.empty() ? std::string("rad or deg (or a pure number)") : n;
@@ -55,16 +65,11 @@ public:
     m_.file = d_.file;
     m_.title = d_.title;
     m_.description = d_.description;
-    parameters();
-    coordinates();
-    fixed_points();
-    bodies();
-    constraints();
-    effects();
-    states();
-    analyses();
-    finds();
-    expects();
+    // each part of the scene in the order later parts refer to earlier ones
+    for (auto part : {&Builder::parameters, &Builder::coordinates, &Builder::fixed_points, &Builder::bodies,
+                      &Builder::constraints, &Builder::effects, &Builder::states, &Builder::analyses, &Builder::finds,
+                      &Builder::expects})
+      (this->*part)();
     return std::move(m_);
   }
 
@@ -181,12 +186,7 @@ private:
   void parameters() {
     for (auto& p : d_.parameters) {
       reserve(p.name, p.pos, "parameter");
-      units::Quantity q;
-      try {
-        q = units::parse_quantity(p.value.s);
-      } catch (const InputError& e) {
-        rethrow_at(p.value.pos, e);
-      }
+      units::Quantity q = read_at(p.value, units::parse_quantity);
       Parameter par;
       par.name = p.name;
       par.pos = p.pos;
@@ -206,12 +206,7 @@ private:
     for (auto& c : d_.coordinates) {
       reserve(c.name, c.pos, "coordinate");
       reserve(c.name + "_dot", c.pos, "rate");
-      units::Unit u;
-      try {
-        u = units::parse_unit(c.unit.s);
-      } catch (const InputError& e) {
-        rethrow_at(c.unit.pos, e);
-      }
+      units::Unit u = read_at(c.unit, units::parse_unit);
       if (!u.dim.dimensionless() && u.dim != Dimension::length())
         throw SceneError(c.unit.pos, "coordinate '" + c.name + "' has unit '" + c.unit.s +
                                          "'; a coordinate is a length or an angle",
@@ -374,9 +369,7 @@ private:
       throw SceneError(n.pos, "'" + key + "' must name a body, not " + n.kind_name(), "write the body's name");
     int b = m_.body_index(n.scalar);
     if (b < 0) {
-      std::vector<std::string> names;
-      for (auto& x : m_.bodies) names.push_back(x.name);
-      std::string near = scene::closest(n.scalar, names);
+      std::string near = nearest(n.scalar, m_.bodies);
       throw SceneError(n.pos, "no body named '" + n.scalar + "'",
                        near.empty() ? "name a body of the scene" : "did you mean '" + near + "'?");
     }
@@ -527,9 +520,7 @@ private:
     if (!n->is_scalar()) throw SceneError(n->pos, "'" + key + "' must name a state", "write '" + key + ": 1'");
     int i = m_.state_index(n->scalar);
     if (i < 0) {
-      std::vector<std::string> names;
-      for (auto& st : m_.states) names.push_back(st.name);
-      std::string near = scene::closest(n->scalar, names);
+      std::string near = nearest(n->scalar, m_.states);
       throw SceneError(n->pos, "no state named '" + n->scalar + "'",
                        near.empty() ? "define it under 'states' (the states are " + state_list(m_) + ")"
                                     : "did you mean '" + near + "'?");
@@ -668,12 +659,7 @@ private:
       f.dim = dim(f.value, fd.value.pos, fd.name);
       if (fd.root) f.root = root_spec(*fd.root);
       if (fd.unit) {
-        units::Unit u;
-        try {
-          u = units::parse_unit(fd.unit->s);
-        } catch (const InputError& e) {
-          rethrow_at(fd.unit->pos, e);
-        }
+        units::Unit u = read_at(*fd.unit, units::parse_unit);
         if (f.value.is_zero()) f.dim = u.dim;  // an exact 0 has every dimension: take the unit's
         if (u.dim != f.dim)
           throw SceneError(fd.unit->pos, "the unit '" + u.text + "'" +
@@ -709,12 +695,7 @@ private:
                            "check the claimed formula");
       }
       if (xd.value) {
-        units::Quantity q;
-        try {
-          q = units::parse_quantity(xd.value->s);
-        } catch (const InputError& e) {
-          rethrow_at(xd.value->pos, e);
-        }
+        units::Quantity q = read_at(*xd.value, units::parse_quantity);
         if (!q.has_number)
           throw SceneError(xd.value->pos, "the claimed value has no number", "write e.g. 'value: 3.50 rad/s'");
         if (q.unit.dim != it->dim)

@@ -12,6 +12,14 @@ namespace kinergy::model {
 using namespace GiNaC;
 
 /// The list of a model's states, for a fix.
+/// The name among `items` (each with a `name`) nearest to n, or "" when none is near.
+template <class C>
+std::string nearest(const std::string& n, const C& items) {
+  std::vector<std::string> names;
+  for (auto& x : items) names.push_back(x.name);
+  return scene::closest(n, names);
+}
+
 inline std::string state_list(const Model& m) {
   std::string s;
   for (auto& st : m.states) s += (s.empty() ? "" : ", ") + st.name;
@@ -72,9 +80,7 @@ public:
     auto body = [&](const std::string& n) {
       int b = m_.body_index(n);
       if (b < 0) {
-        std::vector<std::string> names;
-        for (auto& x : m_.bodies) names.push_back(x.name);
-        std::string near = scene::closest(n, names);
+        std::string near = nearest(n, m_.bodies);
         throw InputError("no body named '" + n + "'",
                          near.empty() ? "name a body of the scene" : "did you mean '" + near + "'?");
       }
@@ -148,9 +154,7 @@ public:
                        "remove '@" + s + "'");
     int i = m_.state_index(s);
     if (i < 0) {
-      std::vector<std::string> names;
-      for (auto& st : m_.states) names.push_back(st.name);
-      std::string near = scene::closest(s, names);
+      std::string near = nearest(s, m_.states);
       throw InputError("no state named '" + s + "'",
                        near.empty() ? "define it under 'states' (the states are " + state_list(m_) + ")"
                                     : "did you mean '@" + near + "'?");

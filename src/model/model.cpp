@@ -279,9 +279,7 @@ PointRef Model::point(const std::string& text) const {
   std::string bn = text.substr(0, dot), pn = text.substr(dot + 1);
   int b = body_index(bn);
   if (b < 0) {
-    std::vector<std::string> names;
-    for (auto& b2 : bodies) names.push_back(b2.name);
-    std::string near = scene::closest(bn, names);
+    std::string near = nearest(bn, bodies);
     throw InputError("no body named '" + bn + "'",
                      near.empty() ? "define it under 'bodies'" : "did you mean '" + near + "'?");
   }

@@ -9,9 +9,9 @@ namespace kinergy::emit {
 class Sections {
 public:
   virtual ~Sections() = default;
-  virtual void energy(int k, const model::Analysis& a, const principles::EnergyBalance& b) = 0;
-  virtual void momentum(int k, const model::Analysis& a, const principles::MomentumBalance& mb) = 0;
-  virtual void impact(int k, const model::Analysis& a, const principles::ImpactBalance& ib) = 0;
+  virtual void section(int k, const model::Analysis& a, const principles::EnergyBalance& b) = 0;
+  virtual void section(int k, const model::Analysis& a, const principles::MomentumBalance& mb) = 0;
+  virtual void section(int k, const model::Analysis& a, const principles::ImpactBalance& ib) = 0;
 };
 
 }  // namespace kinergy::emit

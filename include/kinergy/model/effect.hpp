@@ -131,8 +131,8 @@ public:
   virtual ex impact_loss(const Model& m, int ai) const;
 
   // --- simulation ---
-  /// Add this effect's terms to the equations of motion (`self`: its index).
-  /// @throws SceneError when it cannot be simulated.
+  /// Add this effect's terms to the equations of motion (`self`: its index); by default a
+  /// conservative effect's Q_i = −∂V/∂q_i. @throws SceneError when it cannot be simulated.
   virtual void motion(const Model& m, int self, simulate::Equations& eq) const;
   /// Why a simulation cannot start at these values of q, q̇ (parameters included), or "".
   virtual std::string start_problem(const Model&, const GiNaC::exmap& /*at*/) const { return ""; }
