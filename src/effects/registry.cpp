@@ -16,7 +16,8 @@
   X(power)                      \
   X(pin)                        \
   X(contact)                    \
-  X(impulse)
+  X(impulse)                    \
+  X(cord_pull)
 
 namespace kinergy::effects {
 #define KINERGY_DECLARE(k) std::shared_ptr<Effect> read_##k(EffectReader&, const EffectDef&);

@@ -1,0 +1,48 @@
+// A cord pulled with a constant force P: from point A it runs straight to point B (a small
+// guide or pulley, or a point of another body) and pulls A toward B (and B toward A). The cord's
+// length between them is L = |r_A − r_B|, and the pull does the work U = P (L₁ − L₂): it is
+// conservative, V = P L.
+#include "common.hpp"
+
+namespace kinergy::effects {
+
+namespace {
+
+class CordPull : public Effect {
+public:
+  PointRef a, b;
+  ex P = 0;
+
+  bool conservative() const override { return true; }
+
+  ex potential(const Model& m) const override {
+    // V = P |r_A − r_B|  (the work of the pull is −ΔV = P (L₁ − L₂))
+    auto [xa, ya] = m.position(a);
+    auto [xb, yb] = m.position(b);
+    return P * m.spring_length(model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2)));
+  }
+
+  void pushes(const Model&, const Analysis& an, const Knowledge&, std::vector<Push>&) const override {
+    refuse_elastic_push(*this, acts_on(an, a.body), acts_on(an, b.body));
+  }
+};
+
+}  // namespace
+
+std::shared_ptr<Effect> read_cord_pull(EffectReader& r, const EffectDef& ed) {
+  auto e = make<CordPull>(ed);
+  r.only(ed, {"P"});
+  if (!ed.arg.is_list() || ed.arg.items.size() != 2)
+    throw SceneError(ed.arg.pos, "a cord pull runs between two points", "write 'cord_pull: [collar, D]' (the point pulled, then the guide)");
+  e->a = r.point_ref(ed.arg.items[0], "cord_pull");
+  e->b = r.point_ref(ed.arg.items[1], "cord_pull");
+  if (e->a.body < 0 && e->b.body < 0)
+    throw SceneError(ed.arg.pos, "cord pull '" + ed.name + "' runs between two fixed points; it moves nothing",
+                     "make the first point a body point, e.g. 'cord_pull: [collar, D]'");
+  const scene::Node& pn = r.option(ed, "P", "P0");
+  e->P = r.quantity(r.text_of(pn, "P", "P0"), false, force_dim(), "P", "a pull is a force, in N (or lb)");
+  r.positive(e->P, pn.pos, "the pull of the cord");
+  return e;
+}
+
+}  // namespace kinergy::effects
