@@ -47,6 +47,8 @@ public:
                          near.empty() ? "define it under effects: 'hit: {contact: [A, B], normal: [nx, ny], e: e}'"
                                       : "did you mean '" + near + "'?");
       }
+      if (std::find(a.contacts.begin(), a.contacts.end(), ei) != a.contacts.end())
+        throw SceneError(n->pos, "contact '" + n->scalar + "' is named twice in this impact", "name each contact once");
       a.contacts.push_back(ei);
       const effects::Contact& e = effects::contact(m, ei);
       // unknown impulses: J along n (and Jt along the tangent when rough)

@@ -49,6 +49,15 @@ void refuse_elastic_push(const Effect& e, bool in_a, bool in_b);
 /// A viscous damper's work depends on the speeds all along the motion: refused.
 [[noreturn]] void refuse_speed_dependent_work(const Model& m, const Effect& e, int s1, int s2);
 
+/// The option `key` as a quantity of dimension `d` that must be zero or positive (`what` names it).
+inline ex non_negative(EffectReader& r, const EffectDef& ed, const std::string& key, const std::string& example,
+                       const Dimension& d, const std::string& fix, const std::string& what) {
+  const scene::Node& n = r.option(ed, key, example);
+  ex v = r.quantity(r.text_of(n, key, example), false, d, key, fix);
+  r.positive(v, n.pos, what, true);
+  return v;
+}
+
 /// Is body b (≥ 0) in the analysis' set?
 inline bool acts_on(const Analysis& a, int b) { return b >= 0 && principles::in_set(a.bodies, b); }
 

@@ -71,13 +71,9 @@ std::shared_ptr<Effect> read_friction(EffectReader& r, const EffectDef& ed) {
   auto e = make<Friction>(ed);
   r.only(ed, {"mu", "normal", "at", "direction"});
   e->a = r.acting_point(ed);
+  e->mu = non_negative(r, ed, "mu", "mu_k", Dimension{}, "a friction coefficient is a pure number", "the friction coefficient");
+  e->normal = non_negative(r, ed, "normal", "m*g", force_dim(), "a normal force is in N (or lb)", "the normal force");
   e->direction = r.direction_of(ed);
-  e->mu = r.quantity(r.text_of(r.option(ed, "mu", "mu_k"), "mu", "mu_k"), false, Dimension{}, "mu",
-                     "a friction coefficient is a pure number");
-  r.positive(e->mu, r.option(ed, "mu", "mu").pos, "the friction coefficient", true);
-  e->normal = r.quantity(r.text_of(r.option(ed, "normal", "m*g"), "normal", "m*g"), false, force_dim(), "normal",
-                         "a normal force is in N (or lb)");
-  r.positive(e->normal, r.option(ed, "normal", "N").pos, "the normal force", true);
   return e;
 }
 

@@ -39,9 +39,7 @@ std::shared_ptr<Effect> read_friction_couple(EffectReader& r, const EffectDef& e
   auto e = make<FrictionCouple>(ed);
   r.only(ed, {"M", "direction"});
   e->body = r.body_ref(ed.arg, ed.kind);
-  e->M = r.quantity(r.text_of(r.option(ed, "M", "M0"), "M", "M0"), false, energy_dim(), "M",
-                    "a couple is in N·m (or lb·ft)");
-  r.positive(e->M, r.option(ed, "M", "M").pos, "a friction couple", true);
+  e->M = non_negative(r, ed, "M", "M0", energy_dim(), "a couple is in N·m (or lb·ft)", "a friction couple");
   e->direction = r.direction_of(ed);
   return e;
 }

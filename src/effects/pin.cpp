@@ -16,6 +16,8 @@ public:
 
   bool conservative() const override { return true; }  // V = 0
 
+  bool holds(int body) const override { return a.body == body || b.body == body; }
+
   bool reaction_across(const std::vector<int>& set) const override {
     auto in = [&](int x) { return x >= 0 && principles::in_set(set, x); };
     return in(a.body) != in(b.body);
@@ -58,7 +60,7 @@ public:
                            "describe the body's motion with coordinates that need no constraint");
     for (std::size_t j = 0; j < m.effects.size(); ++j) {
       const Effect& o = m.effects[j];
-      if (static_cast<int>(j) != self && o.reaction_across({bi}))
+      if (static_cast<int>(j) != self && o.holds(bi))
         throw InputError("body '" + B.name + "' has two pins, '" + name + "' and '" + o.name +
                              "'; their impulses cannot be told apart",
                          "ask for the impulse of a pin that holds a body alone");

@@ -452,6 +452,10 @@ TEST_CASE("impact analyses: no contact, not a contact, unknown keys", "[errors][
     auto t2 = bar(kImpact, "{from: before, to: after, contacts: [hit, pin]}");
     expect_error(t2, at(t2, "pin]"), "'pin' is not a contact effect");
   }
+  SECTION("naming a contact twice") {
+    auto t = bar(kImpact, "{from: before, to: after, contact: hit, contacts: [hit]}");
+    expect_error(t, at(t, "hit]"), "contact 'hit' is named twice in this impact", "name each contact once");
+  }
   SECTION("naming an effect that does not exist, with the nearest contact") {
     auto t = bar(kImpact, "{from: before, to: after, contact: hti}");
     expect_error(t, at(t, "hti"), "'hti' is not a contact effect", "did you mean 'hit'?");

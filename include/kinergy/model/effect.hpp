@@ -115,6 +115,8 @@ public:
                       std::vector<principles::Push>& out) const;
   /// Does this effect join the body set to the rest with an unknown reaction (a pin)?
   virtual bool reaction_across(const std::vector<int>& /*bodies*/) const { return false; }
+  /// Is it a support holding body b with an unknown reaction (a pin at one of b's points)?
+  virtual bool holds(int /*b*/) const { return false; }
   /// Impulse (x, y) over analysis `ai` (`impulse_x`, `impulse_y`); `self` is this effect's index.
   /// @throws InputError when it has none there.
   virtual std::pair<ex, ex> impulse(const Model& m, int self, int ai) const;
