@@ -49,6 +49,14 @@ void refuse_elastic_push(const Effect& e, bool in_a, bool in_b);
 /// A viscous damper's work depends on the speeds all along the motion: refused.
 [[noreturn]] void refuse_speed_dependent_work(const Model& m, const Effect& e, int s1, int s2);
 
+/// `KIND: [A, B]`: the two points an element joins (refused with `problem` and `fix` otherwise).
+inline std::pair<PointRef, PointRef> two_points(EffectReader& r, const EffectDef& ed, const std::string& problem,
+                                                const std::string& fix) {
+  if (!ed.arg.is_list() || ed.arg.items.size() != 2) throw SceneError(ed.arg.pos, problem, fix);
+  PointRef a = r.point_ref(ed.arg.items[0], ed.kind);
+  return {a, r.point_ref(ed.arg.items[1], ed.kind)};
+}
+
 /// The option `key` as a quantity of dimension `d` that must be zero or positive (`what` names it).
 inline ex non_negative(EffectReader& r, const EffectDef& ed, const std::string& key, const std::string& example,
                        const Dimension& d, const std::string& fix, const std::string& what) {

@@ -32,10 +32,8 @@ public:
 std::shared_ptr<Effect> read_cord_pull(EffectReader& r, const EffectDef& ed) {
   auto e = make<CordPull>(ed);
   r.only(ed, {"P"});
-  if (!ed.arg.is_list() || ed.arg.items.size() != 2)
-    throw SceneError(ed.arg.pos, "a cord pull runs between two points", "write 'cord_pull: [collar, D]' (the point pulled, then the guide)");
-  e->a = r.point_ref(ed.arg.items[0], "cord_pull");
-  e->b = r.point_ref(ed.arg.items[1], "cord_pull");
+  std::tie(e->a, e->b) = two_points(r, ed, "a cord pull runs between two points",
+                                     "write 'cord_pull: [collar, D]' (the point pulled, then the guide)");
   if (e->a.body < 0 && e->b.body < 0)
     throw SceneError(ed.arg.pos, "cord pull '" + ed.name + "' runs between two fixed points; it moves nothing",
                      "make the first point a body point, e.g. 'cord_pull: [collar, D]'");

@@ -50,10 +50,7 @@ public:
 std::shared_ptr<Effect> read_damper(EffectReader& r, const EffectDef& ed) {
   auto e = make<Damper>(ed);
   r.only(ed, {"c"});
-  if (!ed.arg.is_list() || ed.arg.items.size() != 2)
-    throw SceneError(ed.arg.pos, "a damper joins two points", "write 'damper: [A, bar.B]'");
-  e->a = r.point_ref(ed.arg.items[0], "damper");
-  e->b = r.point_ref(ed.arg.items[1], "damper");
+  std::tie(e->a, e->b) = two_points(r, ed, "a damper joins two points", "write 'damper: [A, bar.B]'");
   e->c = r.quantity(r.text_of(r.option(ed, "c", "c"), "c", "c"), false,
                     force_dim() * Dimension::time() / Dimension::length(), "c",
                     "a damping coefficient is in N*s/m (or lb*s/ft)");

@@ -115,10 +115,7 @@ void check_pin(const Model& m, const Pin& e, const SourcePos& pos) {
 std::shared_ptr<Effect> read_pin(EffectReader& r, const EffectDef& ed) {
   auto e = make<Pin>(ed);
   r.only(ed, {});
-  if (!ed.arg.is_list() || ed.arg.items.size() != 2)
-    throw SceneError(ed.arg.pos, "a pin joins two points", "write 'pin: [O, bar.O]'");
-  e->a = r.point_ref(ed.arg.items[0], "pin");
-  e->b = r.point_ref(ed.arg.items[1], "pin");
+  std::tie(e->a, e->b) = two_points(r, ed, "a pin joins two points", "write 'pin: [O, bar.O]'");
   check_pin(r.model(), *e, ed.arg.pos);
   return e;
 }

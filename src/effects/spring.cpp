@@ -31,10 +31,7 @@ public:
 std::shared_ptr<Effect> read_spring(EffectReader& r, const EffectDef& ed) {
   auto e = make<Spring>(ed);
   r.only(ed, {"k", "free_length"});
-  if (!ed.arg.is_list() || ed.arg.items.size() != 2)
-    throw SceneError(ed.arg.pos, "a spring joins two points", "write 'spring: [A, bar.B]'");
-  e->a = r.point_ref(ed.arg.items[0], "spring");
-  e->b = r.point_ref(ed.arg.items[1], "spring");
+  std::tie(e->a, e->b) = two_points(r, ed, "a spring joins two points", "write 'spring: [A, bar.B]'");
   const scene::Node& kn = r.option(ed, "k", "k");
   e->k = r.quantity(r.text_of(kn, "k", "k"), false, force_dim() / Dimension::length(), "k",
                     "a spring constant is in N/m (or lb/ft)");

@@ -10,29 +10,13 @@ using namespace kt_errors;
 
 namespace {
 
-// the collar of derivations/energy/collar_cord_pull.yaml
-const std::string kCollar = R"(title: collar pulled over a pulley
-parameters: {m: 3 kg, P: 60 N, b: 0.4 m, h: 0.9 m, d: 0.6 m, g: 9.81 m/s^2}
-points: {D: [b, h]}
-coordinates: {y: m}
-bodies:
-  collar: {mass: m, inertia: particle, position: [0, y]}
-effects:
-  gravity: {g: g}
-  pull: {cord_pull: [collar, D], P: P}
-states:
-  1: {y: 0, y_dot: 0}
-  2: {y: d}
-analyses:
-  - energy: {from: 1, to: 2}
-find:
-  v2: {value: y_dot@2, root: positive}
-)";
+// derivations/energy/collar_cord_pull.yaml: a collar on a vertical rod, the cord over a pulley D
+std::string collar() { return kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/collar_cord_pull.yaml"); }
 
 }  // namespace
 
 TEST_CASE("cord_pull: V = P L, its generalized force pulls toward the guide", "[effects][cord_pull]") {
-  auto m = kt::model_of(kCollar);
+  auto m = kt::model_of(collar());
   const auto& e = kt::effect(m, "pull");
   CHECK(e.conservative());
   GiNaC::exmap at = m.parameter_values();
@@ -49,7 +33,7 @@ TEST_CASE("cord_pull: V = P L, its generalized force pulls toward the guide", "[
 }
 
 TEST_CASE("cord_pull: the work-energy result matches the reference", "[effects][cord_pull]") {
-  kinergy::Solution s = kinergy::solve_scene(kinergy::scene::load_string(kCollar, "collar.yaml"));
+  kinergy::Solution s = kinergy::solve_scene(kinergy::scene::load_string(collar(), "collar.yaml"));
   auto env = s.model.numeric_environment();
   auto v = kt::result(s, "v2").value(env, 20);
   REQUIRE(v);
@@ -57,34 +41,27 @@ TEST_CASE("cord_pull: the work-energy result matches the reference", "[effects][
 }
 
 TEST_CASE("cord_pull: bad options are refused where they stand", "[effects][cord_pull][errors]") {
-  SECTION("one point") {
-    auto t = kt_errors::edit(kCollar, "{cord_pull: [collar, D], P: P}", "{cord_pull: collar, P: P}");
-    expect_error(t, at(t, "collar, P: P", 0), "a cord pull runs between two points", "cord_pull: [collar, D]");
-  }
-  SECTION("two fixed points") {
-    auto t = kt_errors::edit(kCollar, "points: {D: [b, h]}", "points: {D: [b, h], E: [0, 0]}");
-    t = kt_errors::edit(t, "[collar, D], P: P", "[E, D], P: P");
-    expect_error(t, at(t, "[E, D]"), "runs between two fixed points", "body point");
-  }
-  SECTION("no pull") {
-    auto t = kt_errors::edit(kCollar, "{cord_pull: [collar, D], P: P}", "{cord_pull: [collar, D]}");
-    expect_error(t, at(t, "pull: {"), "has no 'P'", "P: P0");
-  }
-  SECTION("a pull that is not a force") {
-    auto t = kt_errors::edit(kCollar, "[collar, D], P: P}", "[collar, D], P: m*b}");
-    expect_error(t, at(t, "m*b}"), "'P' is", "N (or lb)");
-  }
-  SECTION("a pull that is not positive") {
-    auto t = kt_errors::edit(kCollar, "P: 60 N", "P: -60 N");
-    expect_error(t, at(t, "-60 N"), "stands for the pull of the cord", "positive");
-  }
-  SECTION("an unknown key") {
-    auto t = kt_errors::edit(kCollar, "[collar, D], P: P}", "[collar, D], P: P, k: 3}");
-    expect_error(t, at(t, "k: 3"), "unknown key 'k' in cord_pull effect 'pull'", "use: P, cord_pull");
-  }
-  SECTION("its impulse over a duration has no closed form") {
-    auto t = kt_errors::edit(kCollar, "  - energy: {from: 1, to: 2}", "  - momentum: {from: 1, to: 2, along: y}");
-    t = kt_errors::edit(t, "  1: {y: 0, y_dot: 0}", "  1: {y: 0, y_dot: 0, t: 0}");
-    expect_error(t, at(t, "pull: {", 0), "the cord_pull 'pull' pushes with a force that changes with the motion", "energy analysis");
+  struct Case {
+    const char* what;
+    std::string from, to, needle, phrase, fix;
+  };
+  const std::vector<Case> cases = {
+      {"one point", "{cord_pull: [collar, D], P: P}", "{cord_pull: collar, P: P}", "collar, P: P",
+       "a cord pull runs between two points", "cord_pull: [collar, D]"},
+      {"two fixed points", "[collar, D], P: P", "[D, D], P: P", "[D, D]", "runs between two fixed points", "body point"},
+      {"no pull", "{cord_pull: [collar, D], P: P}", "{cord_pull: [collar, D]}", "pull: {cord", "has no 'P'", "P: P0"},
+      {"a pull that is not a force", "[collar, D], P: P}", "[collar, D], P: m*b}", "m*b}", "'P' is", "N (or lb)"},
+      {"a pull that is not positive", "P: 60 N", "P: -60 N", "-60 N", "stands for the pull of the cord", "positive"},
+      {"an unknown key", "[collar, D], P: P}", "[collar, D], P: P, k: 3}", "k: 3", "unknown key 'k' in cord_pull effect 'pull'",
+       "use: P, cord_pull"},
+      // its force turns with the motion, so its impulse over a duration has no closed form
+      {"a momentum analysis across it", "- energy: {from: 1, to: 2}", "- momentum: {from: 1, to: 2, along: y}", "pull: {cord",
+       "the cord_pull 'pull' pushes with a force that changes with the motion", "energy analysis"},
+  };
+  for (auto& c : cases) {
+    DYNAMIC_SECTION(c.what) {
+      auto t = kt_errors::edit(collar(), c.from, c.to);
+      expect_error(t, at(t, c.needle), c.phrase, c.fix);
+    }
   }
 }

@@ -5,10 +5,10 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <sstream>
 
+#include "../support/helpers.hpp"
 #include "kinergy/model/analysis.hpp"
 #include "kinergy/model/effect.hpp"
 #include "kinergy/model/inertia.hpp"
@@ -16,24 +16,13 @@
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
-}  // namespace
-
 TEST_CASE("no code in src/ compares a kind's name", "[kinds]") {
   // `kind == "…"`, `kind != "…"` (and the same of any `.kind` or `k` that holds a kind's name)
   const std::regex compare(R"((\bkind|\.kind)\s*[!=]=\s*")");
   std::vector<std::string> found;
   for (auto& e : fs::recursive_directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "src")) {
     if (!e.is_regular_file()) continue;
-    std::istringstream in(read(e.path()));
+    std::istringstream in(kt::read_file(e.path()));
     std::string line;
     for (int n = 1; std::getline(in, line); ++n)
       if (std::regex_search(line, compare))
@@ -53,7 +42,7 @@ TEST_CASE("the scene loader takes the effect kinds from the table", "[kinds]") {
 }
 
 TEST_CASE("every kind of the tables is documented in docs/scene-format.md", "[kinds]") {
-  const std::string doc = read(fs::path(KINERGY_SOURCE_DIR) / "docs" / "scene-format.md");
+  const std::string doc = kt::read_file(fs::path(KINERGY_SOURCE_DIR) / "docs" / "scene-format.md");
   for (auto& k : kinergy::model::effect_kinds()) {
     INFO("effect kind " << k.name);
     CHECK(doc.find("| " + k.name + " | `{") != std::string::npos);

@@ -32,13 +32,6 @@ std::vector<std::string> scenes() {
   return out;
 }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
 /// Where two texts first differ: line number and both lines.
 std::string first_difference(const std::string& a, const std::string& b) {
   std::istringstream x(a), y(b);
@@ -64,7 +57,7 @@ void compare(const std::string& scene, const std::string& args, const std::strin
   REQUIRE(status == 0);
   fs::path approved = fs::path(KINERGY_SOURCE_DIR) / fs::path(scene).replace_extension(ext);
   bool exists = fs::exists(approved);
-  std::string before = exists ? read(approved) : "";
+  std::string before = exists ? kt::read_file(approved) : "";
   if (exists && before == now) return;
   if (approving()) {
     std::ofstream(approved, std::ios::binary) << now;

@@ -22,6 +22,7 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/scene/scene.hpp"
+#include "../support/helpers.hpp"
 #include "../support/scene_errors.hpp"
 
 namespace fs = std::filesystem;
@@ -102,13 +103,6 @@ struct Run {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 /// Run `kinergy ARGS` with stdout and stderr captured.
 Run cli(const std::string& args) {
   static int n = 0;
@@ -118,8 +112,8 @@ Run cli(const std::string& args) {
   int rc = std::system(cmd.c_str());
   Run r;
   r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
+  r.out = kt::read_file(out);
+  r.err = kt::read_file(err);
   fs::remove(out);
   fs::remove(err);
   return r;

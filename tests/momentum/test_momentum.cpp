@@ -29,13 +29,6 @@ using GiNaC::numeric;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string impact_file(const std::string& name) {
   return std::string(KINERGY_SOURCE_DIR) + "/derivations/impact/" + name;
 }
@@ -412,7 +405,7 @@ TEST_CASE("e < 1: loss(hit) = T before - T after in every derivation, to 40 digi
   for (auto& c : kContactScenes) {
     DYNAMIC_SECTION(c.file) {
       std::string B = c.before, A = c.after;
-      auto text = with_finds(slurp(impact_file(c.file)),
+      auto text = with_finds(kt::read_file(impact_file(c.file)),
                              "  lost_: {value: \"loss(" + std::string(c.contact) + ", " + B + ", " + A + ")\", unit: J}\n" +
                                  "  dT_: {value: T@" + B + " - T@" + A + ", unit: J}\n");
       auto s = solve_text(text, c.file);
@@ -472,7 +465,7 @@ TEST_CASE("a result that is identically zero keeps its dimension (a unit may be 
           "[momentum][impact][units]") {
   // A find whose expression is 0 before solving is taken as dimensionless, so its `unit:` is
   // refused: "the unit 'N*s' (kg·m/s) does not fit find 'R', which has dimension 1".
-  auto turnstile = slurp(impact_file("turnstile_energy_loss.yaml"));
+  auto turnstile = kt::read_file(impact_file("turnstile_energy_loss.yaml"));
   SECTION("the x impulse of the turnstile's pin (the puck pushes along y)") {
     std::string err;
     try {
@@ -520,7 +513,7 @@ TEST_CASE("momentum of a block hanging on a cord counts the cord's impulse (or i
   // tension: alone it gives the free fall vA2 = -g t2 = -29.43 m/s for a block the motor raises
   // at 3.460 m/s; beside the system's angular momentum it is refused as "the equations
   // contradict each other". The cord's impulse should be an unknown, like a pin's reaction.
-  auto atwood = slurp(momentum_file("atwood_motor_time.yaml"));
+  auto atwood = kt::read_file(momentum_file("atwood_motor_time.yaml"));
   SECTION("beside the angular momentum of the system: vA2 = 3.460 m/s still") {
     auto text = edit(atwood, "  - momentum: {from: 1, to: 2, along: y}\n", "  - momentum: {from: 1, to: 2, along: y, bodies: [blockA]}\n");
     text = edit(text, "  Ry: {value: \"impulse_y(axle, 1, 2)\", unit: N*s}\n", "");
@@ -702,7 +695,7 @@ TEST_CASE("angular momentum about a point with no impulsive force is unchanged b
       bool quoted = H.front() == '"';
       std::string inner = quoted ? H.substr(1, H.size() - 2) : H;
       std::string value = "\"" + inner + "@after - " + inner + "@before\"";
-      auto text = with_finds(slurp(impact_file(c.file)), "  dH_: {value: " + value + "}\n  want_: " + c.change + "\n");
+      auto text = with_finds(kt::read_file(impact_file(c.file)), "  dH_: {value: " + value + "}\n  want_: " + c.change + "\n");
       auto s = solve_text(text, c.file);
       const auto& dH = result(s, "dH_");
       ex want = closed(s, "want_");
@@ -1044,8 +1037,8 @@ Run cli(const std::string& args) {
   int rc = std::system(cmd.c_str());
   Run r;
   r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
+  r.out = kt::read_file(out);
+  r.err = kt::read_file(err);
   fs::remove(out);
   fs::remove(err);
   return r;
