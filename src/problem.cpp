@@ -310,7 +310,29 @@ private:
   /// The branch the results' root choices and continuity select; each analysis checks it.
   void choose(const std::vector<solve::Branch>& branches) {
     sol_.branch = branches.size() == 1 ? branches.front() : Selector{m, env, given}.pick(branches);
-    for (auto& a : m.analyses) a.type->check(m, a, given, sol_.branch, env);
+    for (auto& a : m.analyses) {
+      forward_in_time(a);
+      a.type->check(m, a, given, sol_.branch, env);
+    }
+  }
+
+  /// A motion runs forward in time: a solved duration t₂ − t₁ < 0 would put the second state
+  /// before the first (a motor weaker than the friction it must overcome, say).
+  void forward_in_time(const model::Analysis& a) const {
+    if (a.instant) return;
+    const auto &S1 = m.states[a.from], &S2 = m.states[a.to];
+    if (given.count(S1.t) && given.count(S2.t)) return;  // both given: checked when the model was built
+    std::optional<numeric> d;
+    try {
+      d = numerics::evaluate((S2.t - S1.t).subs(given).subs(sol_.branch.sol), env, 30);
+    } catch (const std::exception&) {
+      return;  // undefined there: reported with the results that need it
+    }
+    if (!d || !d->is_negative()) return;
+    throw SceneError(a.pos, "the " + a.kind + " analysis from state '" + S1.name + "' to '" + S2.name + "' needs t@" + S2.name +
+                                " - t@" + S1.name + " = " + numerics::format(*d, 6) + " s: state '" + S2.name +
+                                "' would come before state '" + S1.name + "' (the effects between them act against the change asked for)",
+                     "check the sizes and directions of the effects, or what is given at state '" + S2.name + "'");
   }
 
   /// One named result: its closed form (every unknown in it determined) and value.

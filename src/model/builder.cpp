@@ -547,6 +547,23 @@ private:
 
   ex unknown(const std::string& name, const Dimension& d) override { return impulse_symbol(name, d); }
 
+  // the second state of an analysis over a duration comes after its first: t₂ ≥ t₁ where both are given
+  void time_order(const Analysis& a) {
+    const State &s1 = m_.states[a.from], &s2 = m_.states[a.to];
+    auto g1 = s1.given.find(s1.t), g2 = s2.given.find(s2.t);
+    if (g1 == s1.given.end() || g2 == s2.given.end()) return;
+    SourcePos at = d_.states[a.to].key_pos("t");
+    for (auto& [key, val] : d_.states[a.to].values)
+      if (key == "t") at = val.pos;
+    auto t1 = value_of(g1->second, at, "t at state '" + s1.name + "'");
+    auto t2 = value_of(g2->second, at, "t at state '" + s2.name + "'");
+    if (t1 && t2 && *t2 < *t1)
+      throw SceneError(at, "state '" + s2.name + "' is at t = " + numerics::format(*t2, 6) + " s, before state '" + s1.name +
+                               "' (t = " + numerics::format(*t1, 6) + " s), but the " + a.kind + " analysis goes from '" +
+                               s1.name + "' to '" + s2.name + "'",
+                       "give state '" + s2.name + "' a later time, or swap 'from' and 'to'");
+  }
+
   void analyses() {
     const auto& kinds = analysis_kinds();
     std::vector<std::string> names;
@@ -591,6 +608,7 @@ private:
         a.conserved = c->scalar == "true";
       }
       a.type->read(*this, ad, a);
+      if (!a.instant) time_order(a);
       if (a.type->takes_reactions()) {
         // supports between the body set and the rest (pins) carry unknown reactions
         for (auto& e : m_.effects) {

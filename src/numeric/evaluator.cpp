@@ -1,6 +1,8 @@
 #include "kinergy/numeric/evaluator.hpp"
 
+#include <cfenv>
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 #include <map>
 
@@ -166,7 +168,15 @@ Evaluator::Evaluator(const ex& e, const exmap& values) : e_(e) {
 
 std::optional<Bounded> Evaluator::fast() const {
   if (!fast_tape_) return std::nullopt;
-  return fast_tape_->bounded(fast_x_.data(), fast_dx_.data());
+  // a double that overflows, underflows (to a subnormal or to 0) or is invalid anywhere on the
+  // way decides nothing: its value and its error bound are no longer what they claim
+  constexpr int kOut = FE_OVERFLOW | FE_UNDERFLOW | FE_INVALID | FE_DIVBYZERO;
+  std::feclearexcept(kOut);
+  Bounded b = fast_tape_->bounded(fast_x_.data(), fast_dx_.data());
+  if (std::fetestexcept(kOut) || !std::isfinite(b.value) || !std::isfinite(b.bound) ||
+      (b.value != 0 && !std::isnormal(b.value)))
+    return std::nullopt;
+  return b;
 }
 
 std::optional<Bounded> Evaluator::naive() const {
@@ -209,15 +219,31 @@ std::optional<Precise> Evaluator::digits(int n) const {
   } catch (const std::exception&) {
     return std::nullopt;  // a division by zero at the exact values
   }
-  long p = n + 10;
-  auto prev = at(p);
+  const long limit = std::max<long>(20000, 8L * n);
+  // at(w), with w raised to what the arguments need (a trigonometric function of 1e80 rad)
+  auto covering = [&](long& w) -> std::optional<numeric> {
+    for (;;) {
+      try {
+        return at(w);
+      } catch (const NeedsPrecision& np) {
+        if (np.digits > limit)
+          throw std::domain_error("an argument of a trigonometric function is too large for " + std::to_string(limit) +
+                                  " digits of working precision (reducing it modulo 2*pi would need " +
+                                  std::to_string(np.digits) + ")");
+        w = std::max(w + 1, np.digits);
+      }
+    }
+  };
+  // at least 20 digits: below about 17, CLN's floats are machine floats whose exponents
+  // overflow and underflow like a double's (exp(-1e6) at 11 digits is an underflow exception)
+  long p = std::max<long>(n + 10, 20);
+  auto prev = covering(p);
   if (!prev) return std::nullopt;
   if (prev->is_rational()) return Precise{*prev, 0, true, false, 0};
   int shrinking = 0;
-  const long limit = std::max<long>(20000, 8L * n);
   while (p < limit) {
     long q = std::min(limit, p + std::max(20L, p / 2));
-    auto cur = at(q);
+    auto cur = covering(q);
     if (!cur) return std::nullopt;
     if (!prev->is_zero() && !cur->is_zero() && round_sig(*prev, n) == round_sig(*cur, n)) return Precise{*cur, q, false, false, 0};
     if (prev->is_zero() && cur->is_zero()) return Precise{*cur, q, false, false, 0};

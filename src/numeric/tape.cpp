@@ -358,6 +358,14 @@ cln::cl_F as_float(const cl_R& x, const cln::float_format_t& f) { return cln::cl
 
 // Rationals stay rationals through +, −, ×, ÷, integer powers, and √ of a perfect square; the
 // first inexact step makes a float of the asked format, and CLN carries that format on.
+// A periodic function of x reduces x modulo 2π: x's integer digits are lost to the reduction, so
+// the working precision must hold them besides `digits` digits of the result.
+static void cover_argument(const cl_R& x, long digits) {
+  if (cln::zerop(x)) return;
+  const long int_digits = static_cast<long>(std::ceil(static_cast<double>(cln::float_exponent(cln::cl_float(x))) * 0.30103));
+  if (int_digits > 0 && int_digits + 10 > digits / 2) throw NeedsPrecision{2 * (int_digits + 10) + digits};
+}
+
 std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits, bool exact_constants) const {
   const cln::float_format_t f = cln::float_format(digits);
   std::vector<cl_R> r(code_.size());
@@ -405,9 +413,16 @@ std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits, bool 
         }
         break;
       }
-      case Op::Sin: v = cln::zerop(a) ? cl_R(0) : cl_R(cln::sin(as_float(a, f))); break;
-      case Op::Cos: v = cln::zerop(a) ? cl_R(1) : cl_R(cln::cos(as_float(a, f))); break;
+      case Op::Sin:
+        cover_argument(a, digits);
+        v = cln::zerop(a) ? cl_R(0) : cl_R(cln::sin(as_float(a, f)));
+        break;
+      case Op::Cos:
+        cover_argument(a, digits);
+        v = cln::zerop(a) ? cl_R(1) : cl_R(cln::cos(as_float(a, f)));
+        break;
       case Op::Tan: {
+        cover_argument(a, digits);
         if (cln::zerop(a)) {
           v = 0;
           break;

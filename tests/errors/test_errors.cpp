@@ -747,6 +747,50 @@ TEST_CASE("bad scene files: the command line prints one line and exits 1", "[err
   }
 }
 
+// Scenes that once gave a physically impossible answer with exit 0: the whole line is asserted.
+namespace {
+struct ExactCase {
+  const char* file;
+  const char* where;  ///< LINE:COL
+  const char* message;
+};
+const ExactCase kImpossible[] = {
+    // a motor couple smaller than the bearing's friction couple cannot bring the wheel up to speed
+    {"negative_duration.yaml", "14:5",
+     "the angular_momentum analysis from state '1' to '2' needs t@2 - t@1 = -12 s: state '2' would come before state '1' "
+     "(the effects between them act against the change asked for) \u2014 check the sizes and directions of the effects, "
+     "or what is given at state '2'"},
+    // ½ I (ω₂² − ω₁²) = P t₂ < 0 with P > 0
+    {"power_drive_backwards.yaml", "12:5",
+     "the energy analysis from state '1' to '2' needs t@2 - t@1 = -60 s: state '2' would come before state '1' "
+     "(the effects between them act against the change asked for) \u2014 check the sizes and directions of the effects, "
+     "or what is given at state '2'"},
+    {"time_backwards.yaml", "12:10",
+     "state '2' is at t = 2 s, before state '1' (t = 5 s), but the angular_momentum analysis goes from '1' to '2' "
+     "\u2014 give state '2' a later time, or swap 'from' and 'to'"},
+};
+}  // namespace
+
+TEST_CASE("no impossible answer: a state before its predecessor is refused", "[errors][files]") {
+  for (auto& c : kImpossible) {
+    DYNAMIC_SECTION(c.file) {
+      std::string path = bad_file(c.file);
+      std::string want = path + ":" + c.where + ": " + c.message;
+      try {
+        kinergy::solve_file(path);
+        FAIL("the scene was accepted");
+      } catch (const kinergy::SceneError& e) {
+        CHECK(std::string(e.what()) == want);
+        check_form(e, path);
+      }
+      Run r = cli("solve \"" + path + "\"");
+      CHECK(r.status == 1);
+      CHECK(r.out.empty());
+      CHECK(r.err == want + "\n");
+    }
+  }
+}
+
 TEST_CASE("the command line: verify of a bad scene, a missing file", "[errors][cli]") {
   SECTION("verify: one line per bad scene, exit 1") {
     Run r = cli("verify \"" + bad_file("unclosed_bracket.yaml") + "\"");

@@ -64,3 +64,26 @@ TEST_CASE("a numeric root is not reported to more digits than it was refined to"
                     Catch::Contains("wound_spring.yaml:") && Catch::Contains("'theta2' is a numeric root") &&
                         Catch::Contains("--digits 35 or fewer"));
 }
+
+TEST_CASE("a double that underflows, and an angle beyond the working precision, decide nothing",
+          "[numeric][digits][cli]") {
+  // references: tests/data/numeric/out_of_range_reference.py (mpmath)
+  const std::string scene = "tests/data/numeric/out_of_range.yaml";
+  int status = 0;
+  std::string out = kt::run_cli("solve " + scene + " --json", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("\"name\": \"tiny\", \"closed_form\": \"-b*exp(-a)\", \"value\": \"-6.59366295617712e-434295\""));
+  CHECK_THAT(out, Catch::Contains("\"name\": \"sin_c\", \"closed_form\": \"sin(c)\", \"value\": \"-0.0565899244281819\""));
+  CHECK_THAT(out, Catch::Contains("\"name\": \"cos_c\", \"closed_form\": \"cos(c)\", \"value\": \"-0.99839750623347\""));
+  CHECK_THAT(out, !Catch::Contains("\"evaluation\": \"double"));
+  out = kt::run_cli("solve " + scene + " --digits 30", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= -6.59366295617711715793781593822e-434295 m"));
+  CHECK_THAT(out, Catch::Contains("= -0.056589924428181880030384130647"));
+  CHECK_THAT(out, Catch::Contains("= -0.998397506233470448825399367459"));
+  for (int d = 1; d <= 9; ++d) {
+    INFO("--digits " << d);
+    out = kt::run_cli("solve " + scene + " --digits " + std::to_string(d), status);
+    CHECK(status == 0);
+  }
+}

@@ -30,15 +30,18 @@ public:
   /// Compiled double. Candidates: e itself and its stable form; in each, the subexpressions
   /// that are rational in the inputs (no function, no fractional power: 2L − 3d, 1 − e, m₂ − m₁)
   /// are computed exactly once and rounded once. The candidate with the smaller running error
-  /// bound is kept. @returns nothing when no candidate compiles (an unsupported function).
+  /// bound is kept. @returns nothing when no candidate compiles (an unsupported function), or
+  /// when a double overflowed, underflowed or was invalid anywhere on the way.
   std::optional<Bounded> fast() const;
 
   /// CLN directly: the tape in floats of `working` decimal digits (inputs rounded to that precision).
+  /// @throws NeedsPrecision when `working` cannot cover an argument (a trigonometric function of a large angle).
   std::optional<GiNaC::numeric> at(long working) const;
 
   /// `digits` correct significant digits: exact when the value is rational; else evaluated at
   /// a working precision that grows until the rounding to `digits` stops changing.
   /// @returns nothing when the form is undefined at the values.
+  /// @throws std::domain_error when no working precision up to the limit covers its arguments.
   std::optional<Precise> digits(int digits) const;
 
   /// The form fast() evaluates, with its exactly computed parts written out (for reports).

@@ -20,6 +20,13 @@ struct Bounded {
   double bound = 0;
 };
 
+/// Thrown by Tape::precise when the working precision cannot cover an argument: a trigonometric
+/// function of x needs the digits of x's integer part besides the digits asked (sin(1e80 rad) at 45
+/// digits knows nothing of x mod 2π). `digits`: the working precision that would.
+struct NeedsPrecision {
+  long digits;
+};
+
 class Tape {
 public:
   /// Compile e; `inputs` are the symbols whose values are given at evaluation, in order.
@@ -50,6 +57,7 @@ public:
   /// ×, ÷ and integer powers (slower: every step reduces a fraction); otherwise the constants
   /// are floats of that precision, as the inputs should then be. @returns nothing where the
   /// form is undefined (division by zero, √ of a negative, log of a non-positive number, …).
+  /// @throws NeedsPrecision when `digits` cannot cover an argument.
   std::optional<cln::cl_R> precise(const std::vector<cln::cl_R>& x, long digits, bool exact_constants = true) const;
 
   /// The tape as straight-line C++: `extern "C" double NAME(const double* x)`, one `const double`
