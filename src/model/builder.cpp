@@ -91,7 +91,7 @@ private:
   ex parse(const Text& t, SceneContext::Level lv, bool states = false, const std::string& key = "") {
     SceneContext ctx(m_, lv, states);
     try {
-      return expr::parse(t.s, ctx);
+      return guard_powers(m_, expr::parse(t.s, ctx));
     } catch (const InputError& e) {
       // "3 N*m" where an expression of parameters stands: say so, not "unexpected 'N'"
       std::optional<units::Quantity> q;
@@ -279,7 +279,7 @@ private:
     SceneContext ctx(m_, lv, false);
     ex e;
     try {
-      e = expr::parse_equation(t.s, ctx);
+      e = guard_powers(m_, expr::parse_equation(t.s, ctx));
     } catch (const InputError& err) {
       rethrow_at(t.pos, err);
     }

@@ -6,12 +6,34 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/expr/parser.hpp"
 #include "kinergy/model/model.hpp"
+#include "kinergy/model/simplify.hpp"
 
 namespace kinergy::model {
 
 using namespace GiNaC;
 
 /// The list of a model's states, for a fix.
+/// Exact arithmetic with b^n takes time and memory in proportion to n (0.5^1000000000 has a
+/// billion-bit denominator): an integer exponent beyond 10^5, written or given by the parameters'
+/// values, is refused. @returns e. @throws InputError.
+inline ex guard_powers(const Model& m, const ex& e) {
+  static const numeric kMaxExponent(100000);
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (!is_a<GiNaC::power>(*it)) continue;
+    ex n = it->op(1);
+    try {
+      n = n.subs(m.parameter_values());
+    } catch (const std::exception&) {
+      continue;  // undefined for the values: reported where it is used
+    }
+    if (!is_a<numeric>(n) || !ex_to<numeric>(n).is_integer() || abs(ex_to<numeric>(n)) <= kMaxExponent) continue;
+    const std::string b = text(it->op(0)), x = text(it->op(1));
+    throw InputError("the power " + b + "^" + x + " has the exponent " + text(n) + ", too large for exact arithmetic",
+                     "check the exponent: at most 100000 in size (no physical quantity needs more)");
+  }
+  return e;
+}
+
 /// The name among `items` (each with a `name`) nearest to n, or "" when none is near.
 template <class C>
 std::string nearest(const std::string& n, const C& items) {

@@ -301,7 +301,7 @@ PointRef Model::point(const std::string& text) const {
 ex Model::parse(const std::string& text, const SourcePos& pos, bool allow_states) const {
   SceneContext ctx(*this, SceneContext::Quantities, allow_states);
   try {
-    return expr::parse(text, ctx);
+    return guard_powers(*this, expr::parse(text, ctx));
   } catch (const InputError& e) {
     rethrow_at(pos, e);
   }

@@ -77,6 +77,7 @@ namespace {
 struct Loader {
   std::string file;
   std::vector<std::string> lines;  ///< the source, for places inside quoted and block scalars
+  mutable std::size_t nodes = 0;   ///< YAML values converted so far (aliases repeat what they name)
 
   SourcePos at(const YAML::Mark& m) const {
     return {file, m.line < 0 ? 0 : m.line + 1, m.column < 0 ? 0 : m.column + 1};
@@ -106,9 +107,17 @@ struct Loader {
     return p;
   }
 
-  Node convert(const YAML::Node& y) const {
+  Node convert(const YAML::Node& y, int depth = 0) const {
     Node n;
     n.pos = at(y.Mark());
+    // an alias '*a' repeats the whole value its anchor '&a' names, so a few hundred bytes of
+    // nested aliases can stand for billions of values: bounded, as the nesting is
+    if (++nodes > kMaxNodes)
+      throw SceneError(n.pos, "the scene holds more than " + std::to_string(kMaxNodes) + " YAML values (aliases '*name' repeat the value they name)",
+                       "write the scene without nested aliases: a scene needs a few hundred values");
+    if (depth > kMaxDepth)
+      throw SceneError(n.pos, "the scene nests lists and maps more than " + std::to_string(kMaxDepth) + " deep",
+                       "a scene nests a few levels: close the lists and maps opened above");
     switch (y.Type()) {
       case YAML::NodeType::Scalar:
         n.kind = Node::Kind::Scalar;
@@ -117,19 +126,19 @@ struct Loader {
         break;
       case YAML::NodeType::Sequence:
         n.kind = Node::Kind::List;
-        for (const auto& it : y) n.items.push_back(convert(it));
+        for (const auto& it : y) n.items.push_back(convert(it, depth + 1));
         break;
       case YAML::NodeType::Map: {
         n.kind = Node::Kind::Map;
         std::set<std::string> seen;
         for (const auto& it : y) {
-          Node k = convert(it.first);
+          Node k = convert(it.first, depth + 1);
           if (!k.is_scalar())
             throw SceneError(k.pos, "a map key must be a plain name", "write 'name: value'");
           if (!seen.insert(k.scalar).second)
             throw SceneError(k.pos, "duplicate key '" + k.scalar + "'",
                              "give each key once (rename or merge the two entries)");
-          Node v = convert(it.second);
+          Node v = convert(it.second, depth + 1);
           if (v.kind == Node::Kind::Null) v.pos = k.pos;
           n.entries.emplace_back(std::move(k), std::move(v));
         }
@@ -217,7 +226,10 @@ struct Loader {
     for (char c : s) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
     if (!ok)
       throw SceneError(k.pos, "'" + s + "' is not a valid " + what + " name",
-                       "use letters, digits and '_', starting with a letter");
+                       "use letters, digits and '_', starting with a letter");    if (s.size() > kMaxName)
+      throw SceneError(k.pos, "the " + what + " name '" + s + "' is " + std::to_string(s.size()) + " characters long, more than " +
+                                  std::to_string(kMaxName),
+                       "use a shorter name");
   }
 
   InertiaDef inertia(const Node& n) const {
@@ -528,6 +540,9 @@ struct Open {
 struct OpenAt {
   std::vector<Open> brackets;
   std::optional<Open> quote;
+  /// The first ',' outside every [ ] and { } where a value would start (a YAML syntax error that
+  /// sends yaml-cpp 0.7's LoadAll into an endless loop that eats memory: refused before it runs).
+  std::optional<Open> stray_comma;
 };
 
 OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
@@ -563,6 +578,8 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
         st.quote = Open{c, li + 1, static_cast<int>(i) + 1};
         continue;
       }
+      if (c == ',' && st.brackets.empty() && !st.stray_comma && (node_start || prev == ']' || prev == '}'))
+        st.stray_comma = Open{c, li + 1, static_cast<int>(i) + 1};
       if ((c == '[' || c == '{') && node_start) st.brackets.push_back({c, li + 1, static_cast<int>(i) + 1});
       else if ((c == ']' || c == '}') && !st.brackets.empty()) st.brackets.pop_back();
       prev = c;
@@ -703,7 +720,20 @@ SourcePos second_document(const std::vector<std::string>& lines, const std::stri
 }  // namespace
 
 SceneDef load_string(const std::string& text, const std::string& file) {
+  if (text.size() > kMaxBytes)
+    throw SceneError({file, 1, 1}, "the scene is " + std::to_string(text.size()) + " bytes long, more than the " +
+                                       std::to_string(kMaxBytes) + " a scene may have",
+                     "check that this is a scene file; a scene is a few kilobytes");
   Loader l{file, split_lines(text)};
+  if (auto nul = text.find('\0'); nul != std::string::npos) {
+    int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(nul), '\n'));
+    std::size_t start = text.rfind('\n', nul);
+    int col = static_cast<int>(nul - (start == std::string::npos ? 0 : start + 1)) + 1;
+    throw SceneError({file, line, col}, "the file holds a NUL byte: it is not a text file", "save the scene as plain text (UTF-8)");
+  }
+  if (auto comma = scan_open(l.lines, static_cast<int>(l.lines.size()) + 1, 0).stray_comma)
+    throw SceneError({file, comma->line, comma->col}, "YAML syntax error: a ',' outside [ ] and { }, where a value should start",
+                     "remove it, or quote the text it belongs to: a comma separates the entries of a list in [ ] or of a map in { }");
   std::vector<YAML::Node> docs;
   try {
     docs = YAML::LoadAll(text);

@@ -111,6 +111,12 @@ const std::vector<std::string>& effect_kinds();
 /// src/model/inertia.cpp).
 const std::vector<std::pair<std::string, int>>& inertia_shapes();
 
+/// The limits of a scene's text (each refused with its own error).
+constexpr std::size_t kMaxBytes = 1 << 20;   ///< 1 MiB
+constexpr std::size_t kMaxNodes = 100000;    ///< YAML values, aliases expanded
+constexpr int kMaxDepth = 64;                ///< nesting of lists and maps
+constexpr std::size_t kMaxName = 64;         ///< characters of a name
+
 /// Read a scene file. @throws SceneError (file:line:col) on any malformed input.
 SceneDef load_file(const std::string& path);
 /// Read scene text; `file` names it in errors.
