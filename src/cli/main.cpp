@@ -25,6 +25,43 @@
 
 namespace {
 
+/// A number option's text as a finite double in [lo, hi] (`lo_open`: lo itself excluded), or CLI11's
+/// error text. (CLI11 takes "inf", "nan" and an empty text for numbers, and prints a range's
+/// bounds in full: 1.797…e308 as 309 digits.)
+CLI::Validator finite_in(double lo, double hi, bool lo_open, const std::string& what) {
+  return CLI::Validator(
+      [=](std::string& s) -> std::string {
+        std::size_t used = 0;
+        double v = 0;
+        try {
+          v = std::stod(s, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (s.empty() || used != s.size() || !std::isfinite(v)) return "'" + s + "' is not a number: give " + what;
+        if (v < lo || v > hi || (lo_open && v == lo)) return s + " is out of range: give " + what;
+        return "";
+      },
+      what);
+}
+
+/// An output file whose folder exists and may be written, checked before the work that fills it.
+CLI::Validator writable_file() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        namespace fs = std::filesystem;
+        if (s.empty()) return "the file name is empty";
+        fs::path dir = fs::path(s).parent_path();
+        if (dir.empty()) dir = ".";
+        std::error_code ec;
+        if (!fs::is_directory(dir, ec)) return "the folder '" + dir.string() + "' does not exist: create it first, or write elsewhere";
+        if (fs::is_directory(fs::path(s), ec)) return "'" + s + "' is a folder: name a file";
+        if (access(dir.c_str(), W_OK) != 0) return "the folder '" + dir.string() + "' may not be written: write elsewhere";
+        return "";
+      },
+      "FILE");
+}
+
 int guarded(const std::string& file, const std::function<int()>& f) {
   try {
     return f();
@@ -76,13 +113,16 @@ int main(int argc, char** argv) {
   bool equations = false, check = false, no_native = false;
   auto* simulate = app.add_subcommand("simulate", "integrate the scene's motion in time from a state, with only the effects it lists");
   simulate->add_option("SCENE", scene, "scene file (YAML)")->required();
-  simulate->add_option("--until", until, "end time in s (absolute, the start state's t is the origin)");
+  simulate->add_option("--until", until, "end time in s (absolute, the start state's t is the origin)")
+      ->check(finite_in(-1e300, 1e300, false, "a finite end time in s"));
   simulate->add_option("--from", from, "the state to start from (default: the first)");
-  simulate->add_option("--tol", tol, "absolute and relative tolerance of the adaptive methods (default 1e-10)")->check(CLI::Range(1e-15, 1e-1));
+  simulate->add_option("--tol", tol, "absolute and relative tolerance of the adaptive methods (default 1e-10)")->check(finite_in(1e-15, 1e-1, false, "a tolerance from 1e-15 to 0.1"));
   simulate->add_option("--method", method, "dopri5 (default), rkf78, bs (Bulirsch-Stoer), symplectic (fixed step, separable energy), rk4 (fixed step)");
-  simulate->add_option("--step", step, "fixed step of symplectic and rk4 in s (default: span/10000)")->check(CLI::PositiveNumber);
-  simulate->add_option("--csv", csv_out, "write t, q, q_dot, T, V, E per step to FILE");
-  simulate->add_option("--plot", plot_out, "draw coordinates and energy against time into FILE.svg or FILE.png (gnuplot)");
+  simulate->add_option("--step", step, "fixed step of symplectic and rk4 in s (default: span/10000)")
+      ->check(finite_in(0, 1e300, true, "a positive step in s"));
+  simulate->add_option("--csv", csv_out, "write t, q, q_dot, T, V, E per step to FILE")->check(writable_file());
+  simulate->add_option("--plot", plot_out, "draw coordinates and energy against time into FILE.svg or FILE.png (gnuplot)")
+      ->check(writable_file());
   simulate->add_flag("--equations", equations, "print the equations of motion");
   simulate->add_flag("--check", check, "run every analysis of the scene as a simulation and compare with the closed forms");
   simulate->add_flag("--no-native", no_native, "evaluate the right-hand side by the tape instead of compiled machine code");
@@ -231,7 +271,7 @@ int main(int argc, char** argv) {
       if (!csv_out.empty()) {
         std::ofstream out(csv_out);
         out << sim::csv(m, r);
-        if (!out) throw std::runtime_error(csv_out + ": cannot write the CSV file");
+        if (!out) throw kinergy::InputError("cannot write the CSV file '" + csv_out + "'", "check the free space and the file's permissions");
       }
       if (!plot_out.empty()) sim::plot(m, r, plot_out);
       return 0;

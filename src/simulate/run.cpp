@@ -142,6 +142,8 @@ public:
                                 std::to_string(s0.qd.size()) + " rates for " + std::to_string(n) + " coordinates",
                             "give a position and a rate for every coordinate");
     t_ = s0.t;
+    if (!std::isfinite(stop_.until))
+      throw SimulationError("the run has no end (until = " + num(stop_.until) + " s)", "give --until a finite time in s");
     span_ = stop_.until - t_;
     if (!(span_ >= 0)) throw SimulationError("the run ends before it starts (until = " + num(stop_.until) + " s)", "give --until a time after the start");
     p_.rest_time = std::max(p_.o.tol, 1e-13) * span_;
@@ -152,6 +154,13 @@ public:
     stepper_ = make_stepper(p_);
     if (!stepper_->adaptive() && p_.o.step <= 0) fixed_dt_ = std::max(span_, 1e-300) / 1e4;
     else fixed_dt_ = p_.o.step;
+    // a fixed step so small that the run would take more steps than the limit (or than t can
+    // tell apart: t + dt == t) is refused before it starts
+    if (!stepper_->adaptive() && span_ > 0 &&
+        (!(span_ / fixed_dt_ <= static_cast<double>(p_.o.max_steps)) || stop_.until + fixed_dt_ == stop_.until))
+      throw SimulationError("a fixed step of " + num(fixed_dt_) + " s would take " + num(span_ / fixed_dt_) + " steps to reach t = " +
+                                num(stop_.until) + " s, more than the " + std::to_string(p_.o.max_steps) + " a run may take",
+                            "give a larger --step (at least " + num(span_ / static_cast<double>(p_.o.max_steps)) + " s)");
 
     p_.eval_aux(t_, y_.data());
     run_.E0 = p_.T() + p_.V();  // before what happens at the start (impulses, impacts)

@@ -90,3 +90,43 @@ TEST_CASE("kinergy simulate refuses what it cannot do, with the place and a fix"
     CHECK_THAT(out, !Catch::Contains("internal error"));
   }
 }
+
+TEST_CASE("kinergy simulate: options that are not a usable number or file are usage errors (exit 2)",
+          "[simulate][cli][errors]") {
+  struct Case {
+    std::string args, message;
+  };
+  const std::string rod = "derivations/energy/sliding_rod.yaml ";
+  const std::vector<Case> cases = {
+      {"--until inf", "--until: 'inf' is not a number: give a finite end time in s\n"},
+      {"--until nan", "--until: 'nan' is not a number: give a finite end time in s\n"},
+      {"--until ''", "--until: '' is not a number: give a finite end time in s\n"},
+      {"--until 1s", "--until: '1s' is not a number: give a finite end time in s\n"},
+      {"--until 1 --tol nan", "--tol: 'nan' is not a number: give a tolerance from 1e-15 to 0.1\n"},
+      {"--until 1 --tol 0", "--tol: 0 is out of range: give a tolerance from 1e-15 to 0.1\n"},
+      {"--until 1 --method rk4 --step 0", "--step: 0 is out of range: give a positive step in s\n"},
+      {"--until 1 --method rk4 --step -1e-3", "--step: -1e-3 is out of range: give a positive step in s\n"},
+      // checked before the run, not after it
+      {"--until 1 --csv /nonexistent-kinergy/x.csv",
+       "--csv: the folder '/nonexistent-kinergy' does not exist: create it first, or write elsewhere\n"},
+      {"--until 1 --plot /nonexistent-kinergy/x.svg",
+       "--plot: the folder '/nonexistent-kinergy' does not exist: create it first, or write elsewhere\n"},
+      {"--until 1 --csv /", "--csv: '/' is a folder: name a file\n"},
+  };
+  for (auto& c : cases) {
+    INFO(c.args);
+    int status = 0;
+    std::string out = kt::run_cli("simulate " + rod + c.args, status);
+    CHECK(status == 2);
+    CHECK(out.rfind(c.message, 0) == 0);
+    CHECK_THAT(out, !Catch::Contains("internal error"));
+  }
+}
+
+TEST_CASE("kinergy simulate: a fixed step too small for the span is refused before the run", "[simulate][cli][errors]") {
+  int status = 0;
+  std::string out = kt::run_cli("simulate derivations/energy/sliding_rod.yaml --until 1e6 --method rk4 --step 1e-300", status);
+  CHECK(status == 1);
+  CHECK(out == "derivations/energy/sliding_rod.yaml: a fixed step of 1e-300 s would take 1e+306 steps to reach t = 1e+06 s, "
+               "more than the 100000000 a run may take \u2014 give a larger --step (at least 0.01 s)\n");
+}
