@@ -110,7 +110,9 @@ std::optional<ex> pair_rewrite(const ex& ti, const ex& tj) {
       for (auto& [g, C] : split_by(ti, is_sqrt))
         if (same(C, A) && !g.is_equal(f)) {
           const ex& a = g.op(0);
-          return A * (a - b).expand() / (sqrt(a) + sqrt(b));
+          ex den = sqrt(a) + sqrt(b);
+          if (den.is_zero()) continue;  // √a = −√b: nothing to divide by
+          return A * (a - b).expand() / den;
         }
       // A c − A √b with c > 0 a number: c = √(c²)
       ex c = ti / A;
@@ -171,7 +173,11 @@ struct Rewrite : map_function {
 
 ex stable_form(const ex& e) {
   Rewrite r;
-  return r(e);
+  try {
+    return r(e);
+  } catch (const std::exception&) {
+    return e;  // a rewrite that GiNaC cannot form (a division by an expression that is zero): the form as it is
+  }
 }
 
 }  // namespace kinergy::numerics

@@ -496,7 +496,16 @@ std::string Tape::source(const std::string& name, bool vector) const {
     std::string v;
     char hex[64];
     switch (in.op) {
-      case Op::Const: std::snprintf(hex, sizeof hex, "%a", in.c); v = hex; break;
+      case Op::Const:
+        // "%a" writes an infinity as "inf" and a NaN as "nan", which C++ does not know: the same
+        // doubles from <cmath> (a constant beyond the range of doubles reaches here only so)
+        if (std::isnan(in.c)) v = "NAN";
+        else if (std::isinf(in.c)) v = in.c > 0 ? "HUGE_VAL" : "(-HUGE_VAL)";
+        else {
+          std::snprintf(hex, sizeof hex, "%a", in.c);
+          v = hex;
+        }
+        break;
       case Op::Input: v = "x[" + std::to_string(in.a) + "]"; break;
       case Op::Add: v = a + " + " + b; break;
       case Op::Mul: v = a + " * " + b; break;

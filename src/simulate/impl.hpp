@@ -9,6 +9,7 @@
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/native.hpp"
 #include "kinergy/numeric/tape.hpp"
 #include "kinergy/simulate/simulate.hpp"
@@ -89,6 +90,7 @@ struct Simulator::Impl {
     n = eq.q.size();
     nc = eq.g.size();
     if (n == 0) throw SimulationError("the scene has no coordinates: nothing moves", "add coordinates to the bodies");
+    doubles_hold_parameters();
     compile();
     fmode.assign(eq.friction.size(), FrictionMode::Slide);
     fdir.assign(eq.friction.size(), {1, 0});
@@ -451,6 +453,22 @@ struct Simulator::Impl {
     return true;
   }
 
+  // The run is in doubles: a parameter's SI value beyond their range (1e400 kg is inf, 1e-400 m is
+  // 0) would make every step wrong, and its infinity would reach the generated C++.
+  void doubles_hold_parameters() const {
+    for (auto& p : m.params) {
+      auto it = values.find(p.sym);
+      if (it == values.end() || !is_a<numeric>(it->second)) continue;
+      const numeric& v = ex_to<numeric>(it->second);
+      if (!v.is_real() || v.is_zero()) continue;
+      double d = v.to_double();
+      if (std::isfinite(d) && std::isnormal(d)) continue;
+      throw SimulationError("parameter '" + p.name + "' is " + numerics::format(v, 6) + " in SI units, " +
+                                (std::isfinite(d) ? "below" : "beyond") + " what a double holds (1e-307 to 1e308), and the simulation runs in doubles",
+                            "give it a value within the range of doubles", p.pos);
+    }
+  }
+
   [[noreturn]] void undefined(double t) const {
     std::string who;
     SourcePos at;
@@ -460,7 +478,9 @@ struct Simulator::Impl {
         at = m.effects[F.effect].pos;
       }
     throw SimulationError("the acceleration is not a number at t = " + num(t) + " s" + who,
-                          "start the motion where every effect is defined (a power drive needs the body turning)", at);
+                          who.empty() ? "check the parameters and the start state: an effect or a body's motion is undefined there"
+                                      : "start the motion where every effect is defined (a power drive needs the body turning)",
+                          at);
   }
 };
 

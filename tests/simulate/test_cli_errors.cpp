@@ -80,6 +80,14 @@ TEST_CASE("kinergy simulate refuses what it cannot do, with the place and a fix"
       {"derivations/momentum/spinning_frame.yaml --until 1 --method symplectic",
        "spinning_frame.yaml: the symplectic method needs a conservative scene with separable energy, but its mass matrix depends on s"},
       {"derivations/energy/sliding_rod.yaml --until -1", "the run ends before it starts"},
+      // a value beyond the range of doubles once reached the generated C++ as 'inf'
+      {"tests/data/simulate/huge_mass.yaml --until 1",
+       "huge_mass.yaml:12:3: parameter 'm' is 1e400 in SI units, beyond what a double holds (1e-307 to 1e308), and the "
+       "simulation runs in doubles \u2014 give it a value within the range of doubles"},
+      {"tests/data/simulate/huge_couple.yaml --until 0.1",
+       "huge_couple.yaml: the acceleration is not a number at t = 0 s \u2014 check the parameters and the start state: an "
+       "effect or a body's motion is undefined there"},
+      {"tests/data/simulate/huge_couple.yaml --until 0.1 --no-native", "huge_couple.yaml: the acceleration is not a number at t = 0 s"},
   };
   for (auto& c : cases) {
     INFO(c.args);
