@@ -298,7 +298,8 @@ private:
   }
 
   std::vector<solve::Branch> solve(const std::vector<principles::Equation>& eqs) const {
-    solve::Problem p{eqs, unknowns, given, env, reference, ranges};
+    solve::Problem p{eqs, unknowns, given, env, reference, ranges, {}};
+    for (auto& a : m.analyses) p.impulses.insert(a.unknowns.begin(), a.unknowns.end());
     try {
       return solve::solve(p);
     } catch (const solve::SolveError& e) {

@@ -62,6 +62,13 @@ CLI::Validator writable_file() {
       "FILE");
 }
 
+/// solve and derive print the results a scene asks for: one that asks for none is refused.
+void require_results(const kinergy::Solution& s) {
+  if (s.results.empty())
+    throw kinergy::SceneError({s.model.file, 1, 1}, "the scene asks for nothing: it has no 'find'",
+                              "add a 'find:' section naming the results you want, e.g. 'find: {omega2: theta_dot@2}'");
+}
+
 int guarded(const std::string& file, const std::function<int()>& f) {
   try {
     return f();
@@ -137,6 +144,7 @@ int main(int argc, char** argv) {
   if (*solve) {
     return guarded(scene, [&] {
       kinergy::Solution s = kinergy::solve_file(scene);
+      require_results(s);
       kinergy::emit::Options o;
       o.digits = digits;
       o.guaranteed = solve->count("--digits") > 0;
@@ -148,6 +156,7 @@ int main(int argc, char** argv) {
     return guarded(scene, [&] {
       kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
       kinergy::Solution s = kinergy::solve_scene(def);
+      require_results(s);
       kinergy::emit::DeriveOptions o;
       o.digits = derive_digits;
       o.checks = !no_checks;

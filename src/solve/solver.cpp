@@ -223,6 +223,11 @@ private:
         ex sq = model::tidy(-c) / model::tidy(a);  // u = ±√(−c/a), numerator and denominator tidied apart
         if (model::ex_size(sq) < 600) sq = model::tidy(sq);
         auto v = num(sq, p_.env);
+        if (v && v->is_negative() && p_.impulses.count(u))
+          // an impulse stands for the velocity it is tied to (v⁺ − v⁻ = J/m): say it of the motion
+          throw SolveError("the " + q.label + " has no real solution: the motion cannot reach that state with these values "
+                               "(its kinetic energy would be negative, and the impulse " + model::text(u) + " that depends on it imaginary)",
+                           "check the states and parameters: the energy given at the start is not enough", q.pos);
         if (v && v->is_negative())
           throw SolveError("the " + q.label + " has no real solution for " + model::text(u) + ": " + model::text(u) +
                                "^2 would be " + numerics::format(*v, 6) + " (negative)",

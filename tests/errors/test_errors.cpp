@@ -769,6 +769,11 @@ const ExactCase kExact[] = {
     {"time_backwards.yaml", "12:10",
      "state '2' is at t = 2 s, before state '1' (t = 5 s), but the angular_momentum analysis goes from '1' to '2' "
      "\u2014 give state '2' a later time, or swap 'from' and 'to'"},
+    // reported through the contact impulse J_floor^2 < 0 before
+    {"floor_out_of_reach.yaml", "29:5",
+     "the conservation of energy, states 1 -> before has no real solution: the motion cannot reach that state with these "
+     "values (its kinetic energy would be negative, and the impulse J_floor[before,after] that depends on it imaginary) "
+     "\u2014 check the states and parameters: the energy given at the start is not enough"},
     // yaml-cpp 0.7's LoadAll loops for ever on these, its memory growing
     {"comma_first.yaml", "1:1",
      "YAML syntax error: a ',' outside [ ] and { }, where a value should start \u2014 remove it, or quote the text it "
@@ -814,6 +819,18 @@ TEST_CASE("bad input: the whole one-line error, from the library and the command
       CHECK(r.out.empty());
       CHECK(r.err == want + "\n");
     }
+  }
+}
+
+TEST_CASE("solve and derive refuse a scene that asks for nothing", "[errors][cli]") {
+  std::string path = bad_file("asks_nothing.yaml");
+  for (std::string cmd : {"solve", "derive"}) {
+    INFO(cmd);
+    Run r = cli(cmd + " \"" + path + "\"");
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err == path + ":1:1: the scene asks for nothing: it has no 'find' \u2014 add a 'find:' section naming the results "
+                          "you want, e.g. 'find: {omega2: theta_dot@2}'\n");
   }
 }
 

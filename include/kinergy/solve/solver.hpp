@@ -37,6 +37,10 @@ struct Problem {
   GiNaC::exmap reference;
   /// Ranges to search for a numeric root, from results' `root: {in: [lo, hi]}` (SI values).
   std::map<ex, std::pair<ex, ex>, GiNaC::ex_is_less> ranges;
+  /// Unknowns that are impulses (contact impulses, support reactions): an equation linear in
+  /// one of them is solved for it first, so that what remains is in the states' values (a state
+  /// that cannot be reached is then told by its velocity, not by an impulse).
+  std::set<ex, GiNaC::ex_is_less> impulses;
 };
 
 /// One consistent solution.
