@@ -199,8 +199,11 @@ std::vector<std::string> term_pieces(const std::string& t, double budget, int le
     } else if (a.rfind("\\frac", 0) == 0) {
       // \frac{N}{D} → \frac{1}{D}\Bigl(N\Bigr) (or \frac{1}{D}\,N when N is one term);
       // with a wide D: \Bigl(N\Bigr)\Big/\Bigl(D\Bigr)
-      auto [num, rest] = first_group(a.substr(5));
-      auto [den, tail] = first_group(rest);
+      // (plain variables, not a structured binding: the lambda below captures num, which C++20
+      // allows of a binding but clang 14 does not)
+      std::string num, rest, den, tail;
+      std::tie(num, rest) = first_group(a.substr(5));
+      std::tie(den, tail) = first_group(rest);
       bool sum = tex_terms(num).size() >= 2;
       auto numerator = [&] {
         if (sum) lit("\\Bigl(");

@@ -140,7 +140,7 @@ struct Loader {
                              "give each key once (rename or merge the two entries)");
           Node v = convert(it.second, depth + 1);
           if (v.kind == Node::Kind::Null) v.pos = k.pos;
-          n.entries.emplace_back(std::move(k), std::move(v));
+          n.entries.push_back({std::move(k), std::move(v)});
         }
         break;
       }

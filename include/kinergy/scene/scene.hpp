@@ -9,13 +9,16 @@
 
 namespace kinergy::scene {
 
+struct Entry;
+
 /// A YAML value with the place it was written: a scalar, a list or a map (keys in order).
 struct Node {
   enum class Kind { Null, Scalar, List, Map };
   Kind kind = Kind::Null;
   std::string scalar;
   std::vector<Node> items;
-  std::vector<std::pair<Node, Node>> entries;  ///< map: (key, value), in file order
+  std::vector<Entry> entries;  ///< map: (key, value), in file order (std::pair<Node, Node> of a Node
+                              ///< still incomplete here is not portable: libstdc++ 12 with clang 14 refuses it)
   SourcePos pos;
 
   bool is_scalar() const { return kind == Kind::Scalar; }
@@ -23,6 +26,11 @@ struct Node {
   bool is_map() const { return kind == Kind::Map; }
   const Node* get(const std::string& key) const;  ///< map entry or nullptr
   std::string kind_name() const;                  ///< "a text", "a list", "a map", "empty"
+};
+
+/// A key and its value in a map.
+struct Entry {
+  Node first, second;
 };
 
 /// A scalar text and where it stands.
