@@ -226,7 +226,8 @@ struct Loader {
     for (char c : s) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
     if (!ok)
       throw SceneError(k.pos, "'" + s + "' is not a valid " + what + " name",
-                       "use letters, digits and '_', starting with a letter");    if (s.size() > kMaxName)
+                       "use letters, digits and '_', starting with a letter");
+    if (s.size() > kMaxName)
       throw SceneError(k.pos, "the " + what + " name '" + s + "' is " + std::to_string(s.size()) + " characters long, more than " +
                                   std::to_string(kMaxName),
                        "use a shorter name");
