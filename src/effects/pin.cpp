@@ -101,11 +101,14 @@ void check_pin(const Model& m, const Pin& e, const SourcePos& pos) {
       continue;  // undefined at this sample position: try another
     }
     if (!GiNaC::is_a<GiNaC::numeric>(gx) || !GiNaC::is_a<GiNaC::numeric>(gy)) return;  // symbolic parameters: trust it
-    double d = std::hypot(GiNaC::ex_to<GiNaC::numeric>(gx).to_double(), GiNaC::ex_to<GiNaC::numeric>(gy).to_double());
+    // how far apart, in CLN's numbers (a point 1e400 m away is no double)
+    const GiNaC::numeric& nx = GiNaC::ex_to<GiNaC::numeric>(gx);
+    const GiNaC::numeric& ny = GiNaC::ex_to<GiNaC::numeric>(gy);
+    const GiNaC::numeric d = GiNaC::sqrt(nx * nx + ny * ny);
     // apart, against the size of the positions themselves (a scene may be a millimetre across)
     if (!numerics::negligible(dx, at).value_or(true) || !numerics::negligible(dy, at).value_or(true))
       throw SceneError(pos, "pin '" + e.name + "': " + e.a.text + " and " + e.b.text +
-                                " do not coincide (apart by " + numerics::format(GiNaC::numeric(d), 6) + " m at some position)",
+                                " do not coincide (apart by " + numerics::format(d, 6) + " m at some position)",
                        "fix the body's position/angle or the point so the pinned points stay together");
   }
 }

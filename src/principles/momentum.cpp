@@ -337,14 +337,15 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
     if (!e.a.ground && !e.b.ground) {
       auto dx = k.value(before(pb.r.first - pa.r.first)), dy = k.value(before(pb.r.second - pa.r.second));
       if (dx && dy) {
-        double d = std::hypot(dx->to_double(), dy->to_double());
-        // apart, against the size of the positions (no absolute floor: a scene may be tiny)
-        double scale = 0;
+        // apart, against the size of the positions (no absolute floor: a scene may be tiny), in
+        // CLN's numbers: in doubles a scene 1e400 m from the origin is ∞ apart from ∞ and passes
+        numeric d2 = *dx * *dx + *dy * *dy, scale = 0;
         for (const ex& c : {pa.r.first, pa.r.second, pb.r.first, pb.r.second})
-          if (auto s = k.value(before(c))) scale = std::max(scale, std::abs(s->to_double()));
-        if (d > 1e-9 * scale)
-          throw SceneError(e.pos, "contact '" + e.name + "': " + e.a.text + " and " + e.b.text + " are " + numerics::format(numeric(d), 6) +
-                                      " m apart at state '" + SB + "', so they cannot strike each other there",
+          if (auto s = k.value(before(c))) scale = std::max(scale, abs(*s));
+        if (d2 > pow(numeric(1, 1000000000) * scale, 2))
+          throw SceneError(e.pos, "contact '" + e.name + "': " + e.a.text + " and " + e.b.text + " are " +
+                                      numerics::format(numeric(sqrt(d2)), 6) + " m apart at state '" + SB +
+                                      "', so they cannot strike each other there",
                            "give positions at '" + SB + "' that bring the two points together");
       }
     }

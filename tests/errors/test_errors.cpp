@@ -774,6 +774,13 @@ const ExactCase kExact[] = {
      "the conservation of energy, states 1 -> before has no real solution: the motion cannot reach that state with these "
      "values (its kinetic energy would be negative, and the impulse J_floor[before,after] that depends on it imaginary) "
      "\u2014 check the states and parameters: the energy given at the start is not enough"},
+    // distances beyond the range of doubles: an internal error (CLN's overflow) and a check that passed
+    {"pin_far_away.yaml", "8:14",
+     "pin 'pin': O and bar.O do not coincide (apart by 1e400 m at some position) \u2014 fix the body's position/angle or "
+     "the point so the pinned points stay together"},
+    {"contact_far_away.yaml", "33:3",
+     "contact 'hit': bullet and bar.Q are 1e400 m apart at state 'before', so they cannot strike each other there \u2014 "
+     "give positions at 'before' that bring the two points together"},
     // yaml-cpp 0.7's LoadAll loops for ever on these, its memory growing
     {"comma_first.yaml", "1:1",
      "YAML syntax error: a ',' outside [ ] and { }, where a value should start \u2014 remove it, or quote the text it "
