@@ -366,6 +366,16 @@ struct Simulator::Impl {
   }
 
   [[noreturn]] void singular(double t, const std::string& why = "") const {
+    // a scene so small that M(q) underflows in doubles (a pendulum 1e-160 m long: m L²/3 ≈ 1e-320
+    // kg·m²) is a matter of scale, not of a coordinate without mass
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d = M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+      if (!eq.M(i, i).is_zero() && std::fabs(d) < 1e-250)
+        throw SimulationError("the equations of motion cannot be formed in doubles at t = " + num(t) + " s: the mass matrix entry M[" +
+                                  m.coords[i].name + "," + m.coords[i].name + "]" +
+                                  (d == 0 ? " underflows to 0" : " is " + num(d) + " in SI units, at the edge of what a double holds"),
+                              "simulate the scene at a larger scale: its masses and lengths are too small for doubles");
+    }
     throw SimulationError("the equations of motion are singular at t = " + num(t) + " s" +
                               (why.empty() ? ": M(q) is not positive definite (a coordinate that moves no mass?)" : ": " + why),
                           "give every coordinate a body with mass or inertia, or remove the redundant constraint");
