@@ -521,8 +521,17 @@ bool opens_block_scalar(const std::string& l) {
   if (b == 0 || (l[b - 1] != '|' && l[b - 1] != '>')) return false;
   --b;
   if (b == 0) return true;
-  return l[b - 1] == ' ' && l.find_last_not_of(' ', b - 1) != std::string::npos &&
-         (l[l.find_last_not_of(' ', b - 1)] == ':' || l[l.find_last_not_of(' ', b - 1)] == '-');
+  if (l[b - 1] != ' ') return false;
+  // before the indicator: "key:" or "-", with an anchor (&name) or a tag (!tag) between them
+  std::size_t p = l.find_last_not_of(' ', b - 1);
+  while (p != std::string::npos) {
+    std::size_t start = l.find_last_of(' ', p);
+    start = start == std::string::npos ? 0 : start + 1;
+    if (l[start] != '&' && l[start] != '!') break;
+    if (start == 0) return true;
+    p = l.find_last_not_of(' ', start - 1);
+  }
+  return p != std::string::npos && (l[p] == ':' || l[p] == '-');
 }
 
 std::size_t indentation(const std::string& l) {
@@ -560,6 +569,11 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
       continue;
     }
     char prev = 0;  // previous non-space character on this line (0: line start)
+    bool spaced = false;  // white space since prev
+    // the line so far holds only anchors, tags and '---' where a document's value starts (an
+    // unindented line: an indented one continues or nests in what came before)
+    bool doc_prefix = indentation(l) == 0;
+    bool top_flow = false;  // the outermost open bracket was opened where a document's value starts
     std::size_t end = li + 1 == line ? std::min<std::size_t>(l.size(), static_cast<std::size_t>(std::max(col, 1))) : l.size();
     for (std::size_t i = 0; i < end; ++i) {
       char c = l[i];
@@ -569,21 +583,47 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
           if (c == '\'' && i + 1 < l.size() && l[i + 1] == '\'') { ++i; continue; }
           st.quote.reset();
           prev = c;
+          spaced = false;
+          doc_prefix = false;
         }
         continue;
       }
-      if (c == ' ' || c == '\t' || c == '\r') continue;
-      bool node_start = prev == 0 || prev == ':' || prev == ',' || prev == '[' || prev == '{' || prev == '-' || prev == '?';
+      if (c == ' ' || c == '\t' || c == '\r') {
+        spaced = true;
+        continue;
+      }
+      // ':', '-' and '?' are indicators only when white space follows them
+      bool node_start = prev == 0 || prev == ',' || prev == '[' || prev == '{' ||
+                        ((prev == ':' || prev == '-' || prev == '?') && spaced);
       if (c == '#' && (i == 0 || l[i - 1] == ' ' || l[i - 1] == '\t')) break;
       if ((c == '"' || c == '\'') && node_start) {
         st.quote = Open{c, li + 1, static_cast<int>(i) + 1};
         continue;
       }
-      if (c == ',' && st.brackets.empty() && !st.stray_comma && (node_start || prev == ']' || prev == '}'))
+      // a ',' where a document's value would start sends yaml-cpp 0.7 into an endless loop: at the
+      // start of a line, after only anchors, tags or '---', or right after a top-level [ ] or { }
+      bool closed_top = (prev == ']' || prev == '}') && top_flow && st.brackets.empty();
+      if (c == ',' && st.brackets.empty() && !st.stray_comma && (i == 0 || (doc_prefix && node_start) || closed_top))
         st.stray_comma = Open{c, li + 1, static_cast<int>(i) + 1};
-      if ((c == '[' || c == '{') && node_start) st.brackets.push_back({c, li + 1, static_cast<int>(i) + 1});
-      else if ((c == ']' || c == '}') && !st.brackets.empty()) st.brackets.pop_back();
+      if ((c == '[' || c == '{') && node_start) {
+        if (st.brackets.empty()) top_flow = doc_prefix;
+        st.brackets.push_back({c, li + 1, static_cast<int>(i) + 1});
+      } else if ((c == ']' || c == '}') && !st.brackets.empty()) {
+        st.brackets.pop_back();
+      }
+      if (st.brackets.empty() && c != ']' && c != '}') {
+        // a token of the document prefix: &anchor, !tag, ---
+        bool prefix_token = (node_start || prev == 0) && (c == '&' || c == '!' || (c == '-' && l.compare(i, 3, "---") == 0));
+        if (prefix_token) {
+          while (i + 1 < end && l[i + 1] != ' ' && l[i + 1] != '\t') ++i;
+          prev = 0;  // what follows starts a value, as at the start of the line
+          spaced = false;
+          continue;
+        }
+        doc_prefix = false;
+      }
       prev = c;
+      spaced = false;
     }
   }
   return st;

@@ -841,6 +841,30 @@ TEST_CASE("solve and derive refuse a scene that asks for nothing", "[errors][cli
   }
 }
 
+TEST_CASE("the guard against yaml-cpp's comma loop refuses only commas where a value starts", "[errors][yaml]") {
+  // valid YAML that holds commas outside [ ] and { }: accepted
+  for (std::string title : {"title: Pendulum [Beer 17.3], SI units\n", "title: Disk {A}, rolling\n", "title: Why?, a test\n",
+                            "title: a rod\n  , continued on a line of its own\n", "title: 'quoted, with a comma'\n"}) {
+    INFO(title);
+    expect_ok(edit(kRod, "title: Rod sliding on two tracks\n", title));
+  }
+  expect_ok(edit(kRod, "title: Rod sliding on two tracks\n", "title: x\ndescription: &d >\n  , a text that starts with a comma\n"));
+  // where yaml-cpp 0.7 would loop for ever: refused, at the comma
+  struct Case {
+    std::string text;
+    int line, col;
+  };
+  for (const Case& c : {Case{"&x ,\n", 1, 4}, Case{"!t ,\n", 1, 4}, Case{"--- ,\n", 1, 5}, Case{"title: it is x:\"y\n---\n,\n", 3, 1},
+                        Case{"{a: 1}, b\n", 1, 7}, Case{"[a, b]\n,\n", 2, 1}}) {
+    INFO(c.text);
+    auto e = error_of(c.text);
+    REQUIRE(e.has_value());
+    CHECK(e->pos().line == c.line);
+    CHECK(e->pos().col == c.col);
+    CHECK_THAT(e->problem(), Contains("a ',' outside [ ] and { }, where a value should start"));
+  }
+}
+
 TEST_CASE("a scene larger than 1 MiB is refused before it is parsed", "[errors][files]") {
   std::string text = "title: a long description\ndescription: " + std::string(2 << 20, 'a') + "\n";
   auto e = error_of(text);
