@@ -169,7 +169,12 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
         return Value{v, Value::How::Double, 0, f->bound};
     }
   }
-  auto d = ev.digits(digits);
+  std::optional<numerics::Precise> d;
+  try {
+    d = ev.digits(digits);
+  } catch (const std::domain_error& e) {
+    throw SceneError(pos, "'" + name + "' cannot be evaluated: " + e.what(), "check the sizes of the angles in it");
+  }
   if (!d) return std::nullopt;
   if (d->exact) return Value{d->value, Value::How::Exact, 0, 0};
   if (d->zero_bound) return Value{0, Value::How::Zero, d->working, d->bound};

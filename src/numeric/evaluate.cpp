@@ -9,12 +9,36 @@ namespace kinergy::numerics {
 
 using namespace GiNaC;
 
+// A trigonometric function of x reduces x modulo 2π, and loses x's integer digits doing so: the
+// working precision that leaves `digits` digits after that (sin(1e300 deg) at 30 digits is noise).
+// 0 when more than 20 000 digits would be needed.
+static long covering_digits(const ex& v, long digits) {
+  long need = digits;
+  for (auto it = v.preorder_begin(); it != v.preorder_end(); ++it) {
+    if (!is_a<function>(*it)) continue;
+    const std::string name = ex_to<function>(*it).get_name();
+    if (name != "sin" && name != "cos" && name != "tan") continue;
+    ex a = it->op(0).evalf();
+    if (!is_a<GiNaC::numeric>(a) || !ex_to<GiNaC::numeric>(a).is_real() || ex_to<GiNaC::numeric>(a).is_zero()) continue;
+    double l = ex_to<GiNaC::numeric>(log(abs(ex_to<GiNaC::numeric>(a)))).to_double() / std::log(10.0);
+    if (!(l < 20000)) return 0;
+    // as the tape does: only when the integer digits would take a large share of the precision
+    const long int_digits = static_cast<long>(std::ceil(l));
+    if (int_digits > 0 && int_digits + 10 > digits / 2) need = std::max(need, 2 * (int_digits + 10) + digits);
+  }
+  return need <= 20000 ? need : 0;
+}
+
 std::optional<GiNaC::numeric> evaluate(const ex& e, const exmap& values, int digits) {
   long saved = Digits;
   Digits = digits;
   std::optional<GiNaC::numeric> out;
   try {
-    ex v = e.subs(values).evalf();
+    ex s = e.subs(values);
+    long need = covering_digits(s, digits);
+    if (need == 0) throw std::domain_error("an angle too large for the working precision");
+    Digits = need;
+    ex v = s.evalf();
     if (is_a<GiNaC::numeric>(v) && ex_to<GiNaC::numeric>(v).is_real()) out = ex_to<GiNaC::numeric>(v);
   } catch (const std::exception&) {
     out.reset();  // division by zero, domain errors: no number

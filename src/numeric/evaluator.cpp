@@ -97,16 +97,23 @@ struct MergeRoots : map_function {
   }
 };
 
-/// An exact value as a double, with a bound on its distance from the exact value.
+/// An exact value as a double, with a bound on its distance from the exact value; NaN (with an
+/// infinite bound) when no double holds it: a value that is not zero and rounds to 0, to a
+/// subnormal or to infinity (1e-400, 1e400) decides nothing through the double path.
 std::pair<double, double> rounded(const ex& exact) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN(), kInf = std::numeric_limits<double>::infinity();
   if (is_a<numeric>(exact) && ex_to<numeric>(exact).is_rational()) {
+    if (ex_to<numeric>(exact).is_zero()) return {0, 0};
     double d = to_double(exact);
+    if (!std::isnormal(d)) return {kNaN, kInf};
     return {d, rounding_error(d, exact)};
   }
   // π/6, √2 …: two precisions; their difference bounds the error of the lower one
   auto lo = to_cln(exact, 40), hi = to_cln(exact, 80);
   if (!lo || !hi) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()};
+  if (cln::zerop(*hi)) return {0, cln::double_approx(cln::abs(*lo))};
   double d = cln::double_approx(*hi);
+  if (!std::isnormal(d)) return {kNaN, kInf};
   double e = cln::double_approx(cln::abs(*hi - *lo)) + rounding_error(d, numeric(cln::cl_N(*hi)));
   return {d, e};
 }

@@ -75,6 +75,7 @@ TEST_CASE("a double that underflows, and an angle beyond the working precision, 
   CHECK_THAT(out, Catch::Contains("\"name\": \"tiny\", \"closed_form\": \"-b*exp(-a)\", \"value\": \"-6.59366295617712e-434295\""));
   CHECK_THAT(out, Catch::Contains("\"name\": \"sin_c\", \"closed_form\": \"sin(c)\", \"value\": \"-0.0565899244281819\""));
   CHECK_THAT(out, Catch::Contains("\"name\": \"cos_c\", \"closed_form\": \"cos(c)\", \"value\": \"-0.99839750623347\""));
+  CHECK_THAT(out, Catch::Contains("\"name\": \"small\", \"closed_form\": \"s*cos(k)\", \"value\": \"-9.89992496600445e-401\""));
   CHECK_THAT(out, !Catch::Contains("\"evaluation\": \"double"));
   out = kt::run_cli("solve " + scene + " --digits 30", status);
   CHECK(status == 0);
@@ -86,4 +87,12 @@ TEST_CASE("a double that underflows, and an angle beyond the working precision, 
     out = kt::run_cli("solve " + scene + " --digits " + std::to_string(d), status);
     CHECK(status == 0);
   }
+}
+
+TEST_CASE("a root chosen with an angle of 1e300 deg", "[numeric][digits][cli]") {
+  // reference: tests/data/numeric/out_of_range_reference.py (mpmath)
+  int status = 0;
+  std::string out = kt::run_cli("solve tests/data/numeric/big_angle.yaml --digits 25", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= 5.198240528322191594483011 rad/s"));
 }
