@@ -5,6 +5,7 @@
 //   kinergy simulate SCENE --until T [--tol E] [--method M] [--csv FILE] [--plot FILE] [--check]
 // Exit status: 0 ok, 1 bad scene / no solution / a claim fails, 2 usage.
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <cmath>
 #include <fstream>
@@ -31,14 +32,10 @@ namespace {
 CLI::Validator finite_in(double lo, double hi, bool lo_open, const std::string& what) {
   return CLI::Validator(
       [=](std::string& s) -> std::string {
-        std::size_t used = 0;
-        double v = 0;
-        try {
-          v = std::stod(s, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (s.empty() || used != s.size() || !std::isfinite(v)) return "'" + s + "' is not a number: give " + what;
+        // strtod, not stod: stod refuses a number too small for a normal double (1e-310)
+        char* end = nullptr;
+        const double v = std::strtod(s.c_str(), &end);
+        if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v)) return "'" + s + "' is not a number: give " + what;
         if (v < lo || v > hi || (lo_open && v == lo)) return s + " is out of range: give " + what;
         return "";
       },

@@ -30,7 +30,10 @@ static std::string one_line(const std::string& text) {
       std::string core = token.substr(b, e + 1 - b);
       std::size_t keep = std::min(kKeep, core.size());
       while (keep > 0 && keep < core.size() && (static_cast<unsigned char>(core[keep]) & 0xC0) == 0x80) --keep;  // whole UTF-8 characters
-      out += token.substr(0, b) + core.substr(0, keep) + "… (" + std::to_string(core.size()) + " characters)" +
+      // characters, not bytes: a UTF-8 character's continuation bytes are not counted
+      std::size_t chars = 0;
+      for (char ch : core) chars += (static_cast<unsigned char>(ch) & 0xC0) != 0x80;
+      out += token.substr(0, b) + core.substr(0, keep) + "… (" + std::to_string(chars) + " characters)" +
              token.substr(e + 1);
     } else {
       out += token;

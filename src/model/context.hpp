@@ -22,11 +22,13 @@ inline ex guard_powers(const Model& m, const ex& e) {
     if (!is_a<GiNaC::power>(*it)) continue;
     ex n = it->op(1);
     try {
-      n = n.subs(m.parameter_values());
+      // with the parameters' values and the values given at the states (x@1 in an exponent)
+      n = n.subs(m.parameter_values()).subs(m.given_values()).subs(m.parameter_values());
     } catch (const std::exception&) {
       continue;  // undefined for the values: reported where it is used
     }
-    if (!is_a<numeric>(n) || !ex_to<numeric>(n).is_integer() || abs(ex_to<numeric>(n)) <= kMaxExponent) continue;
+    // any real exponent: GiNaC splits 0.5^(10^9 + 1/2) into an integer power and a root
+    if (!is_a<numeric>(n) || !ex_to<numeric>(n).is_real() || abs(ex_to<numeric>(n)) <= kMaxExponent) continue;
     const std::string b = text(it->op(0)), x = text(it->op(1));
     throw InputError("the power " + b + "^" + x + " has the exponent " + text(n) + ", too large for exact arithmetic",
                      "check the exponent: at most 100000 in size (no physical quantity needs more)");

@@ -812,8 +812,12 @@ SceneDef load_file(const std::string& path) {
     throw SceneError({path, 1, 1}, "this is a directory, not a scene file", "name a .yaml file inside it");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError({path, 1, 1}, "cannot read the scene file", "check that you may read it (permissions)");
+  // at most one byte more than a scene may have (a device such as /dev/zero never ends)
+  std::string text(kMaxBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
   std::stringstream ss;
-  ss << in.rdbuf();
+  ss << text;
   if (in.bad()) throw SceneError({path, 1, 1}, "cannot read the scene file", "check that it is a readable file");
   return load_string(ss.str(), path);
 }

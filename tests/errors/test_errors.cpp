@@ -781,6 +781,10 @@ const ExactCase kExact[] = {
     {"contact_far_away.yaml", "33:3",
      "contact 'hit': bullet and bar.Q are 1e400 m apart at state 'before', so they cannot strike each other there \u2014 "
      "give positions at 'before' that bring the two points together"},
+    // an exponent that is a number only once the state's values are in (x@1 = 1 m)
+    {"exponent_from_state.yaml", "9:14",
+     "the power e^n*x@1*L^(-1) has the exponent 1000000000, too large for exact arithmetic \u2014 check the exponent: at "
+     "most 100000 in size (no physical quantity needs more)"},
     // yaml-cpp 0.7's LoadAll loops for ever on these, its memory growing
     {"comma_first.yaml", "1:1",
      "YAML syntax error: a ',' outside [ ] and { }, where a value should start \u2014 remove it, or quote the text it "
