@@ -783,7 +783,7 @@ const ExactCase kExact[] = {
      "give positions at 'before' that bring the two points together"},
     // an exponent that is a number only once the state's values are in (x@1 = 1 m)
     {"exponent_from_state.yaml", "9:14",
-     "the power e^n*x@1*L^(-1) has the exponent 1000000000, too large for exact arithmetic \u2014 check the exponent: at "
+     "a power here has the exponent 1000000000, too large for exact arithmetic \u2014 check the exponent: at "
      "most 100000 in size (no physical quantity needs more)"},
     // yaml-cpp 0.7's LoadAll loops for ever on these, its memory growing
     {"comma_first.yaml", "1:1",
@@ -808,7 +808,7 @@ const ExactCase kExact[] = {
      "the file holds a NUL byte: it is not a text file \u2014 save the scene as plain text (UTF-8)"},
     // 0.5^1000000000 in exact arithmetic has a billion-bit denominator
     {"huge_power_parameter.yaml", "9:14",
-     "the power e^n has the exponent 1000000000, too large for exact arithmetic \u2014 check the exponent: at most 100000 "
+     "a power here has the exponent 1000000000, too large for exact arithmetic \u2014 check the exponent: at most 100000 "
      "in size (no physical quantity needs more)"},
 };
 }  // namespace
