@@ -55,6 +55,10 @@ struct Parser {
                "write a smaller number, or give the value as a decimal with an exponent (e.g. 1e30)", at);
       }
     }
+    // 0 to a negative power: refused before GiNaC::pow, whose node would leak when its
+    // evaluation throws the division by zero
+    if (b.is_zero() && GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_real() && GiNaC::ex_to<numeric>(x).is_negative())
+      fail("'" + text_of(b) + "^" + text_of(x) + "' is undefined (division by zero)", "check the expression", at);
     try {
       return GiNaC::pow(b, x);
     } catch (const std::exception& e) {
