@@ -1,6 +1,7 @@
 // The expression context of a scene (private to src/model): which names an expression may use
 // where it stands, and the built-in quantities (T, V, speed(P), impulse(effect, S1, S2), …).
 #pragma once
+#include <optional>
 #include <string>
 
 #include "kinergy/common/error.hpp"
@@ -18,14 +19,21 @@ using namespace GiNaC;
 /// values, is refused. @returns e. @throws InputError.
 inline ex guard_powers(const Model& m, const ex& e) {
   static const numeric kMaxExponent(100000);
+  std::optional<exmap> params, given;  // built once, and only for an exponent that is not a number
   for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
     if (!is_a<GiNaC::power>(*it)) continue;
     ex n = it->op(1);
-    try {
-      // with the parameters' values and the values given at the states (x@1 in an exponent)
-      n = n.subs(m.parameter_values()).subs(m.given_values()).subs(m.parameter_values());
-    } catch (const std::exception&) {
-      continue;  // undefined for the values: reported where it is used
+    if (!is_a<numeric>(n)) {
+      if (!params) {
+        params = m.parameter_values();
+        given = m.given_values();
+      }
+      try {
+        // with the parameters' values and the values given at the states (x@1 in an exponent)
+        n = n.subs(*params).subs(*given).subs(*params);
+      } catch (const std::exception&) {
+        continue;  // undefined for the values: reported where it is used
+      }
     }
     // any real exponent: GiNaC splits 0.5^(10^9 + 1/2) into an integer power and a root
     if (!is_a<numeric>(n) || !ex_to<numeric>(n).is_real() || abs(ex_to<numeric>(n)) <= kMaxExponent) continue;
