@@ -558,6 +558,12 @@ struct OpenAt {
 OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
   OpenAt st;
   std::optional<std::size_t> block;  // indentation of the line that opened a block scalar
+  // Where the current document is: nothing yet but anchors, tags and '---' (Empty); one whole
+  // value in [ ], { } or quotes (Value); anything else (Content). A ',' outside brackets before
+  // Content sends yaml-cpp 0.7's LoadAll into an endless loop, at any indentation.
+  enum class Doc { Empty, Value, Content } doc = Doc::Empty;
+  bool top_flow = false;   // the outermost open bracket was opened where the document's value starts
+  bool top_quote = false;  // the open quote was opened there
   for (int li = 0; li < static_cast<int>(lines.size()) && li < line; ++li) {
     const std::string& l = lines[li];
     if (block) {
@@ -566,14 +572,18 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
     }
     if (!st.quote && st.brackets.empty() && opens_block_scalar(l)) {
       block = indentation(l);
+      doc = Doc::Content;
       continue;
+    }
+    if (!st.quote && st.brackets.empty()) {
+      if (l.rfind("...", 0) == 0 && (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r')) {
+        doc = Doc::Empty;  // the end of a document
+        continue;
+      }
+      if (!l.empty() && l[0] == '%' && doc == Doc::Empty) continue;  // a directive
     }
     char prev = 0;  // previous non-space character on this line (0: line start)
     bool spaced = false;  // white space since prev
-    // the line so far holds only anchors, tags and '---' where a document's value starts (an
-    // unindented line: an indented one continues or nests in what came before)
-    bool doc_prefix = indentation(l) == 0;
-    bool top_flow = false;  // the outermost open bracket was opened where a document's value starts
     std::size_t end = li + 1 == line ? std::min<std::size_t>(l.size(), static_cast<std::size_t>(std::max(col, 1))) : l.size();
     for (std::size_t i = 0; i < end; ++i) {
       char c = l[i];
@@ -582,9 +592,10 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
         if (c == st.quote->c) {
           if (c == '\'' && i + 1 < l.size() && l[i + 1] == '\'') { ++i; continue; }
           st.quote.reset();
+          if (top_quote) doc = Doc::Value;
+          top_quote = false;
           prev = c;
           spaced = false;
-          doc_prefix = false;
         }
         continue;
       }
@@ -598,29 +609,32 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
       if (c == '#' && (i == 0 || l[i - 1] == ' ' || l[i - 1] == '\t')) break;
       if ((c == '"' || c == '\'') && node_start) {
         st.quote = Open{c, li + 1, static_cast<int>(i) + 1};
+        top_quote = st.brackets.empty() && doc == Doc::Empty;
         continue;
       }
-      // a ',' where a document's value would start sends yaml-cpp 0.7 into an endless loop: at the
-      // start of a line, after only anchors, tags or '---', or right after a top-level [ ] or { }
-      bool closed_top = (prev == ']' || prev == '}') && top_flow && st.brackets.empty();
-      if (c == ',' && st.brackets.empty() && !st.stray_comma && (i == 0 || (doc_prefix && node_start) || closed_top))
+      // a ',' where the document's value would start, or right after a whole value in [ ], { } or
+      // quotes; and a ',' at the start of a line (always an error)
+      if (c == ',' && st.brackets.empty() && !st.stray_comma && (i == 0 || doc != Doc::Content))
         st.stray_comma = Open{c, li + 1, static_cast<int>(i) + 1};
       if ((c == '[' || c == '{') && node_start) {
-        if (st.brackets.empty()) top_flow = doc_prefix;
+        if (st.brackets.empty()) top_flow = doc == Doc::Empty;
         st.brackets.push_back({c, li + 1, static_cast<int>(i) + 1});
       } else if ((c == ']' || c == '}') && !st.brackets.empty()) {
         st.brackets.pop_back();
-      }
-      if (st.brackets.empty() && c != ']' && c != '}') {
-        // a token of the document prefix: &anchor, !tag, ---
-        bool prefix_token = (node_start || prev == 0) && (c == '&' || c == '!' || (c == '-' && l.compare(i, 3, "---") == 0));
-        if (prefix_token) {
+        if (st.brackets.empty() && top_flow) doc = Doc::Value;
+      } else if (st.brackets.empty()) {
+        // a token of the document prefix: &anchor, !tag, '---' (which starts a new document)
+        bool prefix_token = doc == Doc::Empty && node_start && (c == '&' || c == '!');
+        bool new_doc = prev == 0 && i == 0 && l.compare(0, 3, "---") == 0 &&
+                       (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r');
+        if (prefix_token || new_doc) {
+          if (new_doc) doc = Doc::Empty;
           while (i + 1 < end && l[i + 1] != ' ' && l[i + 1] != '\t') ++i;
           prev = 0;  // what follows starts a value, as at the start of the line
           spaced = false;
           continue;
         }
-        doc_prefix = false;
+        doc = Doc::Content;
       }
       prev = c;
       spaced = false;

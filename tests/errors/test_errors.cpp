@@ -789,6 +789,10 @@ const ExactCase kExact[] = {
     {"comma_first.yaml", "1:1",
      "YAML syntax error: a ',' outside [ ] and { }, where a value should start \u2014 remove it, or quote the text it "
      "belongs to: a comma separates the entries of a list in [ ] or of a map in { }"},
+    // found by the fuzzer: the comma need not be at the start of the line
+    {"comma_indented.yaml", "2:2",
+     "YAML syntax error: a ',' outside [ ] and { }, where a value should start \u2014 remove it, or quote the text it "
+     "belongs to: a comma separates the entries of a list in [ ] or of a map in { }"},
     {"comma_after_flow.yaml", "3:1",
      "YAML syntax error: a ',' outside [ ] and { }, where a value should start \u2014 remove it, or quote the text it "
      "belongs to: a comma separates the entries of a list in [ ] or of a map in { }"},
@@ -859,7 +863,14 @@ TEST_CASE("the guard against yaml-cpp's comma loop refuses only commas where a v
     int line, col;
   };
   for (const Case& c : {Case{"&x ,\n", 1, 4}, Case{"!t ,\n", 1, 4}, Case{"--- ,\n", 1, 5}, Case{"title: it is x:\"y\n---\n,\n", 3, 1},
-                        Case{"{a: 1}, b\n", 1, 7}, Case{"[a, b]\n,\n", 2, 1}}) {
+                        Case{"{a: 1}, b\n", 1, 7}, Case{"[a, b]\n,\n", 2, 1},
+                        // at any indentation, after blank lines, comments, directives or a document's end, and after
+                        // one whole value in brackets or quotes
+                        Case{" ,a\n", 1, 2}, Case{"\t,a\n", 1, 2}, Case{"\n ,erev\n", 2, 2}, Case{"# c\n  ,a\n", 2, 3},
+                        Case{" &x ,a\n", 1, 5}, Case{"  [1]\n ,a\n", 2, 2}, Case{" {a: 1} ,b\n", 1, 9},
+                        Case{" \"x\" ,a\n", 1, 6}, Case{"'x'\n,a\n", 2, 1}, Case{"title: x\n---\n ,b\n", 3, 2},
+                        Case{"title: x\n...\n ,b\n", 3, 2}, Case{"%YAML 1.2\n---\n ,a\n", 3, 2},
+                        Case{"--- [1]\n--- ,a\n", 2, 5}}) {
     INFO(c.text);
     auto e = error_of(c.text);
     REQUIRE(e.has_value());
