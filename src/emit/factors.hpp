@@ -21,12 +21,12 @@ struct Factors {
   GiNaC::exvector root_num, root_den;
 };
 
-/// A term with a negative numeric coefficient.
-bool negative_term(const GiNaC::ex& t);
-
 /// A sum and its negative print alike but for the sign: true when the negative is the one to
 /// print (more negative terms; ties: the first term in plain-text order is negative).
 bool flip_sum(const GiNaC::ex& b);
+
+/// The number of a sum's terms that print positive less the number that print negative.
+int sum_orientation(const GiNaC::ex& b);
 
 /// Multiply the integers under the root into rn (above the bar) and rd (below), take them out
 /// of the groups, and reduce rn/rd.
@@ -35,7 +35,9 @@ void take_root_numbers(Factors& f, GiNaC::numeric& rn, GiNaC::numeric& rd);
 /// Sort one factor of a product into `out`.
 void classify(const GiNaC::ex& f, Factors& out);
 
-/// Every factor of a product (or the one expression) sorted into its groups.
-Factors split(const GiNaC::ex& e);
+/// Every factor of a product (or the one expression) sorted into its groups. With
+/// `turn_positive` (a product that stands alone, not a term of a sum) a negative product turns
+/// a sum in it round instead, when that sum reads about as well either way.
+Factors split(const GiNaC::ex& e, bool turn_positive = false);
 
 }  // namespace kinergy::emit::detail

@@ -397,7 +397,6 @@ enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
 
 using detail::Factor;
 using detail::Factors;
-using detail::negative_term;
 
 /// Parentheses that grow with what they hold.
 std::string paren(const std::string& s) {
@@ -449,8 +448,10 @@ public:
     if (is_a<mul>(e)) return product(e, ctx);
     if (is_a<power>(e)) {
       ex k = e.op(1);
+      // negative and half-integer powers, and integer powers of sums (oriented as factors are)
       if (is_a<numeric>(k) && ex_to<numeric>(k).is_rational() &&
-          (ex_to<numeric>(k).is_negative() || ex_to<numeric>(k).denom() == 2))
+          (ex_to<numeric>(k).is_negative() || ex_to<numeric>(k).denom() == 2 ||
+           (ex_to<numeric>(k).is_integer() && is_a<add>(e.op(0)))))
         return product(e, ctx);
       if (is_a<numeric>(k) && ex_to<numeric>(k).is_rational()) return factor_text({e.op(0), ex_to<numeric>(k)}, ctx);
       if (is_a<function>(e.op(0)) && ex_to<function>(e.op(0)).get_name() == "exp")
@@ -585,14 +586,18 @@ private:
   }
 
   std::string product(const ex& e, int ctx, bool one_fraction = false) const {
-    Factors f = detail::split(e);
+    Factors f = detail::split(e, ctx == 0);
     bool neg = f.coef.is_negative();
     numeric c = neg ? -f.coef : f.coef;
     // the numbers under a root made one reduced fraction; the number in front stays in front
     // (\frac{3 \sqrt{2 g h}}{2 l}, where the plain printer folds it in: sqrt(9*g*h/2)/l)
     if (!f.root_num.empty() || !f.root_den.empty()) {
       // a product under the root taken apart: its numbers join the others, x^-k goes below
-      auto flatten = [](exvector& up, exvector& down) {
+      // A number's sign stays apart (GiNaC gives the sums of a product the signs its term order
+      // picks, and the coefficient the sign that makes up for them), so that the squares taken
+      // out and the fraction made below see the same numbers in every run.
+      bool minus = false;
+      auto flatten = [&minus](exvector& up, exvector& down) {
         exvector keep_up, add_down;
         for (auto& x : up) {
           if (!is_a<mul>(x)) {
@@ -602,7 +607,8 @@ private:
           for (std::size_t i = 0; i < x.nops(); ++i) {
             const ex& y = x.op(i);
             if (is_a<numeric>(y) && ex_to<numeric>(y).is_rational()) {
-              keep_up.push_back(ex_to<numeric>(y).numer());
+              if (ex_to<numeric>(y).is_negative()) minus = !minus;
+              keep_up.push_back(abs(ex_to<numeric>(y).numer()));
               add_down.push_back(ex_to<numeric>(y).denom());
             } else if (is_a<power>(y) && is_a<numeric>(y.op(1)) && ex_to<numeric>(y.op(1)).is_negative()) {
               add_down.push_back(pow(y.op(0), -y.op(1)));
@@ -651,6 +657,7 @@ private:
       }
       if (rn != 1) f.root_num.insert(f.root_num.begin(), rn);
       if (rd != 1) f.root_den.insert(f.root_den.begin(), rd);
+      if (minus) f.root_num.push_back(-1);  // the sums under the root take it when printed
     }
     bool has_root = !f.root_num.empty() || !f.root_den.empty();
     // the numerator: names, sums, the root, functions

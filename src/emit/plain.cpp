@@ -17,7 +17,6 @@ using detail::Factor;
 using detail::Factors;
 using detail::classify;
 using detail::flip_sum;
-using detail::negative_term;
 
 enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
 
@@ -71,17 +70,51 @@ std::string join(std::vector<Factor> v) {
   return s;
 }
 
-std::string join(const exvector& v) {
-  std::vector<Factor> f;
-  for (auto& x : v) f.push_back({x, 1});
-  std::string s = join(f);
-  // a lone product under a root's division bar still needs its parentheses
-  if (v.size() == 1 && is_a<mul>(v[0])) s = "(" + s + ")";
-  return s;
+/// The products in a root's groups taken apart: a factor x^−k goes to the other group as x^k,
+/// a fraction's numerator and denominator to their groups. A number's sign is kept apart (GiNaC
+/// gives a product's coefficient the sign that makes up for the signs it chose for the sums in
+/// it) and returned, so that the numbers reduced next are the same in every run.
+bool flatten_roots(Factors& f) {
+  bool minus = false;
+  auto take = [&minus](exvector& up, exvector& down) {
+    exvector keep, more_down;
+    for (auto& x : up) {
+      if (!is_a<mul>(x)) {
+        keep.push_back(x);
+        continue;
+      }
+      for (std::size_t i = 0; i < x.nops(); ++i) {
+        const ex& y = x.op(i);
+        if (is_a<numeric>(y) && ex_to<numeric>(y).is_rational()) {
+          if (ex_to<numeric>(y).is_negative()) minus = !minus;
+          keep.push_back(abs(ex_to<numeric>(y).numer()));
+          more_down.push_back(ex_to<numeric>(y).denom());
+        } else if (is_a<power>(y) && is_a<numeric>(y.op(1)) && ex_to<numeric>(y.op(1)).is_negative()) {
+          more_down.push_back(pow(y.op(0), -y.op(1)));
+        } else {
+          keep.push_back(y);
+        }
+      }
+    }
+    up = keep;
+    down.insert(down.end(), more_down.begin(), more_down.end());
+  };
+  take(f.root_num, f.root_den);
+  take(f.root_den, f.root_num);
+  auto drop_ones = [](exvector& v) {
+    exvector keep;
+    for (auto& x : v)
+      if (!x.is_equal(1)) keep.push_back(x);
+    v = keep;
+  };
+  drop_ones(f.root_num);
+  drop_ones(f.root_den);
+  return minus;
 }
 
 std::string product(const ex& e, int ctx) {
-  Factors f = detail::split(e);
+  Factors f = detail::split(e, ctx == 0);
+  bool root_minus = flatten_roots(f);
   bool neg = f.coef.is_negative();
   numeric c = neg ? -f.coef : f.coef;
   auto has_number = [](const exvector& v) {
@@ -111,13 +144,12 @@ std::string product(const ex& e, int ctx) {
   std::string n = join(f.num);
   if (!n.empty()) top += (top.empty() ? "" : "*") + n;
   if (!f.root_num.empty() || !f.root_den.empty()) {
-    bool lone = f.root_num.size() == 1 && f.root_den.empty();
-    std::string in = f.root_num.empty() ? "1" : lone ? print(f.root_num[0], 0) : join(f.root_num);
-    if (!f.root_den.empty()) {
-      std::string d = join(f.root_den);
-      in += "/" + (f.root_den.size() > 1 ? "(" + d + ")" : d);
-    }
-    top += (top.empty() ? "" : "*") + std::string("sqrt(") + in + ")";
+    // what stands under the root, printed as one product (its sums turned as a product's are,
+    // the sign kept apart back on it)
+    ex inner = root_minus ? -1 : 1;
+    for (auto& x : f.root_num) inner = inner * x;
+    for (auto& x : f.root_den) inner = inner / x;
+    top += (top.empty() ? "" : "*") + std::string("sqrt(") + print(inner, 0) + ")";
   }
   std::string d = join(f.den);
   if (!d.empty()) bottom += (bottom.empty() ? "" : "*") + d;
@@ -145,46 +177,43 @@ std::string print(const ex& e, int ctx) {
     return ex_to<symbol>(e).get_name();
   }
   if (is_a<add>(e)) {
-    std::string s;
-    // terms with a positive sign first reads better: "g*m + sqrt(…)" not "-… + …"
-    exvector pos, negs;
+    // each term with its sign as printed (a product takes the sign of a sum it flipped, so
+    // GiNaC's own choice of signs inside does not show): positive terms first ("g*m + sqrt(…)",
+    // not "-… + …"), each group in the order of its text
+    struct Term {
+      std::string key, text;
+    };
+    std::vector<Term> pos, negs;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-      ex t = e.op(i);
-      bool neg = (is_a<numeric>(t) && ex_to<numeric>(t).is_negative()) ||
-                 (is_a<mul>(t) && is_a<numeric>(t.op(t.nops() - 1)) && ex_to<numeric>(t.op(t.nops() - 1)).is_negative());
-      (neg ? negs : pos).push_back(t);
+      const ex& term = e.op(i);
+      std::string k = key(term, kSum);
+      bool neg = !k.empty() && k[0] == '-';
+      if (neg) k = k.substr(1);
+      // a term with a negative number in front is printed negated ("1 - e", with a value "1 - 0.5")
+      bool coef_neg = (is_a<numeric>(term) && ex_to<numeric>(term).is_negative()) ||
+                      (is_a<mul>(term) && is_a<numeric>(term.op(term.nops() - 1)) &&
+                       ex_to<numeric>(term.op(term.nops() - 1)).is_negative());
+      std::string t = coef_neg && neg ? print(-term, kSum) : print(term, kSum);
+      if (!t.empty() && t[0] == '-') t = t.substr(1);
+      (neg ? negs : pos).push_back({k, t});
     }
-    auto by_text = [](exvector& v, bool negate) {
-      std::vector<std::pair<std::string, ex>> k;
-      for (auto& t : v) k.push_back({key(negate ? ex(-t) : t, kSum), t});
-      std::stable_sort(k.begin(), k.end(), [](auto& a, auto& b) {
-        // plain names before numbers-first products: "g*m + …"; then alphabetical
-        return a.first < b.first;
-      });
-      for (std::size_t i = 0; i < v.size(); ++i) v[i] = k[i].second;
+    auto by_key = [](std::vector<Term>& v) {
+      std::stable_sort(v.begin(), v.end(), [](const Term& a, const Term& b) { return a.key < b.key; });
     };
-    by_text(pos, false);
-    by_text(negs, true);
-    // a term may print with a sign of its own (a product that flipped a sum): "a - m*(x - y)",
-    // never "a + -m*(y - x)"
-    auto put = [&](const ex& t, bool minus) {
-      std::string x = print(t, kSum);
-      if (!x.empty() && x[0] == '-') {
-        x = x.substr(1);
-        minus = !minus;
-      }
-      s += s.empty() ? (minus ? "-" : "") : (minus ? " - " : " + ");
-      s += x;
-    };
-    for (auto& t : pos) put(t, false);
-    for (auto& t : negs) put(-t, true);
+    by_key(pos);
+    by_key(negs);
+    std::string s;
+    for (auto& t : pos) s += (s.empty() ? "" : " + ") + t.text;
+    for (auto& t : negs) s += (s.empty() ? "-" : " - ") + t.text;
     return ctx > kSum ? "(" + s + ")" : s;
   }
   if (is_a<mul>(e)) return product(e, ctx);
   if (is_a<power>(e)) {
     ex k = e.op(1);
+    // negative and half-integer powers, and integer powers of sums (oriented as factors are)
     if (is_a<numeric>(k) && ex_to<numeric>(k).is_rational() &&
-        (ex_to<numeric>(k).is_negative() || ex_to<numeric>(k).denom() == 2))
+        (ex_to<numeric>(k).is_negative() || ex_to<numeric>(k).denom() == 2 ||
+         (ex_to<numeric>(k).is_integer() && is_a<add>(e.op(0)))))
       return product(e, ctx);
     std::string s = print(e.op(0), kAtom) + "^" + print(k, kAtom);
     return ctx > kPower ? "(" + s + ")" : s;
@@ -219,28 +248,37 @@ std::string plain(const ex& e, const SymbolTexts& names) {
 
 namespace detail {
 
-bool negative_term(const ex& t) {
-  return (is_a<numeric>(t) && ex_to<numeric>(t).is_negative()) ||
-         (is_a<mul>(t) && is_a<numeric>(t.op(t.nops() - 1)) && ex_to<numeric>(t.op(t.nops() - 1)).is_negative());
-}
-
 // A sum and its negative print alike but for the sign: pick the one with more positive terms
 // (ties: the one whose first term, in text order, is positive), so r − R and −(R − r) agree.
+// A term's sign is the one it prints with: GiNaC's own choice of sign for a sum inside a term
+// (it depends on its term order, so on addresses) changes neither the count nor the texts.
+int sum_orientation(const ex& b) {
+  if (!is_a<add>(b)) return 0;
+  int balance = 0;
+  for (std::size_t i = 0; i < b.nops(); ++i) {
+    std::string k = key(b.op(i), kSum);
+    balance += !k.empty() && k[0] == '-' ? -1 : 1;
+  }
+  return balance;
+}
+
 bool flip_sum(const ex& b) {
   if (!is_a<add>(b)) return false;
-  int pos = 0, neg = 0;
+  int o = sum_orientation(b);
+  if (o != 0) return o < 0;  // more negative terms than positive
+  // a tie: the first term in text order positive
   std::string first;
   bool first_neg = false;
   for (std::size_t i = 0; i < b.nops(); ++i) {
-    bool n = negative_term(b.op(i));
-    (n ? neg : pos)++;
-    std::string k = key(n ? ex(-b.op(i)) : b.op(i), kSum);
-    if (first.empty() || k < first) {
+    std::string k = key(b.op(i), kSum);
+    bool n = !k.empty() && k[0] == '-';
+    if (n) k = k.substr(1);
+    if (i == 0 || k < first) {
       first = k;
       first_neg = n;
     }
   }
-  return neg > pos || (neg == pos && first_neg);
+  return first_neg;
 }
 
 void classify(const ex& f, Factors& out) {
@@ -286,12 +324,37 @@ void classify(const ex& f, Factors& out) {
   }
 }
 
-Factors split(const ex& e) {
+Factors split(const ex& e, bool turn_positive) {
   Factors f;
   if (is_a<mul>(e))
     for (std::size_t i = 0; i < e.nops(); ++i) classify(e.op(i), f);
   else
     classify(e, f);
+  // A product reads better positive: when it comes out negative, a sum in it (to an odd power)
+  // with as many negative terms as positive, or one more positive, is turned round instead:
+  // 3·(a + b − c − d)/m rather than −3·(c + d − a − b)/m, (m·u − J)/m rather than −(J − m·u)/m.
+  // The choice depends on the product's value and the texts only, never on which way round
+  // GiNaC stored a sum. Only for a product that stands alone: a term of a sum keeps the sign
+  // its sums give it, so that a term and its negative print alike but for the sign.
+  if (turn_positive && f.coef.is_negative()) {
+    Factor* best = nullptr;
+    std::pair<int, std::string> best_key;
+    for (auto* group : {&f.num, &f.den})
+      for (auto& x : *group) {
+        if (!x.k.is_integer() || !x.k.is_odd() || !is_a<add>(x.base)) continue;
+        int balance = sum_orientation(x.base);
+        if (balance < 0 || balance > 1) continue;
+        std::pair<int, std::string> k{balance, key(x.base, kAtom)};
+        if (!best || k < best_key) {
+          best = &x;
+          best_key = k;
+        }
+      }
+    if (best) {
+      best->base = -best->base;
+      f.coef = -f.coef;
+    }
+  }
   return f;
 }
 

@@ -1,8 +1,8 @@
 #include "kinergy/model/simplify.hpp"
 
-#include <sstream>
-
+#include <algorithm>
 #include <optional>
+#include <sstream>
 
 namespace kinergy::model {
 
@@ -22,9 +22,17 @@ ex factor_any(const ex& e) {
   exmap repl;
   ex p = e.to_polynomial(repl);
   ex f = factor(p);
+  // factor() leaves an irreducible factor in a nested form that follows GiNaC's choice of main
+  // variable (by term order, so by addresses): each factor is written expanded instead
+  ex out = 1;
+  for (auto& x : factors_of(f)) {
+    if (is_a<add>(x)) out *= x.expand();
+    else if (is_a<power>(x) && is_a<add>(x.op(0))) out *= pow(x.op(0).expand(), x.op(1));
+    else out *= x;
+  }
   exmap back;
   for (auto& [sym, orig] : repl) back[sym] = orig;
-  return f.subs(back);
+  return out.subs(back);
 }
 
 namespace {
@@ -45,8 +53,9 @@ ex factored(const ex& e) {
   // numerator and denominator factored apart, kept only when that is shorter
   if (ex_size(e) > 1500) return e;
   try {
+    // numer_denom() normalises (so expands) what stands under a root: factored again there
     ex nd = numer_denom(e);
-    ex f = factor_any(nd.op(0)) / factor_any(nd.op(1));
+    ex f = root_simplify(factor_any(nd.op(0)) / factor_any(nd.op(1)));
     return ex_size(f) < ex_size(e) ? f : e;
   } catch (const std::exception&) {
     return e;  // not a rational function GiNaC can factor
@@ -77,6 +86,24 @@ std::string math_fault(const std::exception& err) {
 }
 
 std::size_t ex_size(const ex& e) {
+  // GiNaC writes a sum that is a factor with the sign its term order picks (the order depends
+  // on addresses), so −1 coefficients are not counted: a form and its sign-flipped twin have
+  // one size. A product counts its other factors, and its coefficient when that is not ±1.
+  if (is_a<mul>(e)) {
+    std::size_t n = 0, factors = 0;
+    bool unit = true;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      if (is_a<numeric>(e.op(i))) {
+        unit = abs(ex_to<numeric>(e.op(i))) == 1;
+        continue;
+      }
+      n += ex_size(e.op(i));
+      ++factors;
+    }
+    if (factors == 1 && unit) return n;  // −x counts as x
+    return 1 + n + (unit ? 0 : 1);
+  }
+  if (is_a<numeric>(e)) return 1;
   std::size_t n = 1;
   for (std::size_t i = 0; i < e.nops(); ++i) n += ex_size(e.op(i));
   return n;
@@ -151,7 +178,9 @@ struct unroot : public map_function {
     if (ex_size(b) > 300) return m;  // factoring large expressions costs more than it gives
     ex f;
     try {
-      f = factor_any(normal(b));
+      // numerator and denominator factored apart (factor() takes a denominator for a symbol)
+      ex nd = numer_denom(normal(b));
+      f = factor_any(nd.op(0)) / factor_any(nd.op(1));
     } catch (const std::exception&) {
       return m;
     }
@@ -172,11 +201,42 @@ struct unroot : public map_function {
   }
 };
 
+// √a·√b = √(a·b) for a > 0 (any b): every half-integer power of a positive base in a product
+// goes under one root, and into the one square root of a base of unknown sign when the product
+// has exactly one; GiNaC cancels what it can there. GiNaC leaves l^(1/2)·(l·m)^(−1/2) or
+// √2·√(2x) apart, and whether a form arrives split one way or another follows its term order
+// (so addresses).
+struct merge_roots : public map_function {
+  ex operator()(const ex& e) override {
+    ex m = e.map(*this);
+    if (!is_a<mul>(m)) return m;
+    ex inside = 1, rest = 1, other;
+    int positive = 0, others = 0;
+    for (std::size_t i = 0; i < m.nops(); ++i) {
+      const ex& f = m.op(i);
+      bool half = is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).denom() == 2;
+      if (half && f.op(0).info(info_flags::positive)) {
+        inside *= pow(f.op(0), f.op(1) * 2);  // b^k = (b^(2k))^(1/2), b > 0
+        ++positive;
+        continue;
+      }
+      if (half && f.op(1).is_equal(numeric(1, 2))) {
+        other = f.op(0);
+        ++others;
+      }
+      rest *= f;
+    }
+    if (positive == 0 || (positive == 1 && others != 1)) return m;
+    if (others == 1) return (rest / sqrt(other)) * sqrt(inside * other);  // √a·√b = √(a·b), a > 0
+    return rest * sqrt(inside);
+  }
+};
+
 }  // namespace
 
 ex unshift_trig(const ex& e) { return unshift()(e); }
 
-ex root_simplify(const ex& e) { return unroot()(e); }
+ex root_simplify(const ex& e) { return unroot()(merge_roots()(e)); }
 
 ex trig_simplify(const ex& e) {
   ex x = unshift()(e).expand();

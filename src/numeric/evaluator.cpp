@@ -1,5 +1,7 @@
 #include "kinergy/numeric/evaluator.hpp"
 
+#include "kinergy/expr/canonical.hpp"
+
 #include <cfenv>
 #include <cmath>
 #include <stdexcept>
@@ -55,7 +57,11 @@ struct Promote : map_function {
       const bool sum = is_a<add>(e);
       ex exact = sum ? 0 : 1, rest = sum ? 0 : 1;
       int n_exact = 0;
-      for (const ex& x : e) {
+      // the operands in the order of their keys, so that the parts are numbered alike in every run
+      std::vector<std::pair<std::string, ex>> ordered;
+      for (const ex& x : e) ordered.push_back({expr::key(x).text, x});
+      std::stable_sort(ordered.begin(), ordered.end(), [](auto& a, auto& b) { return a.first < b.first; });
+      for (const auto& [k, x] : ordered) {
         if (rational_in(x, values)) {
           exact = sum ? exact + x : exact * x;
           ++n_exact;

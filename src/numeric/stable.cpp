@@ -1,7 +1,10 @@
 #include "kinergy/numeric/stable.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <vector>
+
+#include "kinergy/expr/canonical.hpp"
 
 namespace kinergy::numerics {
 
@@ -9,9 +12,12 @@ using namespace GiNaC;
 
 namespace {
 
+/// The factors of a term, in the order of their keys (not GiNaC's, which follows addresses).
 std::vector<ex> factors(const ex& t) {
-  if (is_a<mul>(t)) return std::vector<ex>(t.begin(), t.end());
-  return {t};
+  if (!is_a<mul>(t)) return {t};
+  std::vector<ex> f(t.begin(), t.end());
+  std::stable_sort(f.begin(), f.end(), [](const ex& a, const ex& b) { return expr::key(a).text < expr::key(b).text; });
+  return f;
 }
 
 bool same(const ex& a, const ex& b) { return a.is_equal(b) || (a - b).expand().is_zero(); }
@@ -139,7 +145,10 @@ std::optional<ex> pair_rewrite(const ex& ti, const ex& tj) {
 }
 
 ex rewrite_sum(const ex& s) {
+  // the terms in the order of their keys: where several pairs could be rewritten, the same pair
+  // is, in every run (GiNaC's order follows addresses)
   std::vector<ex> terms(s.begin(), s.end());
+  std::stable_sort(terms.begin(), terms.end(), [](const ex& a, const ex& b) { return expr::key(a).text < expr::key(b).text; });
   bool changed = true;
   while (changed) {
     changed = false;

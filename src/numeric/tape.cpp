@@ -1,5 +1,7 @@
 #include "kinergy/numeric/tape.hpp"
 
+#include "kinergy/expr/canonical.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -70,11 +72,20 @@ private:
     if (is_a<GiNaC::constant>(e)) return constant(e);
     if (is_a<symbol>(e)) throw std::invalid_argument("tape: '" + to_text(e) + "' is not an input");
     if (is_a<add>(e) || is_a<mul>(e)) {
-      // a chain of binary operations over the operands (a numeric coefficient last in GiNaC)
+      // a chain of binary operations over the operands, in the order of their keys (GiNaC's own
+      // order follows addresses, and the rounding follows the order): plain factors before
+      // reciprocals, a number last
       bool sum = is_a<add>(e);
-      std::int32_t acc = node(e.op(0));
-      for (std::size_t i = 1; i < e.nops(); ++i) {
+      std::vector<std::pair<std::pair<int, std::string>, ex>> ordered;
+      for (std::size_t i = 0; i < e.nops(); ++i) {
         const ex& x = e.op(i);
+        int group = is_a<numeric>(x) ? 2 : (!sum && is_a<power>(x) && x.op(1).is_equal(-1)) ? 1 : 0;
+        ordered.push_back({{group, expr::key(x).text}, x});
+      }
+      std::stable_sort(ordered.begin(), ordered.end(), [](auto& a, auto& b) { return a.first < b.first; });
+      std::int32_t acc = node(ordered[0].second);
+      for (std::size_t i = 1; i < ordered.size(); ++i) {
+        const ex& x = ordered[i].second;
         // a·x⁻¹ as a division: one rounding instead of two
         if (!sum && is_a<power>(x) && x.op(1).is_equal(-1)) acc = emit({Op::Div, acc, node(x.op(0)), 0});
         else acc = emit({sum ? Op::Add : Op::Mul, acc, node(x), 0});

@@ -47,7 +47,8 @@ std::string text(const GiNaC::ex& e);
 /// What GiNaC's complaint about a value means, in words ("a division by zero", "log(0)", …).
 std::string math_fault(const std::exception& err);
 
-/// Number of nodes in an expression tree (a size measure).
+/// Number of nodes in an expression tree (a size measure), the same for a form and its twin
+/// with sums written the other way round (a −1 coefficient is not counted).
 std::size_t ex_size(const GiNaC::ex& e);
 
 }  // namespace kinergy::model
