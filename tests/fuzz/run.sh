@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Fuzz load -> build -> solve with libFuzzer (clang, AddressSanitizer, UndefinedBehaviorSanitizer),
 # seeded from every scene of derivations/ and tests/, with the format's keys as a dictionary.
-#   bash tests/fuzz/run.sh [SECONDS] [RUNS] [SEED]   (defaults: 60 s, no limit on runs, a random seed)
+#   bash tests/fuzz/run.sh [SECONDS] [RUNS] [SEED] [JOBS]
+#   (defaults: 60 s, no limit on runs, a random seed, one process; JOBS > 1: libFuzzer's fork mode,
+#   JOBS processes sharing one corpus, RUNS counted over all of them)
 # SECONDS 0: no time limit. With RUNS, SEED and no time limit the run is the same every time (the
 # test command uses one such short run); it runs with address randomisation off where that is
 # allowed, since GiNaC's forms (and so the coverage) depend on addresses.
@@ -11,6 +13,7 @@ cd "$(dirname "$0")/../.."
 seconds="${1:-60}"
 runs="${2:--1}"
 seed="${3:-0}"
+jobs="${4:-1}"
 command -v clang++ >/dev/null || { echo "fuzz: clang++ is not installed (Debian: clang, libclang-rt-14-dev)" >&2; exit 2; }
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKINERGY_FUZZ=ON -DBUILD_TESTING=OFF >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target kinergy_fuzz >/dev/null
@@ -27,11 +30,18 @@ norandom=()
 setarch "$(uname -m)" -R true 2>/dev/null && norandom=(setarch "$(uname -m)" -R)
 log=build-fuzz/fuzz.log
 status=0
+fork=()
+done_line="^Done [0-9]* runs"
+if [ "$jobs" -gt 1 ]; then
+  fork=(-fork="$jobs")
+  done_line="^INFO: (fuzzed for [0-9]* iterations|exiting: 0 time)"
+fi
 "${norandom[@]}" ./build-fuzz/tests/fuzz/kinergy_fuzz "$corpus" -dict=tests/fuzz/scene.dict -max_total_time="$seconds" \
-  -runs="$runs" -seed="$seed" -timeout=60 -rss_limit_mb=4096 -max_len=8192 -print_final_stats=1 \
+  -runs="$runs" -seed="$seed" -timeout=60 -rss_limit_mb=4096 -max_len=8192 -print_final_stats=1 "${fork[@]}" \
   -artifact_prefix=build-fuzz/findings/ >"$log" 2>&1 || status=$?
-grep -E "^(#[0-9]+ +(DONE|INITED)|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb|==[0-9]+==ERROR|SUMMARY|kinergy_fuzz:|.*(crash|leak|timeout|oom)-)" "$log" || true
-if [ -n "$(ls -A build-fuzz/findings 2>/dev/null)" ] || [ "$status" -ne 0 ] || ! grep -q "^Done [0-9]* runs" "$log"; then
+grep -E "^(#[0-9]+ +(DONE|INITED)|Done [0-9]+ runs|INFO: (fuzzed for|exiting)|stat::number_of_executed_units|stat::peak_rss_mb|==[0-9]+==ERROR|SUMMARY|kinergy_fuzz:|.*(crash|leak|timeout|oom)-)" "$log" || true
+[ "$jobs" -gt 1 ] && grep -E "^#[0-9]+:" "$log" | tail -1
+if [ -n "$(ls -A build-fuzz/findings 2>/dev/null)" ] || [ "$status" -ne 0 ] || ! grep -qE "$done_line" "$log"; then
   echo "fuzz: the run did not finish clean (exit $status; see $log and build-fuzz/findings)" >&2
   exit 1
 fi
