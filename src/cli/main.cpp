@@ -85,7 +85,6 @@ int guarded(const std::string& file, const std::function<int()>& f) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  kinergy::reproducible_process(argc, argv);
   CLI::App app{"kinergy: plane rigid-body motion by energy and momentum, in closed form"};
   app.require_subcommand(1);
   int digits = 15;

@@ -69,22 +69,3 @@ void rethrow_at(const SourcePos& pos, const InputError& e) {
 }
 
 }  // namespace kinergy
-
-#include <sys/personality.h>
-#include <unistd.h>
-
-#include <cstdlib>
-
-namespace kinergy {
-
-void reproducible_process(int /*argc*/, char** argv) {
-  int current = personality(0xffffffff);
-  if (current == -1 || (current & ADDR_NO_RANDOMIZE)) return;
-  if (std::getenv("KINERGY_NO_REEXEC")) return;
-  if (personality(static_cast<unsigned long>(current) | ADDR_NO_RANDOMIZE) == -1) return;
-  setenv("KINERGY_NO_REEXEC", "1", 1);  // never loop, even if the flag does not stick
-  execv("/proc/self/exe", argv);
-  // execv failed: go on as we are
-}
-
-}  // namespace kinergy

@@ -570,11 +570,8 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
       if (l.find_first_not_of(" \t\r") == std::string::npos || indentation(l) > *block) continue;
       block.reset();
     }
-    if (!st.quote && st.brackets.empty() && opens_block_scalar(l)) {
-      block = indentation(l);
-      doc = Doc::Content;
-      continue;
-    }
+    // a line that opens a block scalar (key: >) is scanned too: a ',' at its start loops yaml-cpp
+    bool opens_block = !st.quote && st.brackets.empty() && opens_block_scalar(l);
     if (!st.quote && st.brackets.empty()) {
       if (l.rfind("...", 0) == 0 && (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r')) {
         doc = Doc::Empty;  // the end of a document
@@ -629,7 +626,8 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
                        (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r');
         if (prefix_token || new_doc) {
           if (new_doc) doc = Doc::Empty;
-          while (i + 1 < end && l[i + 1] != ' ' && l[i + 1] != '\t') ++i;
+          // an anchor's or a tag's name ends at white space or at a ',' (yaml-cpp's own rule)
+          while (i + 1 < end && l[i + 1] != ' ' && l[i + 1] != '\t' && (new_doc || l[i + 1] != ',')) ++i;
           prev = 0;  // what follows starts a value, as at the start of the line
           spaced = false;
           continue;
@@ -638,6 +636,10 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
       }
       prev = c;
       spaced = false;
+    }
+    if (opens_block) {
+      block = indentation(l);
+      doc = Doc::Content;
     }
   }
   return st;

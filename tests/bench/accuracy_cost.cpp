@@ -156,7 +156,6 @@ int labels_count(const std::vector<Row>& rows, const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  kinergy::reproducible_process(argc, argv);
   std::string out_dir = "docs", data_dir = ".";
   int repeats = 11;
   for (int i = 1; i < argc; ++i) {

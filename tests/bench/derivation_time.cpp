@@ -171,7 +171,6 @@ int usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  kinergy::reproducible_process(argc, argv);
   std::vector<int> ns{1, 2, 4, 8, 16};
   double min_seconds = 0.2;
   int min_repeats = 3, print_mass = 0;

@@ -683,7 +683,6 @@ std::string met(bool ok) { return ok ? "met" : "**missed**"; }
 }  // namespace
 
 int main(int argc, char** argv) {
-  kinergy::reproducible_process(argc, argv);
   std::string out_dir = "docs", data_dir = ".", python = "/usr/bin/python3", command = "simulation_bench", revision;
   bool scipy = true;
   for (int i = 1; i < argc; ++i) {

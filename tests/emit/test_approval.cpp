@@ -6,8 +6,8 @@
 //   KINERGY_APPROVE=1 ctest --test-dir build -R approval
 // rewrites the files that differ (then review them with git diff before committing).
 // The command line runs from the source directory with the scene's relative path, so the
-// files do not depend on where the tree is; it runs with address randomisation off, so its
-// output is reproducible.
+// files do not depend on where the tree is. The output does not depend on addresses either
+// (tests/emit/test_reproducible.cpp runs every derivation five times with randomisation on).
 #include <catch2/catch.hpp>
 
 #include "../support/helpers.hpp"

@@ -103,12 +103,12 @@ struct Run {
   std::string out, err;
 };
 
-/// Run `kinergy ARGS` with stdout and stderr captured.
-Run cli(const std::string& args) {
+/// Run `kinergy ARGS` with stdout and stderr captured (`prefix`: a command in front, as `timeout 60 `).
+Run cli(const std::string& args, const std::string& prefix = "") {
   static int n = 0;
   fs::path base = fs::temp_directory_path() / ("kinergy_errors_" + std::to_string(getpid()) + "_" + std::to_string(++n));
   fs::path out = base.string() + ".out", err = base.string() + ".err";
-  std::string cmd = std::string("\"") + KINERGY_CLI + "\" " + args + " >\"" + out.string() + "\" 2>\"" + err.string() + "\"";
+  std::string cmd = prefix + "\"" + KINERGY_CLI + "\" " + args + " >\"" + out.string() + "\" 2>\"" + err.string() + "\"";
   int rc = std::system(cmd.c_str());
   Run r;
   r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
@@ -870,7 +870,11 @@ TEST_CASE("the guard against yaml-cpp's comma loop refuses only commas where a v
                         Case{" &x ,a\n", 1, 5}, Case{"  [1]\n ,a\n", 2, 2}, Case{" {a: 1} ,b\n", 1, 9},
                         Case{" \"x\" ,a\n", 1, 6}, Case{"'x'\n,a\n", 2, 1}, Case{"title: x\n---\n ,b\n", 3, 2},
                         Case{"title: x\n...\n ,b\n", 3, 2}, Case{"%YAML 1.2\n---\n ,a\n", 3, 2},
-                        Case{"--- [1]\n--- ,a\n", 2, 5}}) {
+                        Case{"--- [1]\n--- ,a\n", 2, 5},
+                        // an anchor's or a tag's name ends at a ',' (found by the fuzzer: "&a/2, a/.")
+                        Case{"&a/2, a/.\n", 1, 5}, Case{"&a,b\n", 1, 3}, Case{"!t,b\n", 1, 3}, Case{"!a!b:c,d\n", 1, 7},
+                        // on a line that opens a block scalar (found by the fuzzer)
+                        Case{"title: x\n,description: >\n  text\n", 2, 1}}) {
     INFO(c.text);
     auto e = error_of(c.text);
     REQUIRE(e.has_value());
@@ -938,4 +942,21 @@ TEST_CASE("the command line: usage errors exit 2", "[errors][cli]") {
     CHECK(r.status == 0);
     CHECK(r.err.empty());
   }
+}
+
+TEST_CASE("inputs the fuzzer found (each once a hang in yaml-cpp) end with one line, at once", "[errors][fuzz]") {
+  // tests/fuzz/regressions: every input that once crashed, leaked or hung, kept as the fuzzer
+  // wrote it; each must be refused with one line and exit 1 (the `timeout` turns a hang into 124)
+  int n = 0;
+  for (auto& e : fs::directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "tests" / "fuzz" / "regressions")) {
+    ++n;
+    std::string path = e.path().string();
+    INFO(path);
+    Run r = cli("solve \"" + path + "\"", "timeout 60 ");
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.rfind(path + ":", 0) == 0);
+  }
+  CHECK(n >= 9);
 }

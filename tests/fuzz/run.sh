@@ -20,7 +20,9 @@ cmake --build build-fuzz -j"$(nproc)" --target kinergy_fuzz >/dev/null
 corpus=$(mktemp -d)
 trap 'rm -rf "$corpus"' EXIT
 find derivations tests/data tests/stability -name '*.yaml' -exec cp {} "$corpus" \; 2>/dev/null || true
-# the scenes' own files are seeds; findings go to build-fuzz/findings
+cp tests/fuzz/regressions/* "$corpus" 2>/dev/null || true  # inputs that once failed: seeds too
+# the scenes' own files are seeds; findings go to build-fuzz/findings (keep each one, once fixed, in
+# tests/fuzz/regressions: a test runs them all)
 rm -rf build-fuzz/findings && mkdir -p build-fuzz/findings
 export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1:${ASAN_OPTIONS:-}"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitize.supp:print_suppressions=0:${LSAN_OPTIONS:-}"

@@ -42,13 +42,3 @@ private:
 [[noreturn]] void rethrow_at(const SourcePos& pos, const InputError& e);
 
 }  // namespace kinergy
-
-namespace kinergy {
-
-/// GiNaC orders terms by hashes that mix in the addresses of type information, so with address
-/// space randomisation the same scene can print (and even simplify) differently from run to run.
-/// Called first thing in main(): re-executes the program once with randomisation off, so that
-/// output is reproducible. Does nothing when that is not permitted or already done.
-void reproducible_process(int argc, char** argv);
-
-}  // namespace kinergy
