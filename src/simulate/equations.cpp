@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/emit/emit.hpp"
 #include "kinergy/model/simplify.hpp"
 
 namespace kinergy::simulate {
@@ -87,6 +88,8 @@ Equations equations_of_motion(const model::Model& m) {
 
 std::string Equations::text(const model::Model& m) const {
   std::ostringstream os;
+  // the plain printer: its term order does not depend on addresses (GiNaC's own does)
+  auto P = [](const GiNaC::ex& e) { return emit::plain(e); };
   const std::size_t n = q.size();
   auto name = [&](std::size_t i) { return m.coords[i].name; };
   os << "Equations of motion  M(q) q'' + c(q, q', t) = Q";
@@ -97,42 +100,42 @@ std::string Equations::text(const model::Model& m) const {
   os << "\n\nM(q):\n";
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j <= i; ++j)
-      if (!M(i, j).is_zero()) os << "  M[" << name(i) << "," << name(j) << "] = " << M(i, j) << "\n";
+      if (!M(i, j).is_zero()) os << "  M[" << name(i) << "," << name(j) << "] = " << P(M(i, j)) << "\n";
   bool any_c = false;
   for (auto& ci : c) any_c = any_c || !ci.is_zero();
   if (any_c) {
     os << "\nc(q, q', t) (velocity products):\n";
     for (std::size_t i = 0; i < n; ++i)
-      if (!c[i].is_zero()) os << "  c[" << name(i) << "] = " << c[i] << "\n";
+      if (!c[i].is_zero()) os << "  c[" << name(i) << "] = " << P(c[i]) << "\n";
   }
   for (auto& f : forces) {
     const auto& e = m.effects[static_cast<std::size_t>(f.effect)];
     os << "\nQ from " << e.name << " (" << e.kind << "):\n";
     for (std::size_t i = 0; i < n; ++i)
-      if (!f.Q[i].is_zero()) os << "  Q[" << name(i) << "] = " << f.Q[i] << "\n";
+      if (!f.Q[i].is_zero()) os << "  Q[" << name(i) << "] = " << P(f.Q[i]) << "\n";
   }
   for (auto& f : friction) {
     const auto& e = m.effects[static_cast<std::size_t>(f.effect)];
     os << "\nQ from " << e.name << " (" << e.kind << "), sliding: ";
-    if (f.rotary) os << "-(" << f.limit << ") sgn(w) dw/dq', w = " << f.x.v << "\n";
-    else os << "-(" << f.limit << ") J^T v/|v|, v = (" << f.x.v << ", " << f.y.v << ")\n";
-    os << "  sticking: v = 0 held by a force of at most " << f.limit << "\n";
+    if (f.rotary) os << "-(" << P(f.limit) << ") sgn(w) dw/dq', w = " << P(f.x.v) << "\n";
+    else os << "-(" << P(f.limit) << ") J^T v/|v|, v = (" << P(f.x.v) << ", " << P(f.y.v) << ")\n";
+    os << "  sticking: v = 0 held by a force of at most " << P(f.limit) << "\n";
   }
   for (auto& c : contacts) {
     const auto& e = m.effects[static_cast<std::size_t>(c.effect)];
-    os << "\ncontact " << e.name << ": gap = " << c.gap << " >= 0, e = " << c.e
+    os << "\ncontact " << e.name << ": gap = " << P(c.gap) << " >= 0, e = " << P(c.e)
        << (c.stick ? ", rough (no slip after impact)" : "") << "\n";
   }
   for (auto& im : impulses) {
     const auto& e = m.effects[static_cast<std::size_t>(im.effect)];
     os << "\nimpulse " << e.name << " at the start:";
     for (std::size_t i = 0; i < n; ++i)
-      if (!im.P[i].is_zero()) os << " P[" << name(i) << "] = " << im.P[i];
+      if (!im.P[i].is_zero()) os << " P[" << name(i) << "] = " << P(im.P[i]);
     os << "\n";
   }
   if (!g.empty()) {
     os << "\nconstraints g(q, t) = 0:\n";
-    for (std::size_t r = 0; r < g.size(); ++r) os << "  " << g[r] << " = 0\n";
+    for (std::size_t r = 0; r < g.size(); ++r) os << "  " << P(g[r]) << " = 0\n";
   }
   return os.str();
 }

@@ -38,7 +38,7 @@ TEST_CASE("kinergy simulate --equations and --check", "[simulate][cli]") {
   int status = 0;
   std::string out = kt::run_cli("simulate derivations/energy/atwood_pulley.yaml --equations --check --tol 1e-12", status);
   CHECK(status == 0);
-  CHECK_THAT(out, Catch::Contains("M[phi,phi] = "));  // ½ M r² (GiNaC picks the order of factors)
+  CHECK_THAT(out, Catch::Contains("M[phi,phi] = M*r^2/2\n"));  // ½ M r², in the plain printer's order
   CHECK_THAT(out, Catch::Contains("M[yA,yA] = mA"));
   CHECK_THAT(out, Catch::Contains("constraints g(q, t) = 0:"));
   CHECK_THAT(out, Catch::Contains("energy 1 -> 2: until yA reaches -1.5"));
