@@ -37,11 +37,20 @@ struct Selector {
 
   std::optional<numeric> find_value(const model::Find& f, const solve::Branch& b) const {
     const exmap& given = given_;
+    ex v;
     try {
-      return numerics::evaluate(f.value.subs(given).subs(b.sol), env, 30);
+      v = f.value.subs(given).subs(b.sol);
     } catch (const std::exception&) {
       return std::nullopt;  // undefined on this branch (a division by zero): no value to compare
     }
+    auto out = numerics::evaluate(v, env, 30);
+    // no working precision up to the limit holds the argument of a sin or cos: the roots cannot
+    // be told apart, and "(? or ?)" would not say why
+    if (!out && numerics::beyond_precision(v, env, 30))
+      throw SceneError(f.pos, "'" + f.name + "' cannot be evaluated (to choose among its solutions): it holds the sine or "
+                                  "cosine of an angle too large for 20000 digits of working precision",
+                       "give the angle reduced to one turn (below 360 deg or 2*pi rad)");
+    return out;
   }
 
   bool meets(const model::RootSpec& r, const numeric& v) const {

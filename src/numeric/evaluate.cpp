@@ -47,6 +47,18 @@ std::optional<GiNaC::numeric> evaluate(const ex& e, const exmap& values, int dig
   return out;
 }
 
+bool beyond_precision(const ex& e, const exmap& values, int digits) {
+  long saved = Digits;
+  bool beyond = false;
+  try {
+    beyond = covering_digits(e.subs(values), digits) == 0;
+  } catch (const std::exception&) {
+    beyond = false;  // not a number at all: some other reason
+  }
+  Digits = saved;
+  return beyond;
+}
+
 std::optional<bool> negligible(const ex& e, const exmap& values, int digits) {
   auto v = evaluate(e, values, digits);
   if (!v) return std::nullopt;

@@ -785,6 +785,10 @@ const ExactCase kExact[] = {
     {"exponent_from_state.yaml", "9:14",
      "a power here has the exponent 1000000000, too large for exact arithmetic \u2014 check the exponent: at "
      "most 100000 in size (no physical quantity needs more)"},
+    // cos of an angle of 1e18009 rad: no working precision up to 20000 digits holds it (was "(? or ?)")
+    {"angle_beyond_precision.yaml", "31:3",
+     "'omega2' cannot be evaluated (to choose among its solutions): it holds the sine or cosine of an angle too "
+     "large for 20000 digits of working precision \u2014 give the angle reduced to one turn (below 360 deg or 2*pi rad)"},
     // yaml-cpp 0.7's LoadAll loops for ever on these, its memory growing
     {"comma_first.yaml", "1:1",
      "YAML syntax error: a ',' outside [ ] and { }, where a value should start \u2014 remove it, or quote the text it "

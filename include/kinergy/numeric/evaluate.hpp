@@ -9,7 +9,13 @@ namespace kinergy::numerics {
 
 /// Evaluate e with `values` substituted, using `digits` decimal working digits.
 /// @returns nothing when e is not a real number (symbols left, complex, undefined).
+/// Nothing too when a sin, cos or tan in it has an argument too large for any working precision
+/// up to 20000 digits (see beyond_precision).
 std::optional<GiNaC::numeric> evaluate(const GiNaC::ex& e, const GiNaC::exmap& values, int digits);
+
+/// Whether a sin, cos or tan in e (values substituted) has an argument so large that no working
+/// precision up to 20000 digits leaves `digits` digits after reducing it by whole turns.
+bool beyond_precision(const GiNaC::ex& e, const GiNaC::exmap& values, int digits);
 
 /// Is e zero at `values`, judged against the size of its terms: |e| ≤ 10^(12−digits) · max |term|
 /// of its expansion (a lone term: only an exact zero). A small value is not a zero: a couple
