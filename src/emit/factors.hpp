@@ -32,6 +32,12 @@ int sum_orientation(const GiNaC::ex& b);
 /// of the groups, and reduce rn/rd.
 void take_root_numbers(Factors& f, GiNaC::numeric& rn, GiNaC::numeric& rd);
 
+/// The products in a root's groups taken apart: a factor x^−k goes to the other group as x^k, a
+/// fraction's numerator and denominator to their groups. A number's sign is kept apart and
+/// returned (GiNaC gives a product's coefficient the sign that makes up for the signs it chose
+/// for the sums in it), so that the numbers reduced next are the same in every run.
+bool flatten_roots(Factors& f);
+
 /// Sort one factor of a product into `out`.
 void classify(const GiNaC::ex& f, Factors& out);
 

@@ -592,36 +592,9 @@ private:
     // the numbers under a root made one reduced fraction; the number in front stays in front
     // (\frac{3 \sqrt{2 g h}}{2 l}, where the plain printer folds it in: sqrt(9*g*h/2)/l)
     if (!f.root_num.empty() || !f.root_den.empty()) {
-      // a product under the root taken apart: its numbers join the others, x^-k goes below
-      // A number's sign stays apart (GiNaC gives the sums of a product the signs its term order
-      // picks, and the coefficient the sign that makes up for them), so that the squares taken
-      // out and the fraction made below see the same numbers in every run.
-      bool minus = false;
-      auto flatten = [&minus](exvector& up, exvector& down) {
-        exvector keep_up, add_down;
-        for (auto& x : up) {
-          if (!is_a<mul>(x)) {
-            keep_up.push_back(x);
-            continue;
-          }
-          for (std::size_t i = 0; i < x.nops(); ++i) {
-            const ex& y = x.op(i);
-            if (is_a<numeric>(y) && ex_to<numeric>(y).is_rational()) {
-              if (ex_to<numeric>(y).is_negative()) minus = !minus;
-              keep_up.push_back(abs(ex_to<numeric>(y).numer()));
-              add_down.push_back(ex_to<numeric>(y).denom());
-            } else if (is_a<power>(y) && is_a<numeric>(y.op(1)) && ex_to<numeric>(y.op(1)).is_negative()) {
-              add_down.push_back(pow(y.op(0), -y.op(1)));
-            } else {
-              keep_up.push_back(y);
-            }
-          }
-        }
-        up = keep_up;
-        down.insert(down.end(), add_down.begin(), add_down.end());
-      };
-      flatten(f.root_num, f.root_den);
-      flatten(f.root_den, f.root_num);
+      // a product under the root taken apart: its numbers join the others, x^-k goes below, a
+      // number's sign kept apart (factors.hpp)
+      bool minus = detail::flatten_roots(f);
       numeric rn = 1, rd = 1;
       detail::take_root_numbers(f, rn, rd);
       // squares come out of the root, and a number below its bar goes above:

@@ -70,51 +70,10 @@ std::string join(std::vector<Factor> v) {
   return s;
 }
 
-/// The products in a root's groups taken apart: a factor x^−k goes to the other group as x^k,
-/// a fraction's numerator and denominator to their groups. A number's sign is kept apart (GiNaC
-/// gives a product's coefficient the sign that makes up for the signs it chose for the sums in
-/// it) and returned, so that the numbers reduced next are the same in every run.
-bool flatten_roots(Factors& f) {
-  bool minus = false;
-  auto take = [&minus](exvector& up, exvector& down) {
-    exvector keep, more_down;
-    for (auto& x : up) {
-      if (!is_a<mul>(x)) {
-        keep.push_back(x);
-        continue;
-      }
-      for (std::size_t i = 0; i < x.nops(); ++i) {
-        const ex& y = x.op(i);
-        if (is_a<numeric>(y) && ex_to<numeric>(y).is_rational()) {
-          if (ex_to<numeric>(y).is_negative()) minus = !minus;
-          keep.push_back(abs(ex_to<numeric>(y).numer()));
-          more_down.push_back(ex_to<numeric>(y).denom());
-        } else if (is_a<power>(y) && is_a<numeric>(y.op(1)) && ex_to<numeric>(y.op(1)).is_negative()) {
-          more_down.push_back(pow(y.op(0), -y.op(1)));
-        } else {
-          keep.push_back(y);
-        }
-      }
-    }
-    up = keep;
-    down.insert(down.end(), more_down.begin(), more_down.end());
-  };
-  take(f.root_num, f.root_den);
-  take(f.root_den, f.root_num);
-  auto drop_ones = [](exvector& v) {
-    exvector keep;
-    for (auto& x : v)
-      if (!x.is_equal(1)) keep.push_back(x);
-    v = keep;
-  };
-  drop_ones(f.root_num);
-  drop_ones(f.root_den);
-  return minus;
-}
 
 std::string product(const ex& e, int ctx) {
   Factors f = detail::split(e, ctx == 0);
-  bool root_minus = flatten_roots(f);
+  bool root_minus = detail::flatten_roots(f);
   bool neg = f.coef.is_negative();
   numeric c = neg ? -f.coef : f.coef;
   auto has_number = [](const exvector& v) {
@@ -356,6 +315,48 @@ Factors split(const ex& e, bool turn_positive) {
     }
   }
   return f;
+}
+
+// The products in a root's groups taken apart: a factor x^−k goes to the other group as x^k,
+// a fraction's numerator and denominator to their groups. A number's sign is kept apart (GiNaC
+// gives a product's coefficient the sign that makes up for the signs it chose for the sums in
+// it) and returned, so that the numbers reduced next are the same in every run.
+bool flatten_roots(Factors& f) {
+  bool minus = false;
+  auto take = [&minus](exvector& up, exvector& down) {
+    exvector keep, more_down;
+    for (auto& x : up) {
+      if (!is_a<mul>(x)) {
+        keep.push_back(x);
+        continue;
+      }
+      for (std::size_t i = 0; i < x.nops(); ++i) {
+        const ex& y = x.op(i);
+        if (is_a<numeric>(y) && ex_to<numeric>(y).is_rational()) {
+          if (ex_to<numeric>(y).is_negative()) minus = !minus;
+          keep.push_back(abs(ex_to<numeric>(y).numer()));
+          more_down.push_back(ex_to<numeric>(y).denom());
+        } else if (is_a<power>(y) && is_a<numeric>(y.op(1)) && ex_to<numeric>(y.op(1)).is_negative()) {
+          more_down.push_back(pow(y.op(0), -y.op(1)));
+        } else {
+          keep.push_back(y);
+        }
+      }
+    }
+    up = keep;
+    down.insert(down.end(), more_down.begin(), more_down.end());
+  };
+  take(f.root_num, f.root_den);
+  take(f.root_den, f.root_num);
+  auto drop_ones = [](exvector& v) {
+    exvector keep;
+    for (auto& x : v)
+      if (!x.is_equal(1)) keep.push_back(x);
+    v = keep;
+  };
+  drop_ones(f.root_num);
+  drop_ones(f.root_den);
+  return minus;
 }
 
 void take_root_numbers(Factors& f, numeric& rn, numeric& rd) {
