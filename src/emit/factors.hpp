@@ -2,6 +2,7 @@
 /// denominator and square-root groups, with sums oriented so that r − R and −(R − r) print alike.
 /// One rule for the plain and the LaTeX printer, so their forms agree.
 #pragma once
+#include <string>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -37,6 +38,16 @@ void take_root_numbers(Factors& f, GiNaC::numeric& rn, GiNaC::numeric& rd);
 /// returned (GiNaC gives a product's coefficient the sign that makes up for the signs it chose
 /// for the sums in it), so that the numbers reduced next are the same in every run.
 bool flatten_roots(Factors& f);
+
+/// A term of a sum as it prints: its sign, the text that orders it and its text without the sign.
+struct Term {
+  bool negative = false;
+  std::string key, text;
+};
+
+/// The terms of a sum joined: positive ones first ("g*m + sqrt(…)", not "-… + …"), each group in
+/// the order of its keys: "a + b - c - d".
+std::string join_terms(std::vector<Term> terms);
 
 /// Sort one factor of a product into `out`.
 void classify(const GiNaC::ex& f, Factors& out);

@@ -684,26 +684,15 @@ private:
   std::string sum(const ex& e, int ctx) const {
     // each term with its sign as printed (a product may take the sign of a sum it flipped):
     // positive terms first, each group in the order of its plain text
-    struct Term {
-      bool neg;
-      std::string key, tex;
-    };
-    std::vector<Term> pos, negs;
+    std::vector<detail::Term> terms;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       std::string t = print(e.op(i), kSum), k = key(e.op(i));
       bool neg = !t.empty() && t[0] == '-';
       if (neg) t = t.substr(1);
       if (!k.empty() && k[0] == '-') k = k.substr(1);
-      (neg ? negs : pos).push_back({neg, k, t});
+      terms.push_back({neg, k, t});
     }
-    auto by_key = [](std::vector<Term>& v) {
-      std::stable_sort(v.begin(), v.end(), [](const Term& a, const Term& b) { return a.key < b.key; });
-    };
-    by_key(pos);
-    by_key(negs);
-    std::string s;
-    for (auto& t : pos) s += (s.empty() ? "" : " + ") + t.tex;
-    for (auto& t : negs) s += (s.empty() ? "-" : " - ") + t.tex;
+    std::string s = detail::join_terms(std::move(terms));
     return ctx > kSum ? paren(s) : s;
   }
 };

@@ -139,10 +139,7 @@ std::string print(const ex& e, int ctx) {
     // each term with its sign as printed (a product takes the sign of a sum it flipped, so
     // GiNaC's own choice of signs inside does not show): positive terms first ("g*m + sqrt(…)",
     // not "-… + …"), each group in the order of its text
-    struct Term {
-      std::string key, text;
-    };
-    std::vector<Term> pos, negs;
+    std::vector<detail::Term> terms;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       const ex& term = e.op(i);
       std::string k = key(term, kSum);
@@ -154,16 +151,9 @@ std::string print(const ex& e, int ctx) {
                        ex_to<numeric>(term.op(term.nops() - 1)).is_negative());
       std::string t = coef_neg && neg ? print(-term, kSum) : print(term, kSum);
       if (!t.empty() && t[0] == '-') t = t.substr(1);
-      (neg ? negs : pos).push_back({k, t});
+      terms.push_back({neg, k, t});
     }
-    auto by_key = [](std::vector<Term>& v) {
-      std::stable_sort(v.begin(), v.end(), [](const Term& a, const Term& b) { return a.key < b.key; });
-    };
-    by_key(pos);
-    by_key(negs);
-    std::string s;
-    for (auto& t : pos) s += (s.empty() ? "" : " + ") + t.text;
-    for (auto& t : negs) s += (s.empty() ? "-" : " - ") + t.text;
+    std::string s = detail::join_terms(std::move(terms));
     return ctx > kSum ? "(" + s + ")" : s;
   }
   if (is_a<mul>(e)) return product(e, ctx);
@@ -357,6 +347,15 @@ bool flatten_roots(Factors& f) {
   drop_ones(f.root_num);
   drop_ones(f.root_den);
   return minus;
+}
+
+std::string join_terms(std::vector<Term> terms) {
+  std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) {
+    return std::make_pair(a.negative, a.key) < std::make_pair(b.negative, b.key);
+  });
+  std::string s;
+  for (auto& t : terms) s += s.empty() ? (t.negative ? "-" : "") + t.text : (t.negative ? " - " : " + ") + t.text;
+  return s;
 }
 
 void take_root_numbers(Factors& f, numeric& rn, numeric& rd) {

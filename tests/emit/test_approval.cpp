@@ -24,14 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<std::string> scenes() {
-  std::vector<std::string> out;
-  for (auto& e : fs::recursive_directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "derivations"))
-    if (e.path().extension() == ".yaml") out.push_back(fs::relative(e.path(), KINERGY_SOURCE_DIR).generic_string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 /// Where two texts first differ: line number and both lines.
 std::string first_difference(const std::string& a, const std::string& b) {
   std::istringstream x(a), y(b);
@@ -72,7 +64,7 @@ void compare(const std::string& scene, const std::string& args, const std::strin
 }  // namespace
 
 TEST_CASE("approval: every derivation prints its approved text and LaTeX", "[approval]") {
-  auto files = scenes();
+  auto files = kt::relative_scene_files("derivations");
   REQUIRE(files.size() >= 12);
   for (auto& f : files) {
     DYNAMIC_SECTION(f) {

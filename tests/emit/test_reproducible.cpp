@@ -17,14 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<std::string> scenes() {
-  std::vector<std::string> out;
-  for (auto& e : fs::recursive_directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "derivations"))
-    if (e.path().extension() == ".yaml") out.push_back(fs::relative(e.path(), KINERGY_SOURCE_DIR).generic_string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 /// Where a shared library is mapped in a new process (the line of /proc/self/maps naming libc).
 std::string libc_mapping() {
   FILE* p = popen("grep -m1 libc /proc/self/maps", "r");
@@ -48,7 +40,7 @@ TEST_CASE("address randomisation is on for the processes the tests start", "[rep
 
 TEST_CASE("solve --json, derive, derive --latex and simulate --equations of every derivation: the same bytes over 5 runs",
           "[reproducible][approval]") {
-  auto files = scenes();
+  auto files = kt::relative_scene_files("derivations");
   REQUIRE(files.size() >= 12);
   for (auto& f : files) {
     for (std::string cmd : {"solve --json", "derive", "derive --latex -", "simulate --equations"}) {

@@ -51,6 +51,13 @@ inline std::vector<std::string> scene_files(const std::string& dir) {
   return out;
 }
 
+/// The same, relative to the source directory ("derivations/energy/sliding_rod.yaml").
+inline std::vector<std::string> relative_scene_files(const std::string& dir) {
+  std::vector<std::string> out;
+  for (auto& f : scene_files(dir)) out.push_back(std::filesystem::relative(f, KINERGY_SOURCE_DIR).generic_string());
+  return out;
+}
+
 /// Every scene file of derivations/energy, sorted.
 inline std::vector<std::string> derivation_scenes() { return scene_files("derivations/energy"); }
 
