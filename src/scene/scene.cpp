@@ -601,12 +601,15 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
         continue;
       }
       // ':', '-' and '?' are indicators only when white space follows them
+      // after one whole value at the document's level, yaml-cpp takes a quote, a bracket, an
+      // anchor or a tag for the start of another document's value, even with no space between
+      bool at_top = st.brackets.empty() && doc != Doc::Content;
       bool node_start = prev == 0 || prev == ',' || prev == '[' || prev == '{' ||
-                        ((prev == ':' || prev == '-' || prev == '?') && spaced);
+                        ((prev == ':' || prev == '-' || prev == '?') && spaced) || (at_top && doc == Doc::Value);
       if (c == '#' && (i == 0 || l[i - 1] == ' ' || l[i - 1] == '\t')) break;
       if ((c == '"' || c == '\'') && node_start) {
         st.quote = Open{c, li + 1, static_cast<int>(i) + 1};
-        top_quote = st.brackets.empty() && doc == Doc::Empty;
+        top_quote = at_top;
         continue;
       }
       // a ',' where the document's value would start, or right after a whole value in [ ], { } or
@@ -614,14 +617,14 @@ OpenAt scan_open(const std::vector<std::string>& lines, int line, int col) {
       if (c == ',' && st.brackets.empty() && !st.stray_comma && (i == 0 || doc != Doc::Content))
         st.stray_comma = Open{c, li + 1, static_cast<int>(i) + 1};
       if ((c == '[' || c == '{') && node_start) {
-        if (st.brackets.empty()) top_flow = doc == Doc::Empty;
+        if (st.brackets.empty()) top_flow = at_top;
         st.brackets.push_back({c, li + 1, static_cast<int>(i) + 1});
       } else if ((c == ']' || c == '}') && !st.brackets.empty()) {
         st.brackets.pop_back();
         if (st.brackets.empty() && top_flow) doc = Doc::Value;
       } else if (st.brackets.empty()) {
         // a token of the document prefix: &anchor, !tag, '---' (which starts a new document)
-        bool prefix_token = doc == Doc::Empty && node_start && (c == '&' || c == '!');
+        bool prefix_token = at_top && node_start && (c == '&' || c == '!');
         bool new_doc = prev == 0 && i == 0 && l.compare(0, 3, "---") == 0 &&
                        (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r');
         if (prefix_token || new_doc) {

@@ -878,7 +878,11 @@ TEST_CASE("the guard against yaml-cpp's comma loop refuses only commas where a v
                         // an anchor's or a tag's name ends at a ',' (found by the fuzzer: "&a/2, a/.")
                         Case{"&a/2, a/.\n", 1, 5}, Case{"&a,b\n", 1, 3}, Case{"!t,b\n", 1, 3}, Case{"!a!b:c,d\n", 1, 7},
                         // on a line that opens a block scalar (found by the fuzzer)
-                        Case{"title: x\n,description: >\n  text\n", 2, 1}}) {
+                        Case{"title: x\n,description: >\n  text\n", 2, 1},
+                        // yaml-cpp takes a quote, bracket, anchor or tag right after a whole value for the start
+                        // of another document (found by the fuzzer: a line of '"')
+                        Case{"\"\"\"\",\n", 1, 5}, Case{"\"a\" \"b\" ,\n", 1, 9}, Case{"[1][2],\n", 1, 7},
+                        Case{"'a'\"b\",\n", 1, 7}, Case{"\"a\"&x ,\n", 1, 7}, Case{"{a: 1}\"x\",\n", 1, 10}}) {
     INFO(c.text);
     auto e = error_of(c.text);
     REQUIRE(e.has_value());
