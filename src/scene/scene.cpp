@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 namespace kinergy::scene {
@@ -779,6 +780,26 @@ SourcePos second_document(const std::vector<std::string>& lines, const std::stri
 
 }  // namespace
 
+/// The starts of a text's YAML documents, read one document at a time without building nodes, and
+/// no more than `cap` + 1 of them. yaml-cpp 0.7's LoadAll never ends on some syntax errors (a ','
+/// where a document's value starts): it reads one empty document after another, each one ending,
+/// and keeps them all. Counting first bounds that loop, whatever form of it the scan for stray
+/// commas above does not know.
+struct DocumentStarts : YAML::EventHandler {
+  std::vector<YAML::Mark> starts;
+  void OnDocumentStart(const YAML::Mark& mark) override { starts.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+constexpr std::size_t kMaxDocuments = 64;
+
 SceneDef load_string(const std::string& text, const std::string& file) {
   if (text.size() > kMaxBytes)
     throw SceneError({file, 1, 1}, "the scene is " + std::to_string(text.size()) + " bytes long, more than the " +
@@ -794,6 +815,25 @@ SceneDef load_string(const std::string& text, const std::string& file) {
   if (auto comma = scan_open(l.lines, static_cast<int>(l.lines.size()) + 1, 0).stray_comma)
     throw SceneError({file, comma->line, comma->col}, "YAML syntax error: a ',' outside [ ] and { }, where a value should start",
                      "remove it, or quote the text it belongs to: a comma separates the entries of a list in [ ] or of a map in { }");
+  {
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    DocumentStarts ds;
+    try {
+      while (ds.starts.size() <= kMaxDocuments && parser.HandleNextDocument(ds)) {
+      }
+    } catch (const YAML::Exception& e) {
+      yaml_error(l, e);
+    }
+    if (ds.starts.size() > kMaxDocuments) {
+      const YAML::Mark& m = ds.starts.back();
+      throw SceneError({file, m.line + 1, m.column + 1},
+                       "YAML syntax error: the text from here reads as document after document (more than " +
+                           std::to_string(kMaxDocuments) + ")",
+                       "a scene is one document: remove what starts here, or quote it (a ',' separates entries only "
+                       "inside [ ] and { })");
+    }
+  }
   std::vector<YAML::Node> docs;
   try {
     docs = YAML::LoadAll(text);
