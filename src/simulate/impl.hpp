@@ -374,7 +374,8 @@ struct Simulator::Impl {
         throw SimulationError("the equations of motion cannot be formed in doubles at t = " + num(t) + " s: the mass matrix entry M[" +
                                   m.coords[i].name + "," + m.coords[i].name + "]" +
                                   (d == 0 ? " underflows to 0" : " is " + num(d) + " in SI units, at the edge of what a double holds"),
-                              "simulate the scene at a larger scale: its masses and lengths are too small for doubles");
+                              "simulate the scene at a larger scale: its masses and lengths are too small for doubles",
+                              m.coords[i].pos);
     }
     throw SimulationError("the equations of motion are singular at t = " + num(t) + " s" +
                               (why.empty() ? ": M(q) is not positive definite (a coordinate that moves no mass?)" : ": " + why),

@@ -89,7 +89,7 @@ TEST_CASE("kinergy simulate refuses what it cannot do, with the place and a fix"
        "effect or a body's motion is undefined there"},
       {"tests/data/simulate/huge_couple.yaml --until 0.1 --no-native", "huge_couple.yaml: the acceleration is not a number at t = 0 s"},
       {"tests/data/simulate/tiny_pendulum.yaml --until 1",
-       "tiny_pendulum.yaml: the equations of motion cannot be formed in doubles at t = 0 s: the mass matrix entry "
+       "tiny_pendulum.yaml:13:3: the equations of motion cannot be formed in doubles at t = 0 s: the mass matrix entry "
        "M[theta,theta] underflows to 0 \u2014 simulate the scene at a larger scale: its masses and lengths are too small for doubles"},
   };
   for (auto& c : cases) {
