@@ -201,33 +201,37 @@ namespace detail {
 // (ties: the one whose first term, in text order, is positive), so r − R and −(R − r) agree.
 // A term's sign is the one it prints with: GiNaC's own choice of sign for a sum inside a term
 // (it depends on its term order, so on addresses) changes neither the count nor the texts.
-int sum_orientation(const ex& b) {
-  if (!is_a<add>(b)) return 0;
-  int balance = 0;
-  for (std::size_t i = 0; i < b.nops(); ++i) {
-    std::string k = key(b.op(i), kSum);
-    balance += !k.empty() && k[0] == '-' ? -1 : 1;
-  }
-  return balance;
-}
-
-bool flip_sum(const ex& b) {
-  if (!is_a<add>(b)) return false;
-  int o = sum_orientation(b);
-  if (o != 0) return o < 0;  // more negative terms than positive
-  // a tie: the first term in text order positive
-  std::string first;
-  bool first_neg = false;
+namespace {
+/// A sum's terms as they print: (negative, text without the sign), each printed once.
+std::vector<std::pair<bool, std::string>> signed_keys(const ex& b) {
+  std::vector<std::pair<bool, std::string>> out;
   for (std::size_t i = 0; i < b.nops(); ++i) {
     std::string k = key(b.op(i), kSum);
     bool n = !k.empty() && k[0] == '-';
-    if (n) k = k.substr(1);
-    if (i == 0 || k < first) {
-      first = k;
-      first_neg = n;
-    }
+    out.push_back({n, n ? k.substr(1) : k});
   }
-  return first_neg;
+  return out;
+}
+
+int balance_of(const std::vector<std::pair<bool, std::string>>& keys) {
+  int balance = 0;
+  for (auto& [n, k] : keys) balance += n ? -1 : 1;
+  return balance;
+}
+}  // namespace
+
+int sum_orientation(const ex& b) { return is_a<add>(b) ? balance_of(signed_keys(b)) : 0; }
+
+bool flip_sum(const ex& b) {
+  if (!is_a<add>(b)) return false;
+  auto keys = signed_keys(b);
+  int o = balance_of(keys);
+  if (o != 0) return o < 0;  // more negative terms than positive
+  // a tie: the first term in text order positive
+  std::size_t first = 0;
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (keys[i].second < keys[first].second) first = i;
+  return keys[first].first;
 }
 
 void classify(const ex& f, Factors& out) {
