@@ -287,6 +287,63 @@ static std::optional<ex> linear_coeff(const ex& arg, const symbol& s) {
   return d;
 }
 
+namespace {
+
+bool is_sin_or_cos(const ex& f) { return is_ex_the_function(f, sin) || is_ex_the_function(f, cos); }
+
+/// The product of two sines or cosines as a sum (product-to-sum):
+///   sin A sin B = [cos(A − B) − cos(A + B)]/2,   cos A cos B = [cos(A − B) + cos(A + B)]/2,
+///   sin A cos B = [sin(A + B) + sin(A − B)]/2.
+ex product_to_sum(const ex& a, const ex& b) {
+  const ex A = a.op(0), B = b.op(0);
+  const ex d = (A - B).expand(), p = (A + B).expand();
+  bool sa = is_ex_the_function(a, sin), sb = is_ex_the_function(b, sin);
+  if (sa && sb) return (cos(d) - cos(p)) / 2;
+  if (!sa && !sb) return (cos(d) + cos(p)) / 2;
+  if (sa) return (sin(p) + sin(d)) / 2;  // sin A cos B
+  return (sin(p) - sin(d)) / 2;          // cos A sin B = sin B cos A
+}
+
+/// e with every product of sines and cosines (powers included, up to the 16th) written as a sum
+/// of single sines and cosines of sums of the arguments: sin θ cos θ → sin 2θ / 2, cos² θ → (1 + cos 2θ)/2.
+ex linearize_trig(const ex& e) {
+  ex x = e.expand();
+  if (is_a<add>(x)) {
+    ex out = 0;
+    for (const ex& t : x) out += linearize_trig(t);
+    return out;
+  }
+  exvector trig;
+  ex rest = 1;
+  for (const ex& f : factors_of(x)) {
+    if (is_sin_or_cos(f)) {
+      trig.push_back(f);
+    } else if (is_a<power>(f) && is_sin_or_cos(f.op(0)) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_pos_integer() &&
+               ex_to<numeric>(f.op(1)).to_long() <= 16) {
+      for (long i = 0; i < ex_to<numeric>(f.op(1)).to_long(); ++i) trig.push_back(f.op(0));
+    } else {
+      rest *= f;
+    }
+  }
+  if (trig.size() < 2) return x;
+  ex others = rest;
+  for (std::size_t i = 2; i < trig.size(); ++i) others *= trig[i];
+  return linearize_trig(product_to_sum(trig[0], trig[1]) * others);
+}
+
+/// How many sines and cosines (counting powers) a product holds.
+std::size_t trig_factors(const ex& t) {
+  std::size_t n = 0;
+  for (const ex& f : factors_of(t)) {
+    if (is_sin_or_cos(f)) ++n;
+    else if (is_a<power>(f) && is_sin_or_cos(f.op(0)) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_pos_integer())
+      n += static_cast<std::size_t>(ex_to<numeric>(f.op(1)).to_long());
+  }
+  return n;
+}
+
+}  // namespace
+
 std::optional<ex> antiderivative(const ex& f, const symbol& s) {
   if (!f.has(s)) return f * s;  // ∫ c ds = c s
   if (f.is_equal(s)) return pow(s, 2) / 2;
@@ -315,6 +372,35 @@ std::optional<ex> antiderivative(const ex& f, const symbol& s) {
       if (a) return c * *a;
       return std::nullopt;
     }
+    // sines and cosines multiplied together: a sum of single ones of multiple angles
+    //   ∫ sin θ cos θ dθ = ∫ sin 2θ / 2 dθ = −cos 2θ / 4
+    if (trig_factors(g) >= 2) {
+      ex l = linearize_trig(g);
+      if (!l.is_equal(g)) {
+        auto a = antiderivative(l, s);
+        if (a) return c * *a;
+      }
+    }
+    // a polynomial times one function with an antiderivative, by parts:
+    //   ∫ p(s) g(s) ds = p G − ∫ p′ G ds,  G = ∫ g ds  (the degree of p falls at each step)
+    {
+      ex p = 1, h = 1;
+      int others = 0;
+      for (const ex& x : factors_of(g)) {
+        if (x.is_polynomial(s)) p *= x;
+        else {
+          h *= x;
+          ++others;
+        }
+      }
+      if (others == 1 && p.has(s) && is_a<function>(h)) {
+        auto G = antiderivative(h, s);
+        if (G) {
+          auto rest = antiderivative((p.diff(s) * *G).expand(), s);
+          if (rest) return c * (p * *G - *rest);
+        }
+      }
+    }
     // a product of several factors in s: try its expansion (polynomials, sums)
     ex x = f.expand();
     if (!x.is_equal(f) && is_a<add>(x)) return antiderivative(x, s);
@@ -333,6 +419,11 @@ std::optional<ex> antiderivative(const ex& f, const symbol& s) {
     if (is_a<numeric>(n) && ex_to<numeric>(n).is_pos_integer()) {
       ex x = f.expand();
       if (!x.is_equal(f)) return antiderivative(x, s);
+      // sin² θ = (1 − cos 2θ)/2 and the like
+      if (trig_factors(f) >= 2) {
+        ex l = linearize_trig(f);
+        if (!l.is_equal(f)) return antiderivative(l, s);
+      }
     }
     return std::nullopt;
   }
