@@ -39,6 +39,10 @@ void take_root_numbers(Factors& f, GiNaC::numeric& rn, GiNaC::numeric& rd);
 /// for the sums in it), so that the numbers reduced next are the same in every run.
 bool flatten_roots(Factors& f);
 
+/// Whether a power prints as a product does (split into groups): a negative or half-integer
+/// exponent (x/y, √x), or an integer power of a sum (the sum oriented as a factor is).
+bool printed_as_product(const GiNaC::ex& power);
+
 /// A term of a sum as it prints: its sign, the text that orders it and its text without the sign.
 struct Term {
   bool negative = false;

@@ -448,11 +448,7 @@ public:
     if (is_a<mul>(e)) return product(e, ctx);
     if (is_a<power>(e)) {
       ex k = e.op(1);
-      // negative and half-integer powers, and integer powers of sums (oriented as factors are)
-      if (is_a<numeric>(k) && ex_to<numeric>(k).is_rational() &&
-          (ex_to<numeric>(k).is_negative() || ex_to<numeric>(k).denom() == 2 ||
-           (ex_to<numeric>(k).is_integer() && is_a<add>(e.op(0)))))
-        return product(e, ctx);
+      if (detail::printed_as_product(e)) return product(e, ctx);
       if (is_a<numeric>(k) && ex_to<numeric>(k).is_rational()) return factor_text({e.op(0), ex_to<numeric>(k)}, ctx);
       if (is_a<function>(e.op(0)) && ex_to<function>(e.op(0)).get_name() == "exp")
         return "e^{" + print(e.op(0).op(0), 0) + "}";

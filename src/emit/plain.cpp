@@ -159,11 +159,7 @@ std::string print(const ex& e, int ctx) {
   if (is_a<mul>(e)) return product(e, ctx);
   if (is_a<power>(e)) {
     ex k = e.op(1);
-    // negative and half-integer powers, and integer powers of sums (oriented as factors are)
-    if (is_a<numeric>(k) && ex_to<numeric>(k).is_rational() &&
-        (ex_to<numeric>(k).is_negative() || ex_to<numeric>(k).denom() == 2 ||
-         (ex_to<numeric>(k).is_integer() && is_a<add>(e.op(0)))))
-      return product(e, ctx);
+    if (detail::printed_as_product(e)) return product(e, ctx);
     std::string s = print(e.op(0), kAtom) + "^" + print(k, kAtom);
     return ctx > kPower ? "(" + s + ")" : s;
   }
@@ -351,6 +347,13 @@ bool flatten_roots(Factors& f) {
   drop_ones(f.root_num);
   drop_ones(f.root_den);
   return minus;
+}
+
+bool printed_as_product(const ex& power) {
+  const ex& k = power.op(1);
+  if (!is_a<numeric>(k) || !ex_to<numeric>(k).is_rational()) return false;
+  const numeric& q = ex_to<numeric>(k);
+  return q.is_negative() || q.denom() == 2 || (q.is_integer() && is_a<add>(power.op(0)));
 }
 
 std::string join_terms(std::vector<Term> terms) {
