@@ -20,6 +20,17 @@ using kinergy::principles::work;
 
 namespace {
 
+/// A wheel on a fixed axle at O, turned by one couple `name` of moment `M`, from phi = phi1 at
+/// rest (state 1) to phi = phi2 (state 2); `params` adds parameter lines to m and k.
+Model wheel_with_couple(const std::string& params, const std::string& name, const std::string& M,
+                        const std::string& phi1, const std::string& phi2) {
+  return kt::model_of("title: a wheel turned by a couple\nparameters:\n  m: kg\n  k: m\n" + params +
+                      "points:\n  O: [0, 0]\ncoordinates:\n  phi: rad\nbodies:\n  wheel:\n    mass: m\n"
+                      "    inertia: {gyration: k}\n    position: [0, 0]\n    angle: phi\neffects:\n"
+                      "  axle: {pin: [O, wheel]}\n  " + name + ": {couple: wheel, M: " + M + "}\nstates:\n"
+                      "  1: {phi: " + phi1 + ", phi_dot: 0}\n  2: {phi: " + phi2 + "}\n");
+}
+
 /// F is an antiderivative of f in s: F' − f = 0.
 bool differentiates_back(const ex& F, const ex& f, const symbol& s) {
   return kt::symbolically_zero(F.diff(s) - f);
@@ -163,30 +174,7 @@ TEST_CASE("antiderivative: products and powers of sin and cos, a polynomial time
 // work() between states
 
 TEST_CASE("constant couple: U = M (phi2 - phi1)", "[principles][work]") {
-  Model m = kt::model_of(R"(title: couple
-parameters:
-  m: kg
-  k: m
-  M0: N*m
-  a1: rad
-  a2: rad
-points:
-  O: [0, 0]
-coordinates:
-  phi: rad
-bodies:
-  wheel:
-    mass: m
-    inertia: {gyration: k}
-    position: [0, 0]
-    angle: phi
-effects:
-  axle: {pin: [O, wheel]}
-  drive: {couple: wheel, M: M0}
-states:
-  1: {phi: a1, phi_dot: 0}
-  2: {phi: a2}
-)");
+  Model m = wheel_with_couple("  M0: N*m\n  a1: rad\n  a2: rad\n", "drive", "M0", "a1", "a2");
   Knowledge know(m);
   auto w = work(m, kt::effect(m, "drive"), 0, 1, know);
   ex M0 = kt::param(m, "M0");
@@ -207,28 +195,7 @@ TEST_CASE("couple on one of two geared wheels: U = M (phiA2 - phiA1)", "[princip
 TEST_CASE("couple proportional to the angle: U = c (phi2^2 - phi1^2)/2", "[principles][work]") {
   // Regression: through antiderivative(c*phi, phi) (see above) work() used to throw
   // "the work of 'winder' has no closed form integral along phi".
-  Model m = kt::model_of(R"(title: winding couple
-parameters:
-  m: kg
-  k: m
-  c: N*m
-points:
-  O: [0, 0]
-coordinates:
-  phi: rad
-bodies:
-  wheel:
-    mass: m
-    inertia: {gyration: k}
-    position: [0, 0]
-    angle: phi
-effects:
-  axle: {pin: [O, wheel]}
-  winder: {couple: wheel, M: -c*phi}
-states:
-  1: {phi: 0, phi_dot: 0}
-  2: {phi: 2}
-)");
+  Model m = wheel_with_couple("  c: N*m\n", "winder", "-c*phi", "0", "2");
   Knowledge know(m);
   ex U;
   REQUIRE_NOTHROW(U = work(m, kt::effect(m, "winder"), 0, 1, know).U);
@@ -238,28 +205,7 @@ states:
 
 TEST_CASE("a couple M0 sin(phi) cos(phi): U = M0 sin^2(phi2)/2 from phi1 = 0", "[principles][work]") {
   // issue 13: refused before ("no closed form integral"); the same couple as M0 sin(2 phi)/2 was taken
-  Model m = kt::model_of(R"(title: a couple M0 sin(phi) cos(phi)
-parameters:
-  m: kg
-  k: m
-  M0: N*m
-points:
-  O: [0, 0]
-coordinates:
-  phi: rad
-bodies:
-  wheel:
-    mass: m
-    inertia: {gyration: k}
-    position: [0, 0]
-    angle: phi
-effects:
-  axle: {pin: [O, wheel]}
-  drive: {couple: wheel, M: M0*sin(phi)*cos(phi)}
-states:
-  1: {phi: 0, phi_dot: 0}
-  2: {phi: 1.2}
-)");
+  Model m = wheel_with_couple("  M0: N*m\n", "drive", "M0*sin(phi)*cos(phi)", "0", "1.2");
   Knowledge know(m);
   ex U;
   REQUIRE_NOTHROW(U = work(m, kt::effect(m, "drive"), 0, 1, know).U);
