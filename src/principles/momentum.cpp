@@ -1,8 +1,12 @@
 #include "kinergy/principles/momentum.hpp"
 
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <random>
 #include <sstream>
+
+#include <Eigen/Dense>
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/effects/contact.hpp"
@@ -59,6 +63,74 @@ int motion_direction(const Model& m, const Effect& e, std::optional<int> declare
 }
 
 namespace {
+
+/// A virtual motion of the body set: for each body in it, the displacement of its mass centre
+/// and its rotation (δx̄, δȳ, δφ) per unit of the motion, generic in q.
+using VirtualMotion = std::function<std::array<ex, 3>(int body)>;
+
+/// Can the coordinates move the set by `field` while every other body stays put?
+///   find δq with  ∂(x̄_b, ȳ_b, φ_b)/∂q · δq = field(b) for b in the set, = 0 for the rest.
+/// When they can, the supports the parametrization implies (a track, a floor, an axle) do no work
+/// on that motion, so they have no part in its balance; when they cannot, one of them has.
+/// Tested numerically at random positions (parameters at their values): a least-squares δq whose
+/// residual is negligible against the sizes involved. Unknown parameters or undefined positions:
+/// taken as free (nothing can be told).
+bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field) {
+  const std::size_t B = m.bodies.size(), n = m.coords.size();
+  exmap env = m.numeric_environment();
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (int trial = 0; trial < 3; ++trial) {
+    exmap at = env;
+    for (auto& c : m.coords) at[c.q] = numeric(u(rng));
+    at[m.t] = numeric(u(rng) + 2);
+    Eigen::MatrixXd J(3 * B, n);
+    Eigen::VectorXd e(3 * B);
+    try {
+      auto value = [&](const ex& x) {
+        ex v = x.subs(at).evalf();
+        if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) throw std::domain_error("not a number");
+        return ex_to<numeric>(v).to_double();
+      };
+      for (std::size_t b = 0; b < B; ++b) {
+        const model::Body& body = m.bodies[b];
+        const ex comp[3] = {body.x, body.y, body.angle};
+        std::array<ex, 3> want = {0, 0, 0};
+        if (in_set(a.bodies, static_cast<int>(b))) want = field(static_cast<int>(b));
+        for (int r = 0; r < 3; ++r) {
+          for (std::size_t i = 0; i < n; ++i) J(3 * b + r, i) = value(comp[r].diff(m.coords[i].q));
+          e(3 * b + r) = value(want[r]);
+        }
+      }
+    } catch (const std::exception&) {
+      return true;
+    }
+    if (!J.allFinite() || !e.allFinite()) return true;
+    Eigen::VectorXd dq = J.completeOrthogonalDecomposition().solve(e);
+    double scale = e.norm() + J.norm() * dq.norm();
+    if ((J * dq - e).norm() > 1e-9 * scale) return false;
+  }
+  return true;
+}
+
+/// Does a declared support across the set (a pin) bring an unknown reaction?
+bool supports_declared(const Model& m, const Analysis& a) {
+  for (auto& e : m.effects)
+    if (e.reaction_across(a.bodies)) return true;
+  return false;
+}
+
+/// Does a declared support across the set (a pin, a constraint with its reaction) push on it
+/// along n with an unknown reaction?
+bool reaction_along(const Model& m, const Analysis& a, const Knowledge& k, const ex& nx, const ex& ny) {
+  for (auto& e : m.effects) {
+    std::vector<Push> out;
+    e.pushes(m, a, k, out);
+    for (auto& p : out)
+      if (p.reaction && !vanishes(m, p.Rx * nx + p.Ry * ny)) return true;
+  }
+  return false;
+}
 
 /// ∫_{t₁}^{t₂} f(t) dt for f free of the motion.
 ex time_integral(const Model& m, const Effect& e, const ex& f, const Analysis& a) {
@@ -138,7 +210,10 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
     ex L = 0;
     for (int b : a.bodies) L += m.bodies[b].mass * dot(m.rate(m.bodies[b].x), m.rate(m.bodies[b].y), nx, ny);
     L = model::collect_simplify(L, [&] { lst l; for (auto& co : m.coords) l.append(co.qd); return l; }());
-    if (vanishes(m, L)) {
+    // a declared support across the set (a pin) takes up, with its unknown reaction, what the
+    // set's own motion does not; any other support along n is one the scene does not declare
+    const bool declared = reaction_along(m, a, k, nx, ny);
+    if (!declared && vanishes(m, L)) {
       // the coordinates never move these bodies along n: their supports (a floor, a guide, a
       // cord held fixed) take every impulse along n, so the balance says nothing there — and
       // an effect pushing along n would be met by a support force the analysis cannot know
@@ -159,6 +234,12 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
         }
       continue;
     }
+    if (!declared && !moves_freely(m, a, [&](int) { return std::array<ex, 3>{nx, ny, 0}; }))
+      throw SceneError(a.pos, "the bodies of this momentum analysis (" + set_name(m, a) + ") cannot move freely along " + name +
+                                  ": a support the scene does not declare (a track, a surface, an axle) pushes on them along " + name +
+                                  " with a force the analysis does not know",
+                       "take the momentum along a direction in which they move freely (along their track), or declare the support as a "
+                       "pin so that its reaction is an unknown");
     check_constraints(m, a);
     c.before = m.bind(L, a.from);
     c.after = m.bind(L, a.to);
@@ -213,6 +294,15 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   c.before = m.bind(H, a.from);
   c.after = m.bind(H, a.to);
   auto [px, py] = m.position(a.about);
+  // a support the scene does not declare must have no moment about P: the set turns freely
+  // about P (δr̄ = k × (r̄ − r_P), δφ = 1) while the rest stays put
+  if (!supports_declared(m, a) &&
+      !moves_freely(m, a, [&](int b) { return std::array<ex, 3>{-(m.bodies[b].y - py), m.bodies[b].x - px, 1}; }))
+    throw SceneError(a.pos, "the bodies of this angular momentum analysis (" + set_name(m, a) + ") cannot turn freely about " +
+                                a.about.text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
+                                a.about.text + " the analysis does not know",
+                     "take moments about a point they turn about freely (a pivot, a contact point on the ground, their mass centre), "
+                     "or declare the support as a pin so that its reaction is an unknown");
   ex I = 0;
   for (auto& e : m.effects) {
     for (auto& p : pushes(m, e, a, k)) {

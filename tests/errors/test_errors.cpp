@@ -822,6 +822,17 @@ const ExactCase kExact[] = {
     {"huge_power_parameter.yaml", "9:14",
      "a power here has the exponent 1000000000, too large for exact arithmetic \u2014 check the exponent: at most 100000 "
      "in size (no physical quantity needs more)"},
+    // the incline's normal force has an x component: without it, momentum along x gave v = 0
+    {"momentum_across_track.yaml", "23:5",
+     "the bodies of this momentum analysis (all bodies) cannot move freely along x: a support the scene does not declare "
+     "(a track, a surface, an axle) pushes on them along x with a force the analysis does not know \u2014 take the momentum "
+     "along a direction in which they move freely (along their track), or declare the support as a pin so that its "
+     "reaction is an unknown"},
+    {"moment_of_undeclared_support.yaml", "24:5",
+     "the bodies of this angular momentum analysis (all bodies) cannot turn freely about O: a support the scene does not "
+     "declare (a track, a surface, an axle) has a moment about O the analysis does not know \u2014 take moments about a "
+     "point they turn about freely (a pivot, a contact point on the ground, their mass centre), or declare the support as "
+     "a pin so that its reaction is an unknown"},
 };
 }  // namespace
 
