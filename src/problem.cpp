@@ -392,7 +392,8 @@ private:
     }
   // a float in the result comes only from a numeric root: no closed form
   r.closed_form = !has_float(c);
-  r.closed = model::factored(model::root_simplify(model::tidy(model::tidy_function_arguments(c))));
+  r.closed = model::factored(model::root_simplify(model::tidy(model::tidy_function_arguments(c)),
+                                                  [this](const ex& x) { return m.fixed_sign(x); }));
   if (f.unit) {
     r.unit = f.unit->text;
     r.unit_factor = f.unit->factor;

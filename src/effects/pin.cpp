@@ -31,8 +31,9 @@ public:
     Push p;
     p.unknown = true;
     p.reaction = true;
-    p.Rx = it->second.first;
-    p.Ry = it->second.second;
+    p.implied = true;
+    p.Rx = it->second[0];
+    p.Ry = it->second[1];
     auto [x, y] = m.position(ia ? a : b);
     p.arm_x = x;
     p.arm_y = y;
@@ -47,7 +48,7 @@ public:
         throw InputError("pin '" + name + "' is not external to the bodies of the analysis between states " +
                              m.states[an.from].name + " and " + m.states[an.to].name,
                          "list in 'bodies' the body the pin holds, and not the body on its other side");
-      return it->second;
+      return {it->second[0], it->second[1]};
     }
     // impact: the impulse on the pinned body = its momentum change minus the other impulses on it
     int bi = b.body >= 0 ? b.body : a.body;

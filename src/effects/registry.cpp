@@ -15,6 +15,7 @@
   X(friction_couple)            \
   X(power)                      \
   X(pin)                        \
+  X(constraint)                 \
   X(contact)                    \
   X(impulse)                    \
   X(cord_pull)

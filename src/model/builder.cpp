@@ -288,18 +288,28 @@ private:
   }
 
   void constraints() {
-    for (auto& c : d_.constraints) {
-      ex e = equation(c, SceneContext::Geometry, "constraint");
-      if (e.is_zero())
-        throw SceneError(c.pos, "the constraint '" + c.s + "' says nothing (0 = 0)",
-                         "write a relation between coordinates, e.g. x + r*phi = 0");
-      bool has_q = false;
-      for (auto& co : m_.coords) has_q = has_q || e.has(co.q);
-      if (!has_q)
-        throw SceneError(c.pos, "the constraint '" + c.s + "' has no coordinate",
-                         "a constraint relates coordinates, e.g. x + r*phi = 0");
-      m_.constraints.push_back({e, c.pos});
+    for (auto& c : d_.constraints) constraint(c, "constraint");
+  }
+
+  std::size_t constraint(const Text& c, const std::string& key) override {
+    ex e = equation(c, SceneContext::Geometry, key);
+    if (e.is_zero())
+      throw SceneError(c.pos, "the constraint '" + c.s + "' says nothing (0 = 0)",
+                       "write a relation between coordinates, e.g. x + r*phi = 0");
+    bool has_q = false;
+    for (auto& co : m_.coords) has_q = has_q || e.has(co.q);
+    if (!has_q)
+      throw SceneError(c.pos, "the constraint '" + c.s + "' has no coordinate",
+                       "a constraint relates coordinates, e.g. x + r*phi = 0");
+    // the same relation twice (up to a factor) would make the constraints dependent
+    for (auto& [o, opos] : m_.constraints) {
+      ex ratio = GiNaC::normal(e / o);
+      if (is_a<numeric>(ratio))
+        throw SceneError(c.pos, "the relation '" + c.s + "' is already the constraint on line " + std::to_string(opos.line),
+                         "write it once: remove it from 'constraints:' when an effect holds it (its reaction can then be asked for)");
     }
+    m_.constraints.push_back({e, c.pos});
+    return m_.constraints.size() - 1;
   }
 
   // --- effects: each kind reads its own options (src/effects/) through these ---
@@ -569,7 +579,7 @@ private:
     std::vector<std::string> names;
     for (auto* k : kinds) names.push_back(k->name);
     const Dimension P = Dimension::mass() * Dimension::length() / Dimension::time();  // impulse
-    std::map<std::string, std::pair<ex, ex>> pin_reactions;  // "pin|S1|S2" → (Rx, Ry)
+    std::map<std::string, std::vector<ex>> known_reactions;  // "effect|S1|S2" → its unknowns (Rx, Ry or J)
     for (auto& ad : d_.analyses) {
       auto kind = std::find_if(kinds.begin(), kinds.end(), [&](const AnalysisKind* k) { return k->name == ad.kind; });
       if (kind == kinds.end()) {
@@ -610,18 +620,15 @@ private:
       a.type->read(*this, ad, a);
       if (!a.instant) time_order(a);
       if (a.type->takes_reactions()) {
-        // supports between the body set and the rest (pins) carry unknown reactions
+        // supports between the body set and the rest (pins, constraints) carry unknown reactions
         for (auto& e : m_.effects) {
           if (!e.reaction_across(a.bodies)) continue;
           std::string key = e.name + "|" + S1 + "|" + S2;
-          if (!pin_reactions.count(key)) {
-            ex Rx = impulse_symbol("Rx_" + e.name + "[" + S1 + "," + S2 + "]", P);
-            ex Ry = impulse_symbol("Ry_" + e.name + "[" + S1 + "," + S2 + "]", P);
-            pin_reactions[key] = {Rx, Ry};
-          }
-          a.reactions[e.name] = pin_reactions[key];
-          a.unknowns.push_back(pin_reactions[key].first);
-          a.unknowns.push_back(pin_reactions[key].second);
+          if (!known_reactions.count(key))
+            for (auto& part : e.reaction_parts())
+              known_reactions[key].push_back(impulse_symbol(part + "_" + e.name + "[" + S1 + "," + S2 + "]", P));
+          a.reactions[e.name] = known_reactions[key];
+          for (auto& u : known_reactions[key]) a.unknowns.push_back(u);
         }
       }
       m_.analyses.push_back(a);

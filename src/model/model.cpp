@@ -234,6 +234,19 @@ exmap Model::numeric_environment() const {
   return m;
 }
 
+int Model::fixed_sign(const ex& e) const {
+  exmap vals;
+  for (auto& p : params)
+    if (p.value) vals[p.sym] = *p.value;
+  try {
+    ex v = e.subs(vals).evalf();
+    if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real() || ex_to<numeric>(v).is_zero()) return 0;
+    return ex_to<numeric>(v).is_positive() ? 1 : -1;
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
 const Parameter* Model::parameter(const std::string& n) const {
   for (auto& p : params)
     if (p.name == n) return &p;

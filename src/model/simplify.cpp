@@ -167,8 +167,11 @@ struct unshift : public map_function {
   }
 };
 
-// √(c·p²·q) → |p|·√(c·q) for p positive (a positive symbol, or a positive number).
+// √(c·p²·q) → |p|·√(c·q) for p positive (a positive symbol, or a positive number), and
+// √(c·p^(2k)·q) → (σp)^k·√(c·q) for p of a fixed sign σ (`sign`).
 struct unroot : public map_function {
+  SignOf sign;
+  explicit unroot(SignOf s = nullptr) : sign(std::move(s)) {}
   ex operator()(const ex& e) override {
     ex m = e.map(*this);
     if (!is_a<power>(m) || !is_a<numeric>(m.op(1))) return m;
@@ -191,6 +194,10 @@ struct unroot : public map_function {
         long p = ex_to<numeric>(x.op(1)).to_long();
         out *= pow(x.op(0), p / 2);
         in *= pow(x.op(0), p % 2);
+      } else if (int s = 0; sign && is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_even() &&
+                            (s = sign(x.op(0))) != 0) {
+        // (p^(2k))^(1/2) = |p|^k = (σp)^k
+        out *= pow(s * x.op(0), ex_to<numeric>(x.op(1)).to_long() / 2);
       } else {
         in *= x;
       }
@@ -236,7 +243,7 @@ struct merge_roots : public map_function {
 
 ex unshift_trig(const ex& e) { return unshift()(e); }
 
-ex root_simplify(const ex& e) { return unroot()(merge_roots()(e)); }
+ex root_simplify(const ex& e, const SignOf& sign) { return unroot(sign)(merge_roots()(e)); }
 
 ex trig_simplify(const ex& e) {
   ex x = unshift()(e).expand();

@@ -98,8 +98,10 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field)
         std::array<ex, 3> want = {0, 0, 0};
         if (in_set(a.bodies, static_cast<int>(b))) want = field(static_cast<int>(b));
         for (int r = 0; r < 3; ++r) {
-          for (std::size_t i = 0; i < n; ++i) J(3 * b + r, i) = value(comp[r].diff(m.coords[i].q));
-          e(3 * b + r) = value(want[r]);
+          // a particle's angle carries no momentum: its turning does not matter
+          bool matters = r < 2 || !body.inertia.is_zero();
+          for (std::size_t i = 0; i < n; ++i) J(3 * b + r, i) = matters ? value(comp[r].diff(m.coords[i].q)) : 0.0;
+          e(3 * b + r) = matters ? value(want[r]) : 0.0;
         }
       }
     } catch (const std::exception&) {
@@ -113,21 +115,26 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field)
   return true;
 }
 
-/// Does a declared support across the set (a pin) bring an unknown reaction?
-bool supports_declared(const Model& m, const Analysis& a) {
-  for (auto& e : m.effects)
-    if (e.reaction_across(a.bodies)) return true;
+/// Does a support the coordinates imply (a pin) join the set to the rest, with an unknown reaction?
+bool supports_declared(const Model& m, const Analysis& a, const Knowledge& k) {
+  for (auto& e : m.effects) {
+    std::vector<Push> out;
+    e.pushes(m, a, k, out);
+    for (auto& p : out)
+      if (p.implied) return true;
+  }
   return false;
 }
 
-/// Does a declared support across the set (a pin, a constraint with its reaction) push on it
-/// along n with an unknown reaction?
+/// Does a support the coordinates imply (a pin) push on the set along n with an unknown reaction?
+/// (A constraint's reaction is a force the coordinates do not imply: the set still has to move
+/// freely along n for every other support to do no work.)
 bool reaction_along(const Model& m, const Analysis& a, const Knowledge& k, const ex& nx, const ex& ny) {
   for (auto& e : m.effects) {
     std::vector<Push> out;
     e.pushes(m, a, k, out);
     for (auto& p : out)
-      if (p.reaction && !vanishes(m, p.Rx * nx + p.Ry * ny)) return true;
+      if (p.implied && !vanishes(m, p.Rx * nx + p.Ry * ny)) return true;
   }
   return false;
 }
@@ -170,7 +177,10 @@ std::string set_name(const Model& m, const Analysis& a) {
 /// body alone is with the ground (rolling), and one that reaches outside the set pulls from
 /// outside: both forces are unknown, so over a duration the analysis cannot hold them.
 void check_constraints(const Model& m, const Analysis& a) {
-  for (auto& [c, pos] : m.constraints) {
+  for (std::size_t ci = 0; ci < m.constraints.size(); ++ci) {
+    const auto& [c, pos] = m.constraints[ci];
+    // held by a named effect: its reaction is that effect's unknown
+    if (std::any_of(m.effects.begin(), m.effects.end(), [&](const Effect& e) { return e.carries(ci); })) continue;
     std::vector<int> coupled;
     for (std::size_t b = 0; b < m.bodies.size(); ++b)
       for (auto& co : m.coords)
@@ -189,8 +199,10 @@ void check_constraints(const Model& m, const Analysis& a) {
     throw SceneError(a.pos, "the constraint '" + model::text(c) + " = 0' (line " + std::to_string(pos.line) + ") pushes on " + names +
                                 " with a force this " + a.kind + " analysis cannot include (" +
                                 (coupled.size() == 1 ? "a contact with the ground, such as rolling" : "a cord, a gear or a link to a body outside it") + ")",
-                     coupled.size() == 1 ? "model that force as an effect, or use an energy analysis"
-                                         : "list every body it couples in 'bodies' (" + names + "), or use an energy analysis");
+                     "name it as an effect so that its reaction is an unknown ('NAME: {constraint: \"" + model::text(c) +
+                         " = 0\", between: [A, B], at: [x, y]}', removed from 'constraints:')" +
+                         (coupled.size() == 1 ? std::string(", or use an energy analysis")
+                                              : ", list every body it couples in 'bodies' (" + names + "), or use an energy analysis"));
   }
 }
 
@@ -249,8 +261,12 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
         ex In;
         std::string how;
         if (p.unknown) {
-          In = dot(p.Rx, p.Ry, nx, ny);
-          how = p.reaction ? "reaction impulse (unknown)" : "given impulse";
+          In = model::trig_simplify(dot(p.Rx, p.Ry, nx, ny));
+          if (!motion_free(m, In))
+            throw SceneError(e.pos, "the reaction of '" + e.name + "' turns with the motion, so its impulse along " + name +
+                                        " is unknown in a way no equation fixes",
+                             "take the momentum along a direction its component keeps, or use its angular impulse");
+          how = !p.what.empty() ? p.what : p.reaction ? "reaction impulse (unknown)" : "given impulse";
         } else {
           ex Fn = dot(p.Fx, p.Fy, nx, ny);
           if (vanishes(m, Fn)) continue;
@@ -296,7 +312,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   auto [px, py] = m.position(a.about);
   // a support the scene does not declare must have no moment about P: the set turns freely
   // about P (δr̄ = k × (r̄ − r_P), δφ = 1) while the rest stays put
-  if (!supports_declared(m, a) &&
+  if (!supports_declared(m, a, k) &&
       !moves_freely(m, a, [&](int b) { return std::array<ex, 3>{-(m.bodies[b].y - py), m.bodies[b].x - px, 1}; }))
     throw SceneError(a.pos, "the bodies of this angular momentum analysis (" + set_name(m, a) + ") cannot turn freely about " +
                                 a.about.text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
@@ -312,14 +328,17 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       if (p.unknown) {
         // (r_Q − r_P) × R; a reaction's arm must stay fixed over the interval, a given impulse
         // acts at the first state
+        // (a force sliding along its own line keeps its moment: a rolling contact's friction)
         ex ax = model::trig_simplify(p.arm_x - px), ay = model::trig_simplify(p.arm_y - py);
         if (vanishes(m, ax) && vanishes(m, ay)) continue;
-        if (p.reaction && !(motion_free(m, ax) && motion_free(m, ay)) && !a.instant)
-          throw SceneError(e.pos, "the reaction of pin '" + e.name + "' acts at a point that moves relative to " + a.about.text +
-                                      ", so its angular impulse is unknown in a way no equation fixes",
+        ex Mr = model::trig_simplify(cross(ax, ay, p.Rx, p.Ry));
+        if (vanishes(m, Mr)) continue;
+        if (p.reaction && !motion_free(m, Mr) && !a.instant)
+          throw SceneError(e.pos, "the reaction of '" + e.name + "' has a moment about " + a.about.text +
+                                      " that changes with the motion, so its angular impulse is unknown in a way no equation fixes",
                            "take moments about the pin itself, or about a fixed point");
-        In = m.bind(cross(ax, ay, p.Rx, p.Ry), a.from);
-        how = p.reaction ? "moment of the reaction impulse (unknown)" : "moment of the given impulse";
+        In = m.bind(Mr, a.from);
+        how = !p.what.empty() ? "moment of the " + p.what : p.reaction ? "moment of the reaction impulse (unknown)" : "moment of the given impulse";
       } else {
         Mp = model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
         if (vanishes(m, Mp)) continue;

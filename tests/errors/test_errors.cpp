@@ -833,6 +833,17 @@ const ExactCase kExact[] = {
      "declare (a track, a surface, an axle) has a moment about O the analysis does not know \u2014 take moments about a "
      "point they turn about freely (a pivot, a contact point on the ground, their mass centre), or declare the support as "
      "a pin so that its reaction is an unknown"},
+    // a rolling relation held at the mass centre: no force there does the relation's virtual work
+    {"constraint_wrong_place.yaml", "19:51",
+     "constraint 'rolling': no force between disk at [x*cos(beta) + r*sin(beta), -x*sin(beta) + r*cos(beta)] and ground "
+     "holds 'x + r*phi = 0' (along phi its work does not match the relation) \u2014 give in 'at' the place where the parts "
+     "touch (the pitch point of a mesh, the contact point of a rolling body, where a cord leaves a drum)"},
+    {"constraint_twice.yaml", "28:23",
+     "the relation 'rA*phiA + rB*phiB = 0' is already the constraint on line 22 \u2014 write it once: remove it from "
+     "'constraints:' when an effect holds it (its reaction can then be asked for)"},
+    {"constraint_no_relative_motion.yaml", "26:56",
+     "constraint 'mesh': gearA and OA never move relative to each other, so no force between them holds "
+     "'rA*phiA + rB*phiB = 0' \u2014 name in 'between' (and 'at') the two parts whose contact keeps the relation"},
 };
 }  // namespace
 

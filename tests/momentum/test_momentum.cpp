@@ -512,7 +512,9 @@ TEST_CASE("momentum of a block hanging on a cord counts the cord's impulse (or i
   // pulley by the cord yA = r*phi - a. A momentum analysis of block A alone leaves out the cord
   // tension: alone it gives the free fall vA2 = -g t2 = -29.43 m/s for a block the motor raises
   // at 3.460 m/s; beside the system's angular momentum it is refused as "the equations
-  // contradict each other". The cord's impulse should be an unknown, like a pin's reaction.
+  // contradict each other". Written under `constraints:` the cord is anonymous: refused, and the
+  // fix says how to name it (an effect `{constraint: …}`, whose impulse is then an unknown, as in
+  // derivations/momentum/drum_cord_tension.yaml).
   auto atwood = kt::read_file(momentum_file("atwood_motor_time.yaml"));
   SECTION("beside the angular momentum of the system: vA2 = 3.460 m/s still") {
     auto text = edit(atwood, "  - momentum: {from: 1, to: 2, along: y}\n", "  - momentum: {from: 1, to: 2, along: y, bodies: [blockA]}\n");
@@ -534,6 +536,7 @@ TEST_CASE("momentum of a block hanging on a cord counts the cord's impulse (or i
                           Catch::Contains("the constraint"));
       CHECK_THAT(err, Catch::Contains("cannot include"));
       CHECK_THAT(err, Catch::Contains("blockA"));
+      CHECK_THAT(err, Catch::Contains("{constraint: "));
     }
   }
   SECTION("alone: not the free fall") {
@@ -594,6 +597,71 @@ find:
     text = edit(text, "v2: s_dot@2", "v2: y_dot@2");
     auto s = solve_text(edit(text, "ANALYSIS", "momentum: {from: 1, to: 2}"));
     CHECK(exactly_zero(closed(s, "v2") + P(s, "g") * P(s, "t2")));
+  }
+}
+
+TEST_CASE("a constraint held by a named effect: its reaction is an unknown of the bodies it joins", "[momentum][constraints]") {
+  // A bead on a smooth circular wire (radius R, horizontal plane), moving at v0 at (R, 0). The
+  // wire's force is radial: no moment about the centre O.
+  const std::string ring = R"Y(title: bead on a circular wire
+parameters:
+  m: kg
+  R: m
+  v0: m/s
+points: {O: [0, 0]}
+coordinates:
+  x: m
+  y: m
+bodies:
+  bead: {mass: m, inertia: particle, position: [x, y]}
+effects:
+  wire: {constraint: "x^2 + y^2 = R^2", between: [bead, ground]}
+states:
+  1: {x: R, y: 0, x_dot: 0, y_dot: v0, t: 0}
+  2: {x: 0, y: R, t: 1 s}
+analyses:
+  - ANALYSIS
+find:
+  v2: x_dot@2
+)Y";
+  SECTION("about O the wire has no moment: m R v0 = -m R x_dot at (0, R)") {
+    auto s = solve_text(edit(ring, "ANALYSIS", "angular_momentum: {from: 1, to: 2, about: O, conserved: true}"));
+    CHECK(exactly_zero(closed(s, "v2") + P(s, "v0")));
+  }
+  SECTION("its direction turns: momentum along x is refused, naming the wire") {
+    REQUIRE_THROWS_WITH(solve_text(edit(ring, "ANALYSIS", "momentum: {from: 1, to: 2, along: x}")),
+                        Catch::Contains("the reaction of 'wire' turns with the motion"));
+  }
+  SECTION("and its impulse has no fixed components") {
+    auto text = edit(ring, "ANALYSIS", "angular_momentum: {from: 1, to: 2, about: O}");
+    text = edit(text, "  v2: x_dot@2\n", "  v2: x_dot@2\n  Jx: \"impulse_x(wire, 1, 2)\"\n");
+    REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("the force of constraint 'wire' turns with the motion"));
+  }
+  SECTION("asked across no boundary: refused, naming its parties") {
+    auto text = kt::read_file(momentum_file("gears_time_tooth_force.yaml"));
+    text = edit(text, "  - angular_momentum: {from: 1, to: 2, about: OA, bodies: [gearA]}\n  - angular_momentum: {from: 1, to: 2, about: OB, bodies: [gearB]}\n",
+                "  - angular_momentum: {from: 1, to: 2, about: OA, bodies: [gearA]}\n  - momentum: {from: 1, to: 2, bodies: [gearA, gearB]}\n");
+    text = text.substr(0, text.find("find:\n")) + "find:\n  J: \"impulse(mesh, 1, 3)\"\n";
+    text = edit(text, "  2: {phiA_dot: nA}\n", "  2: {phiA_dot: nA}\n  3: {t: 1 s}\n");
+    text = edit(text, "  - momentum: {from: 1, to: 2, bodies: [gearA, gearB]}", "  - momentum: {from: 1, to: 3, bodies: [gearA, gearB]}");
+    REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("does not join the bodies of the analysis"));
+  }
+  SECTION("the gears of derivations/momentum isolated: symbolic, by hand") {
+    // gear B: IB (rA/rB) wA = rB J; gear A: IA wA = M t - rA J
+    auto text = kt::read_file(momentum_file("gears_time_tooth_force.yaml"));
+    for (const char* p : {"  mA: 10 kg\n", "  kA: 0.1 m\n", "  rA: 0.15 m\n", "  mB: 30 kg\n", "  kB: 0.25 m\n", "  rB: 0.3 m\n",
+                          "  M: 20 N*m\n", "  nA: 600 rpm\n", "  g: 9.81 m/s^2\n"}) {
+      std::string line(p), name = line.substr(2, line.find(':') - 2), unit = line.substr(line.find(' ', 4) + 1);
+      text = edit(text, line, "  " + name + ": " + (name == "nA" ? std::string("rad/s\n") : unit));
+    }
+    text = text.substr(0, text.find("find:\n")) +
+           "find:\n  t2: t@2\n  J: \"impulse(mesh, 1, 2)\"\n  Jy: \"impulse_y(mesh, 1, 2)\"\n";
+    auto s = solve_text(text);
+    ex IA = P(s, "mA") * pow(P(s, "kA"), 2), IB = P(s, "mB") * pow(P(s, "kB"), 2), rA = P(s, "rA"), rB = P(s, "rB");
+    ex wA = P(s, "nA"), J = IB * rA * wA / (rB * rB);
+    CHECK(exactly_zero(closed(s, "J") - J));
+    CHECK(exactly_zero(closed(s, "Jy") + J));
+    CHECK(exactly_zero(closed(s, "t2") - (IA * wA + rA * J) / P(s, "M")));
   }
 }
 

@@ -85,6 +85,9 @@ public:
   virtual std::optional<int> direction_of(const scene::EffectDef& e) = 0;
   /// A new unknown impulse of the given dimension (a contact's, a constraint's reaction).
   virtual ex unknown(const std::string& name, const units::Dimension& d) = 0;
+  /// A relation "lhs = rhs" between coordinates, checked (units, a coordinate in it, not already
+  /// among `constraints:`) and added to the model's constraints: its index there.
+  virtual std::size_t constraint(const scene::Text& t, const std::string& key) = 0;
 };
 
 /// One effect of a scene. Defaults describe an effect that does nothing in that respect.
@@ -113,8 +116,14 @@ public:
   /// momentum analysis over its duration. @throws SceneError when they cannot be integrated.
   virtual void pushes(const Model& m, const Analysis& a, const principles::Knowledge& k,
                       std::vector<principles::Push>& out) const;
-  /// Does this effect join the body set to the rest with an unknown reaction (a pin)?
+  /// Does this effect join the body set to the rest with an unknown reaction (a pin, a constraint
+  /// between a body of the set and one outside it)?
   virtual bool reaction_across(const std::vector<int>& /*bodies*/) const { return false; }
+  /// The names of the parts of that unknown reaction impulse (a pin: its components; a
+  /// constraint: its size along the direction it acts in).
+  virtual std::vector<std::string> reaction_parts() const { return {"Rx", "Ry"}; }
+  /// Does this effect hold constraint k of the model (so that its reaction is this effect's)?
+  virtual bool carries(std::size_t /*constraint*/) const { return false; }
   /// Is it a support holding body b with an unknown reaction (a pin at one of b's points)?
   virtual bool holds(int /*b*/) const { return false; }
   /// Impulse (x, y) over analysis `ai` (`impulse_x`, `impulse_y`); `self` is this effect's index.

@@ -64,10 +64,11 @@ struct Analysis {
   bool conserved = false;         ///< claimed conserved: checked against the effects
   bool instant = false;           ///< an impact: positions do not change
   std::vector<int> contacts;      ///< impact: contact effects
-  /// Unknown impulses this analysis brings: pin reactions (Rx, Ry) by effect name (momentum),
+  /// Unknown impulses this analysis brings: pin reactions (Rx, Ry) and constraint reactions (J)
+  /// by effect name (momentum),
   /// contact impulses (J along n, Jt along the tangent) by effect name (impact), and one
   /// impulsive constraint reaction per constraint (impact).
-  std::map<std::string, std::pair<ex, ex>> reactions;
+  std::map<std::string, std::vector<ex>> reactions;
   std::map<std::string, std::pair<ex, ex>> contact_impulses;
   std::vector<ex> lambdas;
   std::vector<ex> unknowns;       ///< all of the above, in a stable order
@@ -174,6 +175,9 @@ public:
   /// and for a parameter given without a value (taken as positive) a fixed sample value.
   GiNaC::exmap numeric_environment() const;
   const Parameter* parameter(const std::string& n) const;
+  /// The sign of an expression of parameters that all have values (+1 or −1), 0 when it depends
+  /// on anything else or is zero: a factor that keeps its sign for the scene as given.
+  int fixed_sign(const ex& e) const;
   /// Every symbol of the model with its dimension (parameters, q, q̇, t, state symbols).
   const std::map<ex, Dimension, GiNaC::ex_is_less>& dimensions() const { return dims_; }
   /// Dimension of an expression. @throws DimensionError naming the two mismatched terms.

@@ -1,5 +1,6 @@
 /// @file simplify.hpp  Trigonometric simplification without normal() on big trig expressions.
 #pragma once
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -15,8 +16,12 @@ GiNaC::ex trig_simplify(const GiNaC::ex& e);
 /// sin(x + nπ/2) → ±sin x or ±cos x (likewise cos), sin(−x) → −sin x, cos(−x) → cos x.
 GiNaC::ex unshift_trig(const GiNaC::ex& e);
 
-/// Take squares of positive factors out of square roots: √(r²·X) → r·√X.
-GiNaC::ex root_simplify(const GiNaC::ex& e);
+/// The sign a factor keeps (+1, −1; 0 when it is not fixed), for root_simplify.
+using SignOf = std::function<int(const GiNaC::ex&)>;
+
+/// Take squares of positive factors out of square roots: √(r²·X) → r·√X; with `sign`, also the
+/// even powers of factors whose sign it fixes: √(sin(β)²·X) → sin(β)·√X where sin β > 0.
+GiNaC::ex root_simplify(const GiNaC::ex& e, const SignOf& sign = nullptr);
 
 /// Collect a quadratic form in `rates` and trig-simplify each coefficient.
 GiNaC::ex collect_simplify(const GiNaC::ex& e, const GiNaC::lst& rates);

@@ -14,8 +14,10 @@ struct Push {
   ex arm_x = 0, arm_y = 0;  ///< application point (generic)
   ex M = 0;                 ///< a couple (generic)
   bool unknown = false;     ///< an impulse (Rx, Ry), not a force to integrate
-  bool reaction = false;    ///< that impulse is an unknown support reaction (a pin's)
+  bool reaction = false;    ///< that impulse is an unknown support reaction (a pin's, a constraint's)
+  bool implied = false;     ///< the support is one the coordinates imply (a pin), not a relation between them
   ex Rx = 0, Ry = 0;
+  std::string what;         ///< how a derivation names it, when not by the defaults
 };
 
 /// Is body b in the set?
