@@ -1,6 +1,9 @@
 // Pieces several effect kinds share (private to src/effects).
 #pragma once
+#include <algorithm>
+#include <initializer_list>
 #include <memory>
+#include <vector>
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/model.hpp"
@@ -66,6 +69,14 @@ inline ex non_negative(EffectReader& r, const EffectDef& ed, const std::string& 
   return v;
 }
 
+/// The bodies among these parties (a fixed party is no body), each once.
+inline std::vector<int> bodies_of(std::initializer_list<int> parties) {
+  std::vector<int> out;
+  for (int b : parties)
+    if (b >= 0 && std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
+  return out;
+}
+
 /// Is body b (≥ 0) in the analysis' set?
 inline bool acts_on(const Analysis& a, int b) { return b >= 0 && principles::in_set(a.bodies, b); }
 
@@ -73,6 +84,7 @@ inline bool acts_on(const Analysis& a, int b) { return b >= 0 && principles::in_
 class BodyEffect : public Effect {
 public:
   int body = -1;
+  std::vector<int> bodies_acted(const Model&) const override { return {body}; }
   /// Does it act on the bodies of analysis a?
   bool on(const Analysis& a) const { return acts_on(a, body); }
 };

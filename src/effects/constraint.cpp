@@ -25,6 +25,7 @@ public:
   std::size_t index = 0;  ///< in the model's constraints
   ex fx = 0, fy = 0;      ///< F = λ f on party a (generic)
   ex ux = 0, uy = 0;      ///< f / |f|: the direction J is measured along
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
   bool conservative() const override { return true; }  // V = 0: workless on the whole system
   bool carries(std::size_t k) const override { return k == index; }
@@ -77,6 +78,29 @@ public:
                            model::text(uy) + "]), so its impulse has no components fixed by the analysis",
                        "ask for its impulse in an impact, or for the angular impulse it gives");
     return {it->second[0] * ux, it->second[0] * uy};
+  }
+
+  bool works_across(const Model&, const std::vector<int>& set) const override { return reaction_across(set); }
+
+  // Its work on the set: the force F̄ û on the party inside (−F̄ û for the second party), at its
+  // point P: U = F̄ ∫ ±û·dr_P, F̄ the average force over the distance, an unknown. As generalized
+  // forces per unit F̄: Q_i = ±û·∂r_P/∂q_i.
+  principles::Work work_across(const Model& m, const Analysis& an, const Knowledge&) const override {
+    bool ia = acts_on(an, a.body);
+    auto it = an.reactions.find(name);
+    if (it == an.reactions.end()) throw std::logic_error("constraint '" + name + "' has no unknown in this energy analysis");
+    const PointRef& p = ia ? a : b;
+    ex sign = ia ? 1 : -1;
+    std::vector<ex> Q;
+    for (auto& co : m.coords) {
+      auto [dx, dy] = m.position_derivative(p, co.q);
+      Q.push_back(model::trig_simplify(sign * (ux * dx + uy * dy)));
+    }
+    principles::Work w = principles::generalized_force_work(m, *this, Q, "constraint force", "", an.from, an.to);
+    w.U = it->second[0] * w.U;
+    w.how = "U = F (average) times the distance " + p.text + " moves along " + (ia ? "" : "-") + "[" + model::text(ux) + ", " +
+            model::text(uy) + "]";
+    return w;
   }
 
   void motion(const Model&, int, simulate::Equations&) const override {}  // the relation is among the constraints

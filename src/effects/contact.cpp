@@ -72,6 +72,8 @@ void Contact::motion(const Model& m, int self, simulate::Equations& eq) const {
   eq.contacts.push_back(c);
 }
 
+std::vector<int> Contact::bodies_acted(const Model&) const { return bodies_of({a.body, b.body}); }
+
 std::shared_ptr<Effect> Contact::read(EffectReader& r, const EffectDef& ed) {
   auto c = make<Contact>(ed);
   r.only(ed, {"normal", "e", "tangential"});

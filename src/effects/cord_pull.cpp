@@ -12,6 +12,7 @@ class CordPull : public Effect {
 public:
   PointRef a, b;
   ex P = 0;
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
   bool conservative() const override { return true; }
 

@@ -9,6 +9,7 @@ class Damper : public Effect {
 public:
   PointRef a, b;
   ex c = 0;
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
   /// d = r_B − r_A
   std::pair<ex, ex> span(const Model& m) const {

@@ -28,6 +28,17 @@ principles::Work Effect::work(const Model&, int, int, const principles::Knowledg
   return w;
 }
 
+principles::Work Effect::work_across(const Model& m, const Analysis& a, const principles::Knowledge&) const {
+  std::string inside, outside;
+  for (int b : bodies_acted(m))
+    (principles::in_set(a.bodies, b) ? inside : outside) += std::string(inside.empty() && outside.empty() ? "" : ", ") + m.bodies[b].name;
+  std::string all;
+  for (int b : bodies_acted(m)) all += (all.empty() ? "" : ", ") + m.bodies[b].name;
+  throw SceneError(a.pos, "effect '" + name + "' (" + kind + ") acts on bodies inside this energy analysis' set and outside it; its work on the set alone is not known",
+                   "list in 'bodies' every body it acts on (" + all + "), or name the interaction as a constraint effect "
+                   "('NAME: {constraint: \"…\", between: [A, B], at: [x, y]}') so that its average force is an unknown");
+}
+
 void Effect::pushes(const Model&, const Analysis&, const principles::Knowledge&, std::vector<principles::Push>&) const {}
 
 std::pair<ex, ex> Effect::impulse(const Model& m, int, int ai) const {

@@ -10,6 +10,7 @@ class Force : public Effect {
 public:
   PointRef a;
   ex Fx = 0, Fy = 0;
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body}); }
 
   ex generalized_force(const Model& m, std::size_t i) const override {
     auto [dx, dy] = m.position_derivative(a, m.coords[i].q);  // Q_i = F · ∂r_P/∂q_i

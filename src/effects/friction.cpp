@@ -10,6 +10,7 @@ public:
   PointRef a;
   ex mu = 0, normal = 0;
   std::optional<int> direction;  ///< the sign of the motion it opposes, if declared
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body}); }
 
   ex power(const Model& m) const override {
     // P = −μ N |v_P|

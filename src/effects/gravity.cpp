@@ -11,11 +11,28 @@ public:
 
   bool conservative() const override { return true; }
 
+  std::vector<int> bodies_acted(const Model& m) const override {
+    std::vector<int> all;
+    for (std::size_t b = 0; b < m.bodies.size(); ++b) all.push_back(static_cast<int>(b));
+    return all;
+  }
+
   ex potential(const Model& m) const override {
     // V = Σ m g h,  h = −(ĝ · r_G)  (height against the direction of gravity)
     ex V = 0;
     for (auto& b : m.bodies) V += -b.mass * g * (dir_x * b.x + dir_y * b.y);
     return V.expand();
+  }
+
+  principles::Work work_across(const Model& m, const Analysis& a, const Knowledge&) const override {
+    // on the set's own bodies only: U = −Δ Σ_set m g h
+    ex V = 0;
+    for (int b : a.bodies) V += -m.bodies[b].mass * g * (dir_x * m.bodies[b].x + dir_y * m.bodies[b].y);
+    principles::Work w;
+    w.effect = name;
+    w.U = model::trig_simplify(-(m.bind(V, a.to) - m.bind(V, a.from)));
+    w.how = "U = -(change of m g h) of the bodies analysed";
+    return w;
   }
 
   void pushes(const Model& m, const Analysis& a, const Knowledge&, std::vector<Push>& out) const override {

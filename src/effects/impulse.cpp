@@ -8,6 +8,7 @@ namespace {
 class Impulse : public Effect {
 public:
   model::Blow j;
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({j.at.body}); }
 
   const model::Blow* blow() const override { return &j; }
 

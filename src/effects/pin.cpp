@@ -13,6 +13,7 @@ namespace {
 class Pin : public Effect {
 public:
   PointRef a, b;
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
   bool conservative() const override { return true; }  // V = 0
 

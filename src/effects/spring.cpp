@@ -9,6 +9,7 @@ class Spring : public Effect {
 public:
   PointRef a, b;
   ex k = 0, free = 0;
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
   bool conservative() const override { return true; }
 

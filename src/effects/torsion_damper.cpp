@@ -9,6 +9,7 @@ class TorsionDamper : public Effect {
 public:
   int body = -1, body2 = -1;
   ex c = 0;
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({body, body2}); }
 
   /// φ₁ − φ₂ (the body's angle alone when there is no second body)
   ex relative_angle(const Model& m) const {

@@ -9,6 +9,7 @@ class TorsionSpring : public Effect {
 public:
   int body = -1, body2 = -1;
   ex k = 0, free = 0;
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({body, body2}); }
 
   bool conservative() const override { return true; }
 

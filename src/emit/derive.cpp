@@ -415,6 +415,23 @@ private:
                      text_at("V", S2)),
                W(", where "), N(U_tex, U_text), W(" is the work of the non-conservative effects.")};
     }
+    if (a.bodies.size() != m_.bodies.size()) {
+      std::string set;
+      for (std::size_t i = 0; i < a.bodies.size(); ++i)
+        set += std::string(i ? (i + 1 == a.bodies.size() ? " and " : ", ") : "") + m_.bodies[a.bodies[i]].name;
+      intro.insert(intro.begin(), W("Bodies: " + set + ", isolated from the rest: T is their kinetic energy, and the rest acts on them "
+                                    "through the effects that cross the boundary. "));
+      potentials.clear();  // only what acts on the set counts
+      for (auto& e : m_.effects) {
+        bool all_in = true, any = false;
+        for (int bi : e.bodies_acted(m_)) {
+          bool in = std::find(a.bodies.begin(), a.bodies.end(), bi) != a.bodies.end();
+          all_in = all_in && in;
+          any = any || in;
+        }
+        if (any && all_in && !m_.potential_energy(e).is_zero()) potentials.push_back(e.name == e.kind ? e.name : e.name + " (" + e.kind + ")");
+      }
+    }
     if (!potentials.empty()) {
       std::string list;
       for (std::size_t i = 0; i < potentials.size(); ++i)

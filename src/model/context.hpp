@@ -156,6 +156,23 @@ public:
       auto [Lx, Ly] = m_.linear_momentum(set);
       return f == "px" ? Lx : Ly;
     }
+    if (f == "force") {
+      // the average force of an interaction across an energy analysis' body set (over distance)
+      if (args.size() != 3) throw InputError("force takes an effect and two states", "write force(mesh, 1, 2)");
+      int e = m_.effect_index(args[0]);
+      if (e < 0) throw InputError("no effect named '" + args[0] + "'", "name an effect of the scene");
+      int s1 = m_.state_index(args[1]), s2 = m_.state_index(args[2]);
+      if (s1 < 0 || s2 < 0)
+        throw InputError("no state named '" + (s1 < 0 ? args[1] : args[2]) + "'", "name two states of the scene");
+      for (auto& a : m_.analyses)
+        if (a.from == s1 && a.to == s2 && !a.type->impulsive())
+          if (auto it = a.reactions.find(args[0]); it != a.reactions.end()) return sqrt(pow(it->second[0], 2));  // its size
+      throw InputError("no energy analysis from state '" + args[1] + "' to '" + args[2] + "' isolates bodies that '" + args[0] +
+                           "' joins to the rest",
+                       "add '- energy: {from: " + args[1] + ", to: " + args[2] + ", bodies: [...]}' with one of its parties listed, "
+                       "or over a duration write impulse(" + args[0] + ", " + args[1] + ", " + args[2] + ")/(t@" + args[2] + " - t@" +
+                           args[1] + ")");
+    }
     if (f == "impulse_x" || f == "impulse_y" || f == "impulse" || f == "loss") {
       if (args.size() != 3)
         throw InputError(f + " takes an effect and two states", "write " + f + "(hit, before, after)");
@@ -176,7 +193,7 @@ public:
     }
     throw InputError("unknown function '" + f + "'",
                      "use T, V, T(body), omega(body), x(P), y(P), vx(P), vy(P), speed(P), power(effect), "
-                     "H(P), H(P, body), px, py, impulse(effect, S1, S2), impulse_x, impulse_y, loss(contact, S1, S2) "
+                     "H(P), H(P, body), px, py, impulse(effect, S1, S2), impulse_x, impulse_y, loss(contact, S1, S2), force(effect, S1, S2) "
                      "or a math function");
   }
 

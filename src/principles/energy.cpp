@@ -1,5 +1,6 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
+#include "kinergy/principles/momentum.hpp"
 #include "kinergy/principles/principles.hpp"
 
 namespace kinergy::principles {
@@ -43,17 +44,42 @@ std::optional<numeric> Knowledge::value(const ex& e) const {
 
 EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& k) {
   EnergyBalance b;
-  ex T = m.kinetic_energy(), V = m.potential_energy();
-  b.at_from = {m.bind(T, a.from), m.bind(V, a.from)};
-  b.at_to = {m.bind(T, a.to), m.bind(V, a.to)};
+  const bool whole = a.bodies.size() == m.bodies.size();
+  // a body set (isolated): its own kinetic energy; each effect acting only on it counts whole,
+  // one acting only outside it not at all, one acting inside and outside by its work on the set
+  ex T = 0, V = 0;
+  if (whole) {
+    T = m.kinetic_energy();
+    V = m.potential_energy();
+  } else {
+    for (int bi : a.bodies) T += m.kinetic_energy(bi);
+    T = model::collect_simplify(T, m.rates());
+  }
   ex U = 0;
   for (auto& e : m.effects) {
-    if (m.conservative(e)) continue;
-    Work w = work(m, e, a.from, a.to, k);
+    std::size_t inside = 0, acted = 0;
+    if (!whole) {
+      for (int bi : e.bodies_acted(m)) {
+        ++acted;
+        if (in_set(a.bodies, bi)) ++inside;
+      }
+      if (inside == 0) continue;
+    }
+    Work w;
+    if (!whole && inside < acted) {
+      w = e.work_across(m, a, k);
+    } else if (m.conservative(e)) {
+      if (!whole) V += e.potential(m);
+      continue;
+    } else {
+      w = work(m, e, a.from, a.to, k);
+    }
     if (w.U.is_zero()) continue;
     U += w.U;
     b.works.push_back(w);
   }
+  b.at_from = {m.bind(T, a.from), m.bind(V, a.from)};
+  b.at_to = {m.bind(T, a.to), m.bind(V, a.to)};
   b.conservative = b.works.empty();
   // T₁ + V₁ + U₁→₂ = T₂ + V₂
   const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;

@@ -100,14 +100,17 @@ Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) {
 
 Work generalized_force_work(const Model& m, const Effect& e, const std::string& what, const std::string& how, int s1,
                             int s2) {
+  std::vector<ex> Q;
+  for (std::size_t i = 0; i < m.coords.size(); ++i) Q.push_back(e.generalized_force(m, i));
+  return generalized_force_work(m, e, Q, what, how, s1, s2);
+}
+
+Work generalized_force_work(const Model& m, const Effect& e, const std::vector<ex>& Q, const std::string& what,
+                            const std::string& how, int s1, int s2) {
   Work w;
   w.effect = e.name;
-  std::vector<ex> Q;
   bool timed = false;
-  for (std::size_t i = 0; i < m.coords.size(); ++i) {
-    Q.push_back(e.generalized_force(m, i));
-    timed = timed || Q.back().has(m.t);
-  }
+  for (auto& q : Q) timed = timed || q.has(m.t);
   if (timed)
     throw SceneError(e.pos, "effect '" + e.name + "' depends on time t, so its work needs the motion in time",
                      "use an impulse-momentum analysis, or give the " + what + " as a function of the coordinates");

@@ -13,6 +13,7 @@ public:
   bool stick = false;        ///< rough: no sliding after the impact
 
   static std::shared_ptr<model::Effect> read(model::EffectReader& r, const scene::EffectDef& ed);
+  std::vector<int> bodies_acted(const model::Model&) const override;
   std::pair<GiNaC::ex, GiNaC::ex> impulse(const model::Model& m, int self, int ai) const override;
   GiNaC::ex impulse_size(const model::Model& m, int ai, const GiNaC::ex& x, const GiNaC::ex& y) const override;
   std::pair<GiNaC::ex, GiNaC::ex> impact_impulse_on(const model::Model& m, int b, int ai) const override;

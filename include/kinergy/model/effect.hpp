@@ -110,6 +110,15 @@ public:
   virtual ex power(const Model& m) const;
   /// The work of a non-conservative effect between two states (state symbols).
   virtual principles::Work work(const Model& m, int s1, int s2, const principles::Knowledge& k) const;
+  /// The bodies it acts on (a fixed party is not a body; gravity: every body).
+  virtual std::vector<int> bodies_acted(const Model&) const { return {}; }
+  /// Its work on the bodies of energy analysis `a` when it acts on some of them and on bodies
+  /// outside too (a weight: the set's own; a constraint: its unknown average force times the
+  /// distance its point moves along it). @throws SceneError when that work is not known.
+  virtual principles::Work work_across(const Model& m, const Analysis& a, const principles::Knowledge& k) const;
+  /// Does an energy analysis of a body set it joins to the rest need its average force as an
+  /// unknown (a constraint between the set and a moving body outside, or the ground)?
+  virtual bool works_across(const Model&, const std::vector<int>& /*bodies*/) const { return false; }
 
   // --- impulse and momentum ---
   /// The forces (or unknown reactions, given impulses) this effect exerts on the bodies of a

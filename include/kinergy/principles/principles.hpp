@@ -76,6 +76,9 @@ std::optional<Path> one_dof_path(const model::Model& m);
 /// `what` names it in messages ("couple", "force"); `how` is the exact case's formula.
 Work generalized_force_work(const model::Model& m, const model::Effect& e, const std::string& what,
                             const std::string& how, int s1, int s2);
+/// The same for given generalized forces Q_i (one per coordinate).
+Work generalized_force_work(const model::Model& m, const model::Effect& e, const std::vector<ex>& Q, const std::string& what,
+                            const std::string& how, int s1, int s2);
 
 /// The work of kinetic friction c along the one-coordinate path, U = −c σ (ℓ(s₂) − ℓ(s₁)), with
 /// dℓ/ds = `rate(path)` (a distance slid, or an angle turned) and σ the sign of the motion
