@@ -665,6 +665,42 @@ find:
   }
 }
 
+TEST_CASE("in an impact, a constraint effect's impulse is its impulsive reaction", "[momentum][constraints][impact]") {
+  // A disk (m, r) rolling without slipping is struck by a horizontal blow J at height h above its
+  // centre, from rest. By hand, with F the friction impulse at the contact (on the disk, along x):
+  //   m v = J + F,  (m r^2/2) omega = -h J + r F,  v = -r omega
+  // so v = 2 J (r + h)/(3 m r) and F = J (2 h - r)/(3 r): none at h = r/2.
+  const std::string disk = R"Y(title: disk struck above its centre
+parameters:
+  m: kg
+  r: m
+  h: m
+  J: N*s
+coordinates:
+  x: m
+  phi: rad
+bodies:
+  disk: {mass: m, inertia: {disk: r}, position: [x, r], angle: phi, points: {P: [0, h]}}
+effects:
+  rolling: {constraint: "x + r*phi = 0", between: [disk, ground], at: [x, 0]}
+  blow: {impulse: disk.P, J: [J, 0]}
+states:
+  before: {x: 0, phi: 0, x_dot: 0}
+  after: {}
+analyses:
+  - impact: {from: before, to: after}
+find:
+  v: x_dot@after
+  F: "impulse_x(rolling, before, after)"
+  Fy: "impulse_y(rolling, before, after)"
+)Y";
+  auto s = solve_text(disk);
+  ex m = P(s, "m"), r = P(s, "r"), h = P(s, "h"), J = P(s, "J");
+  CHECK(exactly_zero(closed(s, "v") - 2 * J * (r + h) / (3 * m * r)));
+  CHECK(exactly_zero(closed(s, "F") - J * (2 * h - r) / (3 * r)));
+  CHECK(exactly_zero(closed(s, "Fy")));
+}
+
 TEST_CASE("a pinned disk that can only turn: its linear momentum gives the pin's reaction", "[momentum][supports]") {
   // derivations/momentum/disk_axle_reaction.yaml, symbolic: a couple M and a cord pulling -P at
   // the lowest point. By hand: 0 = Rx t2 - P t2, 0 = Ry t2 - m g t2.
