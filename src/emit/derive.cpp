@@ -791,6 +791,19 @@ private:
         continue;
       }
       order.push_back(u);
+      if (method == "product") {
+        // the solver took F·t as one unknown (F appears only multiplied by t)
+        ex t = u;
+        for (auto& [sym, d] : m_.dimensions())
+          if (model::text(sym) == rest) t = sym;
+        para({W("The unknown "), M(u), W(" appears in the equations only multiplied by "), M(t),
+              W(": with that product as one unknown they are linear, and "), M(u), W(" is the product divided by "), M(t),
+              W(", with the unknowns found after it put in:")});
+        rows({tags.row({Math::of(u), Math::of(final_form(b.sol.at(u)))})});
+        displayed[u] = b.sol.at(u);
+        any_before = true;
+        continue;
+      }
       Spans sp{W("From ")};
       std::string tag = qi >= 0 ? tag_of_[static_cast<std::size_t>(qi)] : "";
       sp.push_back(W(!tag.empty() ? "(" + tag + ")" : "the " + rest));

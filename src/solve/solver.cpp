@@ -75,15 +75,21 @@ private:
   std::vector<State> work_;
   std::vector<Branch> done_;
 
+  std::vector<ex> products_;  ///< unknowns standing for a product of two (w = F t)
+
   std::vector<ex> unknowns_in(const ex& e) const {
     std::vector<ex> u;
     for (auto& x : p_.unknowns)
+      if (e.has(x)) u.push_back(x);
+    for (auto& x : products_)
       if (e.has(x)) u.push_back(x);
     return u;
   }
 
   bool free_of_unknowns(const ex& e) const {
     for (auto& x : p_.unknowns)
+      if (e.has(x)) return false;
+    for (auto& x : products_)
       if (e.has(x)) return false;
     return true;
   }
@@ -136,10 +142,12 @@ private:
     for (;;) {
       prune(st);
       if (st.eqs.empty()) {
+        for (auto& w : products_) st.b.sol.erase(w);  // stand-ins, not results
         done_.push_back(st.b);
         return;
       }
       if (linear_step(st)) continue;
+      if (product_step(st)) continue;
       single_unknown_step(st);
       return;  // the branches it made are on the work list
     }
@@ -173,6 +181,47 @@ private:
     st.eqs.erase(st.eqs.begin() + best);  // used up: it holds by construction
     assign(st, best_u, model::tidy(-best_b / best_a), how);
     return true;
+  }
+
+  // A product of unknowns that stands together: when an unknown F appears, in every equation
+  // that has it, only where F t does (t another unknown) — an average force and a duration, in
+  // F (t₂ − t₁) — then w = F t is an unknown of its own and F = w/t: the system becomes linear
+  // in w (and t) where it was bilinear in F and t.
+  bool product_step(State& st) {
+    std::vector<ex> all;
+    for (auto& q : st.eqs)
+      for (auto& u : unknowns_in(q.residual()))
+        if (std::find_if(all.begin(), all.end(), [&](const ex& x) { return x.is_equal(u); }) == all.end()) all.push_back(u);
+    for (auto& F : all)
+      for (auto& t : all) {
+        if (F.is_equal(t)) continue;
+        GiNaC::realsymbol w(model::text(F) + "*" + model::text(t));
+        bool ok = true, progress = false;
+        for (auto& q : st.eqs) {
+          ex r = q.residual();
+          if (!r.has(F)) continue;
+          ex r2;
+          try {
+            r2 = normal(r.subs(F == w / t));
+          } catch (const std::exception&) {
+            ok = false;
+            break;
+          }
+          // F gone for good, and t not divided by: r is a polynomial in F t (and t)
+          if (r2.has(F) || numer_denom(r2).op(1).has(t)) {
+            ok = false;
+            break;
+          }
+          ex a = r2.diff(w);
+          bool known = false;
+          if (!a.has(w) && free_of_unknowns(a) && !a.is_zero() && !numerically_zero(a, p_.env, known)) progress = true;
+        }
+        if (!ok || !progress) continue;
+        products_.push_back(w);
+        assign(st, F, w / t, model::text(t) + " (product)");
+        return true;
+      }
+    return false;
   }
 
   // One branch per root. The equation solved holds there by construction and leaves the branch

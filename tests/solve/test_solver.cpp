@@ -296,3 +296,28 @@ TEST_CASE("solver: inconsistent and underdetermined systems", "[solve][errors]")
     CHECK_THROWS_AS(solve(p), SolveError);
   }
 }
+
+TEST_CASE("solver: an unknown that appears only multiplied by another is solved through the product", "[solve][product]") {
+  // Two gears from rest, an unknown tooth force F over an unknown time t (I, w, M, r, R given):
+  //   I1 w1 = M t - r F t,  I2 w2 = R F t   →  F t = I2 w2/R,  t = (I1 w1 + r I2 w2/R)/M
+  realsymbol F("F"), t("t"), I1("I1"), I2("I2"), w1("w1"), w2("w2"), M("M"), r("r"), R("R");
+  Problem p;
+  p.equations = {eq(I1 * w1, M * t - r * F * t, "gear 1"), eq(I2 * w2, R * F * t, "gear 2")};
+  p.unknowns = {t, F};
+  p.env = {{I1, 2}, {I2, 3}, {w1, 5}, {w2, 7}, {M, 11}, {r, 13}, {R, 17}};
+  auto bs = solve(p);
+  REQUIRE(bs.size() == 1);
+  ex tt = (I1 * w1 + r * I2 * w2 / R) / M;
+  CHECK(kt::symbolically_zero(bs[0].sol.at(t) - tt));
+  CHECK(kt::symbolically_zero(bs[0].sol.at(F) - I2 * w2 / (R * tt)));
+  CHECK(bs[0].sol.size() == 2);  // the product's stand-in is not a result
+}
+
+TEST_CASE("solver: an unknown that also appears alone is not a product", "[solve][product]") {
+  // F t + F^2 = 3, F t^2 = 2: F appears alone too (F^2), so F t is no stand-in: refused, as before
+  realsymbol F("F"), t("t");
+  Problem p;
+  p.equations = {eq(F * t + F * F, 3), eq(F * t * t, 2)};
+  p.unknowns = {F, t};
+  REQUIRE_THROWS_WITH(solve(p), Catch::Contains("nonlinear in several unknowns"));
+}
