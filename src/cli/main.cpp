@@ -110,6 +110,9 @@ int main(int argc, char** argv) {
   auto* verify = app.add_subcommand("verify", "check every 'expect' claim of the scenes");
   verify->add_option("SCENE", scenes, "scene files (YAML)")->required();
   verify->add_flag("--json", as_json, "print JSON for tools");
+  double rtol = 0;
+  verify->add_option("--rtol", rtol, "accept a value within this relative difference of the derived one (e.g. 0.005: books round on the way)")
+      ->check(finite_in(0, 1, true, "a relative tolerance such as 0.005"));
 
   double until = 0, tol = 1e-10, step = 0;
   std::string method = "dopri5", from, csv_out, plot_out;
@@ -286,7 +289,7 @@ int main(int argc, char** argv) {
   for (auto& f : scenes) {
     int r = guarded(f, [&] {
       kinergy::Solution s = kinergy::solve_file(f);
-      auto checks = kinergy::verify::verify(s);
+      auto checks = kinergy::verify::verify(s, rtol);
       bool ok = true;
       for (auto& c : checks) ok = ok && c.ok();
       if (as_json) std::cout << kinergy::emit::json(s, {}, &checks);

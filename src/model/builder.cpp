@@ -731,6 +731,20 @@ private:
         x.value = q;
         x.value_pos = xd.value->pos;
       }
+      if (xd.rtol) {
+        if (!xd.value)
+          throw SceneError(xd.rtol->pos, "'rtol' loosens a claimed value, and '" + xd.name + "' claims none",
+                           "add 'value: NUMBER UNIT', or remove 'rtol'");
+        std::optional<units::Quantity> q;
+        try {
+          q = units::parse_quantity(xd.rtol->s);
+        } catch (const InputError&) {
+        }
+        if (!q || !q->has_number || !q->unit.text.empty() || q->number.is_negative() || q->number > 1)
+          throw SceneError(xd.rtol->pos, "'rtol' must be a relative difference from 0 to 1, not '" + xd.rtol->s + "'",
+                           "write e.g. 'rtol: 0.005' (half a percent)");
+        x.rtol = q->number.to_double();
+      }
       m_.expects.push_back(x);
     }
   }

@@ -472,9 +472,10 @@ struct Loader {
         e.name = k.scalar;
         e.pos = k.pos;
         need_map(v, k.scalar, k.scalar + ": {form: sqrt(3*g/l), value: 3.50 rad/s}");
-        only_keys(v, "expect '" + k.scalar + "'", {"form", "value"});
+        only_keys(v, "expect '" + k.scalar + "'", {"form", "value", "rtol"});
         if (auto* f = v.get("form")) e.form = text(*f, "form", "form: sqrt(3*g/l)");
         if (auto* f = v.get("value")) e.value = text(*f, "value", "value: 3.50 rad/s");
+        if (auto* f = v.get("rtol")) e.rtol = text(*f, "rtol", "rtol: 0.005");
         if (!e.form && !e.value)
           throw SceneError(k.pos, "expect '" + k.scalar + "' claims nothing",
                            "add 'form: …' or 'value: NUMBER UNIT'");

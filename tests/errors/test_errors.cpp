@@ -844,6 +844,10 @@ const ExactCase kExact[] = {
     {"constraint_no_relative_motion.yaml", "26:56",
      "constraint 'mesh': gearA and OA never move relative to each other, so no force between them holds "
      "'rA*phiA + rB*phiB = 0' \u2014 name in 'between' (and 'at') the two parts whose contact keeps the relation"},
+    {"rtol_out_of_range.yaml", "25:47",
+     "'rtol' must be a relative difference from 0 to 1, not '2' \u2014 write e.g. 'rtol: 0.005' (half a percent)"},
+    {"rtol_without_value.yaml", "25:32",
+     "'rtol' loosens a claimed value, and 'y3' claims none \u2014 add 'value: NUMBER UNIT', or remove 'rtol'"},
 };
 }  // namespace
 

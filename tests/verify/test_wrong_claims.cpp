@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../support/helpers.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/scene/scene.hpp"
 #include "kinergy/verify/verify.hpp"
@@ -236,5 +237,89 @@ TEST_CASE("kinergy verify exits 1 and says FAILS when a claim is wrong", "[verif
         std::string::npos);
   CHECK(out.find("omega2 (value): FAILS: derived 3.50 rad/s, claimed 3.49 rad/s, at the scene's values") !=
         std::string::npos);
+  fs::remove_all(dir);
+}
+
+namespace {
+// A block slides from rest down a smooth drop of h = 1 m (energy: v2 = sqrt(2 g h) = 4.429 m/s);
+// the result asks the height back from v2, v2^2/(2 g) = 1 m exactly. A book that rounds v2 to
+// 2 figures (4.4 m/s) gets 4.4^2/(2*9.81) = 0.9867 m: "0.99 m", off by 1.0 % from 1.0 m.
+const char* kDrop = R"(title: a drop and back
+parameters:
+  m: 2 kg
+  h: 1 m
+  g: 9.81 m/s^2
+coordinates:
+  y: m
+bodies:
+  block: {mass: m, inertia: particle, position: [0, y]}
+effects:
+  gravity: {g: g}
+states:
+  1: {y: h, y_dot: 0}
+  2: {y: 0}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  v2: {value: y_dot@2, root: negative, unit: m/s}
+  back: {value: y_dot@2^2/(2*g), unit: m}
+expect:
+)";
+
+std::vector<Check> checks_rtol(const std::string& scene, const std::string& claim, double rtol) {
+  auto def = kinergy::scene::load_string(scene + "  " + claim + "\n", "<claim>");
+  return kinergy::verify::verify(kinergy::solve_scene(def), rtol);
+}
+}  // namespace
+
+TEST_CASE("a value off by a book's rounding: by how much, and whether rounding reproduces it", "[verify][rounding]") {
+  SECTION("the relative difference is said, and that rounding v2 to 2 figures gives the claim") {
+    Check c = only(checks(kDrop, "back: {value: 0.99 m}"));
+    INFO(c.detail);
+    CHECK(fails(c));
+    CHECK(c.detail.find("derived 1.0 m, claimed 0.99 m") != std::string::npos);
+    CHECK(c.detail.find("relative difference 1%") != std::string::npos);
+    CHECK(c.detail.find("rounding each intermediate value to 2 significant figures, as a book does, gives 0.99 m: the method "
+                        "is right, the claim carries the rounding (accept it with --rtol 0.011)") != std::string::npos);
+  }
+  SECTION("a claim that rounding does not explain says so") {
+    Check c = only(checks(kDrop, "back: {value: 0.95 m}"));
+    INFO(c.detail);
+    CHECK(fails(c));
+    CHECK(c.detail.find("relative difference 5%") != std::string::npos);
+    CHECK(c.detail.find("gives 0.99 m, not the claim either") != std::string::npos);
+  }
+  SECTION("--rtol accepts it within the tolerance, and not beyond") {
+    Check c = only(checks_rtol(kDrop, "back: {value: 0.99 m}", 0.011));
+    INFO(c.detail);
+    CHECK(c.ok());
+    CHECK(c.detail.rfind("within rtol 0.011: derived 1 m, claimed 0.99 m (relative difference 1%)", 0) == 0);
+    Check d = only(checks_rtol(kDrop, "back: {value: 0.99 m}", 0.009));
+    CHECK(!d.ok());
+  }
+}
+
+TEST_CASE("kinergy verify --rtol: exit 0 within it, and a tolerance outside [0, 1] refused", "[verify][rounding][cli]") {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / ("kinergy-rtol-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  fs::path scene = dir / "drop.yaml";
+  {
+    std::ofstream out(scene);
+    out << kDrop << "  back: {value: 0.99 m}\n";
+  }
+  int st = 0;
+  std::string out = kt::run_cli("verify " + scene.string(), st);
+  CHECK(st == 1);
+  out = kt::run_cli("verify --rtol 0.011 " + scene.string(), st);
+  INFO(out);
+  CHECK(st == 0);
+  CHECK(out.find("back (value): within rtol 0.011: derived 1 m, claimed 0.99 m (relative difference 1%)") != std::string::npos);
+  for (const char* bad : {"2", "-0.1", "nan"}) {
+    out = kt::run_cli(std::string("verify --rtol ") + bad + " " + scene.string(), st);
+    INFO(out);
+    CHECK(st == 2);
+    CHECK(out.find("give a relative tolerance such as 0.005") != std::string::npos);
+  }
   fs::remove_all(dir);
 }

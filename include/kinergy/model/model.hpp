@@ -96,6 +96,7 @@ struct Expect {
   SourcePos form_pos;
   std::optional<units::Quantity> value;
   SourcePos value_pos;
+  double rtol = 0;  ///< the value may differ by this relative amount (a book's rounding)
 };
 
 /// Dimension mismatch: the two terms and their dimensions.

@@ -95,6 +95,7 @@ struct ExpectDef {
   SourcePos pos;
   std::optional<Text> form;
   std::optional<Text> value;
+  std::optional<Text> rtol;
 };
 
 struct SceneDef {

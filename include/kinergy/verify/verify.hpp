@@ -16,8 +16,11 @@ struct Check {
   bool ok() const { return status != Status::Fails; }
 };
 
-/// Every `expect` claim of the scene, checked.
-std::vector<Check> verify(const Solution& s);
+/// Every `expect` claim of the scene, checked. A value that is not the derived one to its figures
+/// fails with its relative difference, and — where replaying the solution with each intermediate
+/// value rounded to the claim's figures reproduces it — says so; with `rtol` > 0 a value within
+/// that relative difference of the derived one passes (books round on the way).
+std::vector<Check> verify(const Solution& s, double rtol = 0);
 
 /// v rounded to n significant figures, written with its trailing zeros: "3.50", "20.00",
 /// "0.0120", "1.50e-12" (as a claim to n figures is written).
