@@ -329,6 +329,18 @@ private:
       forward_in_time(a);
       a.type->check(m, a, given, sol_.branch, env);
     }
+    // what the effects declare (a point on its track) holds at every solved state
+    exmap values = env;
+    for (const exmap* part : {static_cast<const exmap*>(&given), static_cast<const exmap*>(&sol_.branch.sol)})
+      for (auto& [k, v] : *part) {
+        try {
+          ex x = v.subs(given).subs(sol_.branch.sol).subs(env).evalf();
+          if (is_a<numeric>(x)) values[k] = x;
+        } catch (const std::exception&) {
+        }
+      }
+    for (auto& e : m.effects)
+      for (std::size_t s = 0; s < m.states.size(); ++s) e.check_state(m, static_cast<int>(s), values);
   }
 
   /// A motion runs forward in time: a solved duration t₂ − t₁ < 0 would put the second state

@@ -16,6 +16,7 @@
   X(power)                      \
   X(pin)                        \
   X(constraint)                 \
+  X(track)                      \
   X(contact)                    \
   X(impulse)                    \
   X(cord_pull)

@@ -250,8 +250,8 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
       throw SceneError(a.pos, "the bodies of this momentum analysis (" + set_name(m, a) + ") cannot move freely along " + name +
                                   ": a support the scene does not declare (a track, a surface, an axle) pushes on them along " + name +
                                   " with a force the analysis does not know",
-                       "take the momentum along a direction in which they move freely (along their track), or declare the support as a "
-                       "pin so that its reaction is an unknown");
+                       "take the momentum along a direction in which they move freely (along their track), or declare the support "
+                       "(a pin, a track) so that its reaction is an unknown");
     check_constraints(m, a);
     c.before = m.bind(L, a.from);
     c.after = m.bind(L, a.to);
@@ -318,7 +318,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
                                 a.about.text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
                                 a.about.text + " the analysis does not know",
                      "take moments about a point they turn about freely (a pivot, a contact point on the ground, their mass centre), "
-                     "or declare the support as a pin so that its reaction is an unknown");
+                     "or declare the support (a pin, a track) so that its reaction is an unknown");
   ex I = 0;
   for (auto& e : m.effects) {
     for (auto& p : pushes(m, e, a, k)) {

@@ -826,13 +826,13 @@ const ExactCase kExact[] = {
     {"momentum_across_track.yaml", "23:5",
      "the bodies of this momentum analysis (all bodies) cannot move freely along x: a support the scene does not declare "
      "(a track, a surface, an axle) pushes on them along x with a force the analysis does not know \u2014 take the momentum "
-     "along a direction in which they move freely (along their track), or declare the support as a pin so that its "
-     "reaction is an unknown"},
+     "along a direction in which they move freely (along their track), or declare the support (a pin, a track) so "
+     "that its reaction is an unknown"},
     {"moment_of_undeclared_support.yaml", "24:5",
      "the bodies of this angular momentum analysis (all bodies) cannot turn freely about O: a support the scene does not "
      "declare (a track, a surface, an axle) has a moment about O the analysis does not know \u2014 take moments about a "
-     "point they turn about freely (a pivot, a contact point on the ground, their mass centre), or declare the support as "
-     "a pin so that its reaction is an unknown"},
+     "point they turn about freely (a pivot, a contact point on the ground, their mass centre), or declare the support "
+     "(a pin, a track) so that its reaction is an unknown"},
     // a rolling relation held at the mass centre: no force there does the relation's virtual work
     {"constraint_wrong_place.yaml", "19:51",
      "constraint 'rolling': no force between disk at [x*cos(beta) + r*sin(beta), -x*sin(beta) + r*cos(beta)] and ground "
@@ -848,6 +848,14 @@ const ExactCase kExact[] = {
      "'rtol' must be a relative difference from 0 to 1, not '2' \u2014 write e.g. 'rtol: 0.005' (half a percent)"},
     {"rtol_without_value.yaml", "25:32",
      "'rtol' loosens a claimed value, and 'y3' claims none \u2014 add 'value: NUMBER UNIT', or remove 'rtol'"},
+    // a rod whose angle puts its end off its slot used to give a silently wrong answer
+    {"track_off_slot.yaml", "17:18",
+     "track 'slotA': rod.A is 1.15306 m off the line through [0, 0] along [1, 0] at theta = 1.851 \u2014 fix the body's "
+     "position/angle or the point so that rod.A stays on its track for every value of the coordinates"},
+    // with constraints the coordinates are not free: checked at the solved states
+    {"track_off_at_state.yaml", "16:3",
+     "track 'ice_line': disk is 0.2 m off the line through [0, 2*r] along [1, 0] at state '1' \u2014 fix the body's "
+     "position/angle, the point or the track so that disk stays on it"},
 };
 }  // namespace
 

@@ -154,6 +154,12 @@ public:
   /// Add this effect's terms to the equations of motion (`self`: its index); by default a
   /// conservative effect's Q_i = −∂V/∂q_i. @throws SceneError when it cannot be simulated.
   virtual void motion(const Model& m, int self, simulate::Equations& eq) const;
+  /// Check what it declares for every value of the coordinates, once every effect is read (the
+  /// constraints complete). @throws SceneError when it does not hold.
+  virtual void check_model(const Model&) const {}
+  /// Check what it declares at a solved state (`values`: state symbols and parameters → numbers).
+  /// @throws SceneError when the state breaks it (a point off its track).
+  virtual void check_state(const Model&, int /*state*/, const GiNaC::exmap& /*values*/) const {}
   /// Why a simulation cannot start at these values of q, q̇ (parameters included), or "".
   virtual std::string start_problem(const Model&, const GiNaC::exmap& /*at*/) const { return ""; }
 };

@@ -1,0 +1,179 @@
+// A track: a point that the coordinates keep on a fixed line or circle (a collar on a guide, a
+// pin in a slot, a block on a smooth surface, a ball in a bowl), declared so that it is checked
+// and its normal reaction can be an unknown. Like a pin, a support the coordinates imply: it does
+// no work, and in a momentum analysis across it its reaction along the track's normal n̂ is an
+// unknown N (the impulse N n̂).
+//
+// Checked: the point's distance to the track, d = (r_P − r_0)·n̂ for a line through r_0, or
+// |r_P − c| − R for a circle, vanishes for every value of the coordinates (random samples) when
+// the scene has no constraints, and at every state once the states are solved.
+#include <random>
+
+#include "common.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+
+namespace kinergy::effects {
+
+namespace {
+
+class Track : public Effect {
+public:
+  PointRef p;
+  bool circle = false;
+  ex x0 = 0, y0 = 0;  ///< a point of the line, or the circle's centre
+  ex tx = 0, ty = 0;  ///< the line's direction (unit)
+  ex R = 0;           ///< the circle's radius
+  std::string shape;  ///< "the line through [..] along [..]", "the circle of centre [..] and radius R"
+  SourcePos arg_pos;  ///< where its point is named
+
+  bool conservative() const override { return true; }  // V = 0: a smooth track does no work
+  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({p.body}); }
+
+  bool reaction_across(const std::vector<int>& set) const override { return p.body >= 0 && principles::in_set(set, p.body); }
+  std::vector<std::string> reaction_parts() const override { return {"N"}; }
+
+  /// The unit normal n̂ at the point (generic): the line's normal k × t̂, or the circle's radius.
+  std::pair<ex, ex> normal(const Model& m) const {
+    if (!circle) return {-ty, tx};
+    auto [x, y] = m.position(p);
+    return {(x - x0) / R, (y - y0) / R};
+  }
+
+  /// Signed distance of the point from the track (generic).
+  ex distance(const Model& m) const {
+    auto [x, y] = m.position(p);
+    if (!circle) return model::trig_simplify((x - x0) * -ty + (y - y0) * tx);
+    return sqrt(pow(x - x0, 2) + pow(y - y0, 2)) - R;
+  }
+
+  void pushes(const Model& m, const Analysis& an, const Knowledge&, std::vector<Push>& out) const override {
+    if (!acts_on(an, p.body)) return;
+    auto it = an.reactions.find(name);
+    if (it == an.reactions.end()) return;
+    auto [nx, ny] = normal(m);
+    Push q;
+    q.unknown = true;
+    q.reaction = true;
+    q.implied = true;
+    q.Rx = it->second[0] * nx;
+    q.Ry = it->second[0] * ny;
+    auto [x, y] = m.position(p);
+    q.arm_x = x;
+    q.arm_y = y;
+    q.what = "normal reaction impulse (unknown) of the track on " + p.text;
+    out.push_back(q);
+  }
+
+  std::pair<ex, ex> impulse(const Model& m, int self, int ai) const override {
+    const Analysis& an = m.analyses[ai];
+    auto it = an.reactions.find(name);
+    if (an.instant || it == an.reactions.end()) return Effect::impulse(m, self, ai);
+    auto [nx, ny] = normal(m);
+    if (!principles::motion_free(m, model::trig_simplify(nx)) || !principles::motion_free(m, model::trig_simplify(ny)))
+      throw InputError("the normal of track '" + name + "' turns with the motion, so its impulse has no fixed components",
+                       "ask for the impulse of a straight track, or for its moment");
+    return {it->second[0] * nx, it->second[0] * ny};
+  }
+
+  void motion(const Model&, int, simulate::Equations&) const override {}  // the coordinates keep the point on it
+
+  std::string off_track(const Model& m, const GiNaC::exmap& at) const {
+    ex d = distance(m);
+    ex v;
+    try {
+      v = d.subs(at).evalf();
+    } catch (const std::exception&) {
+      return "";  // undefined there: nothing to tell
+    }
+    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return "";
+    // off, against the size of the positions themselves (a scene may be a millimetre across)
+    auto [x, y] = m.position(p);
+    ex scale = sqrt(pow(x, 2) + pow(y, 2) + pow(x0, 2) + pow(y0, 2) + pow(R, 2));
+    auto s = numerics::evaluate(scale, at, 30);
+    GiNaC::numeric dv = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v));
+    if (!s || dv <= *s * GiNaC::numeric(1, 1000000000)) return "";
+    return numerics::format(dv, 6) + " m";
+  }
+
+  // for every value of the coordinates, when no constraint relates them (else: at the states)
+  void check_model(const Model& m) const override {
+    if (!m.constraints.empty()) return;
+    GiNaC::exmap vals = m.numeric_environment();
+    std::mt19937 rng(4242);
+    std::uniform_real_distribution<double> u(-3, 3);
+    for (int trial = 0; trial < 5; ++trial) {
+      GiNaC::exmap at = vals;
+      for (auto& c : m.coords) at[c.q] = GiNaC::numeric(u(rng));
+      at[m.t] = GiNaC::numeric(u(rng) + 3);
+      std::string off = off_track(m, at);
+      if (off.empty()) continue;
+      std::string where;
+      for (auto& c : m.coords)
+        where += (where.empty() ? "" : ", ") + c.name + " = " + numerics::format(GiNaC::ex_to<GiNaC::numeric>(at[c.q]), 4);
+      throw SceneError(arg_pos, "track '" + name + "': " + p.text + " is " + off + " off " + shape + " at " + where,
+                       "fix the body's position/angle or the point so that " + p.text + " stays on its track for every value "
+                       "of the coordinates");
+    }
+  }
+
+  void check_state(const Model& m, int state, const GiNaC::exmap& values) const override {
+    GiNaC::exmap at = values;
+    for (auto& c : m.coords) {
+      auto it = values.find(m.states[state].sym.at(c.name).first);
+      if (it == values.end()) return;  // not fixed at this state
+      at[c.q] = it->second;
+    }
+    at[m.t] = values.count(m.states[state].t) ? values.at(m.states[state].t) : ex(0);
+    std::string off = off_track(m, at);
+    if (!off.empty())
+      throw SceneError(pos, "track '" + name + "': " + p.text + " is " + off + " off " + shape + " at state '" +
+                                m.states[state].name + "'",
+                       "fix the body's position/angle, the point or the track so that " + p.text + " stays on it");
+  }
+};
+
+}  // namespace
+
+std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
+  auto e = make<Track>(ed);
+  r.only(ed, {"line", "circle"});
+  const Model& m = r.model();
+  e->p = r.point_ref(ed.arg, ed.kind);
+  e->arg_pos = ed.arg.pos;
+  if (e->p.body < 0)
+    throw SceneError(ed.arg.pos, "a track holds a point of a body, but '" + ed.arg.scalar + "' is a fixed point",
+                     "name body.point or a body (its mass centre)");
+  const scene::Node* line = ed.options.get("line");
+  const scene::Node* circle = ed.options.get("circle");
+  if ((line != nullptr) == (circle != nullptr))
+    throw SceneError(ed.pos, "track '" + ed.name + "' needs one shape: 'line' or 'circle'",
+                     "write 'line: {through: [0, 0], along: [1, 0]}' or 'circle: {centre: [0, 0], radius: R}'");
+  auto text_of_vec = [](const scene::Node& n) { return "[" + n.items[0].scalar + ", " + n.items[1].scalar + "]"; };
+  const units::Dimension L = units::Dimension::length();
+  if (line) {
+    if (!line->is_map() || !line->get("through") || !line->get("along"))
+      throw SceneError(line->pos, "'line' is given by a point and a direction", "write 'line: {through: [0, 0], along: [1, 0]}'");
+    std::tie(e->x0, e->y0) = r.vec(*line->get("through"), "through", L, false, "a point of the line is a pair of lengths");
+    auto [dx, dy] = r.vec(*line->get("along"), "along", units::Dimension{}, false, "a direction is a pair of pure numbers");
+    ex len2 = model::trig_simplify(pow(dx, 2) + pow(dy, 2));
+    auto lv = r.value_of(len2, line->get("along")->pos, "the direction of the line");
+    if (len2.is_zero() || (lv && lv->is_zero()))
+      throw SceneError(line->get("along")->pos, "the direction of the line of track '" + ed.name + "' is zero", "write e.g. [1, 0]");
+    ex len = model::root_simplify(sqrt(len2));
+    e->tx = dx / len;
+    e->ty = dy / len;
+    e->shape = "the line through " + text_of_vec(*line->get("through")) + " along " + text_of_vec(*line->get("along"));
+  } else {
+    if (!circle->is_map() || !circle->get("centre") || !circle->get("radius"))
+      throw SceneError(circle->pos, "'circle' is given by its centre and radius", "write 'circle: {centre: [0, 0], radius: R}'");
+    e->circle = true;
+    std::tie(e->x0, e->y0) = r.vec(*circle->get("centre"), "centre", L, false, "a centre is a pair of lengths");
+    const scene::Node& rn = *circle->get("radius");
+    e->R = r.quantity(r.text_of(rn, "radius", "R"), false, L, "radius", "a radius is a length");
+    r.positive(e->R, rn.pos, "the radius of track '" + ed.name + "'");
+    e->shape = "the circle of centre " + text_of_vec(*circle->get("centre")) + " and radius " + rn.scalar;
+  }
+  return e;
+}
+
+}  // namespace kinergy::effects

@@ -1,0 +1,107 @@
+// Tracks (issue 13, part 6): a point declared on a line or a circle is checked for every value of
+// the coordinates (no constraints) or at every solved state (constraints), and its normal
+// reaction is an unknown of momentum analyses. Expected values by hand in the comments.
+#include <catch2/catch.hpp>
+
+#include "../support/helpers.hpp"
+#include "kinergy/common/error.hpp"
+#include "kinergy/problem.hpp"
+
+using GiNaC::ex;
+
+namespace {
+
+kinergy::Solution solve_text(const std::string& text) {
+  INFO("scene:\n" << text);
+  return kinergy::solve_scene(kinergy::scene::load_string(text, "test.yaml"));
+}
+
+std::string edit(std::string text, const std::string& from, const std::string& to) {
+  auto i = text.find(from);
+  REQUIRE(i != std::string::npos);
+  return text.replace(i, from.size(), to);
+}
+
+std::string derivation(const std::string& rel) { return kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/" + rel); }
+
+}  // namespace
+
+TEST_CASE("tracks that hold: the sliding rod's slots, the bowl's circle", "[effects][track]") {
+  // A = (l cos theta, 0) and B = (0, -l sin theta) for every theta: on y = 0 and x = 0
+  auto rod = edit(derivation("energy/sliding_rod.yaml"), "effects:\n",
+                  "effects:\n  slotA: {track: rod.A, line: {through: [0, 0], along: [1, 0]}}\n"
+                  "  slotB: {track: rod.B, line: {through: [0, 0], along: [0, 1]}}\n");
+  auto s = solve_text(rod);
+  CHECK(kinergy::numerics::format(*kt::result(s, "omega2").si, 4) == "3.502");
+  // the sphere's centre is on the circle of radius R - r about O; checked at the states (a constraint)
+  auto bowl = edit(derivation("energy/sphere_in_bowl.yaml"), "effects:\n",
+                   "effects:\n  bowl: {track: ball, circle: {centre: [0, 0], radius: R - r}}\n");
+  CHECK_NOTHROW(solve_text(bowl));
+  REQUIRE_THROWS_WITH(solve_text(edit(bowl, "radius: R - r}", "radius: R}")),
+                      Catch::Contains("track 'bowl': ball is 0.1 m off the circle of centre [0, 0] and radius R at state '1'"));
+}
+
+TEST_CASE("a track's normal reaction in momentum: a block on a smooth incline", "[effects][track][momentum]") {
+  // along x: m v cos(beta) = N sin(beta) t2; along y: -m v sin(beta) = N cos(beta) t2 - m g t2
+  // so v = g sin(beta) t2 and N = m g cos(beta) (symbolic)
+  auto text = derivation("momentum/block_incline_normal_force.yaml");
+  for (const char* p : {"  m: 2 kg\n", "  g: 9.81 m/s^2\n", "  beta: 30 deg\n", "  t2: 1.5 s\n"}) {
+    std::string line(p), name = line.substr(2, line.find(':') - 2);
+    std::string unit = name == "m" ? "kg" : name == "g" ? "m/s^2" : name == "beta" ? "rad" : "s";
+    text = edit(text, line, "  " + name + ": " + unit + "\n");
+  }
+  text = text.substr(0, text.find("expect:\n"));
+  text = edit(text, "  v2: {value: s_dot@2, unit: m/s}\n  N: {value: \"impulse(incline, 1, 2)/(t@2 - t@1)\", unit: N}\n",
+              "  v2: s_dot@2\n  Nx: \"impulse_x(incline, 1, 2)/(t@2 - t@1)\"\n");
+  auto s = solve_text(text);
+  ex m = kt::param(s.model, "m"), g = kt::param(s.model, "g"), b = kt::param(s.model, "beta"), t2 = kt::param(s.model, "t2");
+  CHECK(kt::symbolically_zero(kt::result(s, "v2").closed - g * sin(b) * t2));
+  // N n = m g cos(beta) (sin(beta), cos(beta)): its x component
+  CHECK(kt::symbolically_zero(kt::result(s, "Nx").closed - m * g * cos(b) * sin(b)));
+}
+
+TEST_CASE("a track is written with one shape, a point and a direction or a centre and a radius", "[effects][track][errors]") {
+  auto rod = derivation("energy/sliding_rod.yaml");
+  auto with = [&](const std::string& track) { return edit(rod, "effects:\n", "effects:\n  slot: " + track + "\n"); };
+  REQUIRE_THROWS_WITH(solve_text(with("{track: rod.A}")), Catch::Contains("needs one shape: 'line' or 'circle'"));
+  REQUIRE_THROWS_WITH(solve_text(with("{track: rod.A, line: {through: [0, 0], along: [1, 0]}, circle: {centre: [0, 0], radius: l}}")),
+                      Catch::Contains("needs one shape"));
+  REQUIRE_THROWS_WITH(solve_text(with("{track: rod.A, line: [[0, 0], [1, 0]]}")), Catch::Contains("'line' is given by a point and a direction"));
+  REQUIRE_THROWS_WITH(solve_text(with("{track: rod.A, line: {through: [0, 0], along: [0, 0]}}")),
+                      Catch::Contains("the direction of the line of track 'slot' is zero"));
+  REQUIRE_THROWS_WITH(solve_text(with("{track: rod.A, circle: {centre: [0, 0]}}")),
+                      Catch::Contains("'circle' is given by its centre and radius"));
+  REQUIRE_THROWS_WITH(solve_text(with("{track: rod.A, circle: {centre: [0, 0], radius: -l}}")), Catch::Contains("radius"));
+  auto fixed = edit(rod, "coordinates:\n", "points:\n  O: [0, 0]\ncoordinates:\n");
+  REQUIRE_THROWS_WITH(solve_text(edit(fixed, "effects:\n", "effects:\n  slot: {track: O, line: {through: [0, 0], along: [1, 0]}}\n")),
+                      Catch::Contains("a track holds a point of a body, but 'O' is a fixed point"));
+}
+
+TEST_CASE("a circular track's impulse has no fixed components; its moment about the centre is none", "[effects][track][errors]") {
+  // a bead on a smooth horizontal ring of radius R about O, at speed v0 at (R, 0): the ring's
+  // force is radial, so about O: m R v0 = m R v at (0, R), where x_dot = -v0
+  const std::string ring = R"Y(title: bead on a ring
+parameters:
+  m: kg
+  R: m
+  v0: m/s
+points: {O: [0, 0]}
+coordinates:
+  th: rad
+bodies:
+  bead: {mass: m, inertia: particle, position: [R*cos(th), R*sin(th)]}
+effects:
+  ring: {track: bead, circle: {centre: [0, 0], radius: R}}
+states:
+  1: {th: 0, th_dot: v0/R, t: 0}
+  2: {th: pi/2, t: 1 s}
+analyses:
+  - angular_momentum: {from: 1, to: 2, about: O}
+find:
+  w2: th_dot@2
+)Y";
+  auto s = solve_text(ring);
+  CHECK(kt::symbolically_zero(kt::result(s, "w2").closed - kt::param(s.model, "v0") / kt::param(s.model, "R")));
+  REQUIRE_THROWS_WITH(solve_text(ring + "  J: \"impulse_x(ring, 1, 2)\"\n"),
+                      Catch::Contains("the normal of track 'ring' turns with the motion"));
+}
