@@ -259,6 +259,11 @@ int main(int argc, char** argv) {
                     << static_cast<int>(f * 100) << "%" << std::flush;
           shown = true;
         };
+      for (auto& e : m.effects)
+        if (e.on >= 0 || e.off >= 0)
+          throw kinergy::SceneError(e.pos, "effect '" + e.name + "' is switched on or off at a state, which a run from one state does not follow",
+                                    "check each analysis with --check (each runs with the effects that act over it), or remove "
+                                    "'on'/'off' to simulate it acting throughout");
       sim::Simulator s(m, sol ? sim::simulation_values(*sol) : m.parameter_values(), o);
       sim::Stop stop;
       stop.until = until;

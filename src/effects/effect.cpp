@@ -1,6 +1,9 @@
 // What an effect answers when its kind says nothing else: no potential, no work, no impulse.
 #include "kinergy/model/effect.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include "kinergy/model/model.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/principles/momentum.hpp"
@@ -8,6 +11,23 @@
 #include "kinergy/simulate/equations.hpp"
 
 namespace kinergy::model {
+
+Effect::Activity Effect::activity(const Analysis& a) const {
+  if (on < 0 && off < 0) return Activity::Whole;
+  int lo = std::min(a.from, a.to), hi = std::max(a.from, a.to);
+  int start = on < 0 ? std::numeric_limits<int>::min() : on, end = off < 0 ? std::numeric_limits<int>::max() : off;
+  if (hi <= start || lo >= end) return a.instant && lo == start ? Activity::Whole : Activity::None;
+  if (start <= lo && hi <= end) return Activity::Whole;
+  return Activity::Part;
+}
+
+std::pair<int, int> Effect::active_span(const Analysis& a) const {
+  int lo = a.from, hi = a.to;
+  bool forward = a.from <= a.to;
+  int start = on < 0 ? std::min(lo, hi) : std::max(std::min(lo, hi), on);
+  int end = off < 0 ? std::max(lo, hi) : std::min(std::max(lo, hi), off);
+  return forward ? std::pair<int, int>{start, end} : std::pair<int, int>{end, start};
+}
 
 ex Effect::generalized_force(const Model& m, std::size_t i) const {
   if (conservative()) return -potential(m).diff(m.coords[i].q);  // Q_i = −∂V/∂q_i

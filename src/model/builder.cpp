@@ -448,7 +448,37 @@ private:
       // the scene has checked the kind's name against the same table
       auto kind = std::find_if(kinds.begin(), kinds.end(), [&](const EffectKind& k) { return k.name == ed.kind; });
       if (kind == kinds.end()) throw std::logic_error("effect kind '" + ed.kind + "' is not in the table");
-      std::shared_ptr<const Effect> e = kind->read(*this, ed);
+      // 'on' and 'off' are every kind's: the states it acts between; the kind reads the rest
+      scene::EffectDef own = ed;
+      const scene::Node *on = nullptr, *off = nullptr;
+      std::vector<scene::Entry> kept;
+      for (auto& entry : ed.options.entries) {
+        if (entry.first.scalar == "on") on = &entry.second;
+        else if (entry.first.scalar == "off") off = &entry.second;
+        else kept.push_back(entry);
+      }
+      own.options.entries = kept;
+      std::shared_ptr<Effect> e = kind->read(*this, own);
+      auto state_at = [&](const Node* n, const std::string& key) {
+        if (!n) return -1;
+        if (!n->is_scalar())
+          throw SceneError(n->pos, "'" + key + "' names a state, not " + n->kind_name(), "write e.g. '" + key + ": 2'");
+        std::vector<std::string> names;
+        for (std::size_t i = 0; i < d_.states.size(); ++i) {
+          if (d_.states[i].name == n->scalar) return static_cast<int>(i);
+          names.push_back(d_.states[i].name);
+        }
+        std::string near = scene::closest(n->scalar, names), all;
+        for (auto& x : names) all += (all.empty() ? "" : ", ") + x;
+        throw SceneError(n->pos, "effect '" + ed.name + "': no state named '" + n->scalar + "'",
+                         near.empty() ? "name one of the states: " + all : "did you mean '" + near + "'?");
+      };
+      e->on = state_at(on, "on");
+      e->off = state_at(off, "off");
+      if (e->on >= 0 && e->off >= 0 && e->off <= e->on)
+        throw SceneError(off->pos, "effect '" + ed.name + "' is switched off at state '" + off->scalar + "', not after it is switched on (state '" +
+                                       on->scalar + "'); states are in the order they are listed",
+                         "switch it off at a later state, or list the states in the order they happen");
       if (m_.effect_index(e->name) >= 0)
         throw SceneError(ed.pos, "effect '" + e->name + "' is defined twice", "rename one");
       m_.effects.push_back(e);

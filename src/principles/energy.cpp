@@ -50,13 +50,29 @@ EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& 
   ex T = 0, V = 0;
   if (whole) {
     T = m.kinetic_energy();
-    V = m.potential_energy();
   } else {
     for (int bi : a.bodies) T += m.kinetic_energy(bi);
     T = model::collect_simplify(T, m.rates());
   }
   ex U = 0;
   for (auto& e : m.effects) {
+    // an effect switched on or off inside the analysis does its work over its own part of it:
+    // U = work from its first to its last state there (a conservative one: −ΔV over that part)
+    const auto act = e.activity(a);
+    if (act == model::Effect::Activity::None) continue;
+    if (act == model::Effect::Activity::Part) {
+      auto [s1, s2] = e.active_span(a);
+      if (!whole)
+        throw SceneError(a.pos, "effect '" + e.name + "' is switched at state '" + m.states[e.on >= 0 && e.on > std::min(a.from, a.to) ? e.on : e.off].name +
+                                    "' inside this energy analysis of isolated bodies",
+                         "split the analysis at that state");
+      Work w = m.conservative(e) ? Work{e.name, -(m.bind(e.potential(m), s2) - m.bind(e.potential(m), s1)), "U = -(change of V)"}
+                                 : work(m, e, s1, s2, k);
+      w.how += " from state " + m.states[s1].name + " to " + m.states[s2].name + " (where it acts)";
+      U += w.U;
+      b.works.push_back(w);
+      continue;
+    }
     std::size_t inside = 0, acted = 0;
     if (!whole) {
       for (int bi : e.bodies_acted(m)) {
@@ -69,7 +85,7 @@ EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& 
     if (!whole && inside < acted) {
       w = e.work_across(m, a, k);
     } else if (m.conservative(e)) {
-      if (!whole) V += e.potential(m);
+      V += e.potential(m);
       continue;
     } else {
       w = work(m, e, a.from, a.to, k);

@@ -154,9 +154,23 @@ std::string state_pair(const Model& m, const Analysis& a) {
   return "states " + m.states[a.from].name + " -> " + m.states[a.to].name;
 }
 
-/// The pushes of effect e on the bodies of analysis a (none when e is internal or does not act on them).
+/// The pushes of effect e on the bodies of analysis a (none when e is internal, does not act on
+/// them, or is switched off over the analysis). @throws SceneError when it is switched inside it.
 std::vector<Push> pushes(const Model& m, const Effect& e, const Analysis& a, const Knowledge& k) {
   std::vector<Push> out;
+  switch (e.activity(a)) {
+    case Effect::Activity::None:
+      return out;
+    case Effect::Activity::Part: {
+      int at = e.on > std::min(a.from, a.to) && e.on < std::max(a.from, a.to) ? e.on : e.off;
+      throw SceneError(a.pos, "effect '" + e.name + "' is switched " + (at == e.on ? "on" : "off") + " at state '" + m.states[at].name +
+                                  "', inside this " + a.kind + " analysis: its impulse covers only part of the interval",
+                       "split the analysis at state '" + m.states[at].name + "' (one from '" + m.states[a.from].name + "' to '" +
+                           m.states[at].name + "', one from there to '" + m.states[a.to].name + "')");
+    }
+    case Effect::Activity::Whole:
+      break;
+  }
   e.pushes(m, a, k, out);
   return out;
 }

@@ -162,6 +162,13 @@ std::vector<Leg> legs(const Solution& s) {
       if (S2.given.count(qs) && (solved || (leg.stop.when && leg.stop.when->has(m.coords[i].q)))) leg.expect.q[i] = kNaN;
       if (S2.given.count(qds) && (solved || (leg.stop.when && leg.stop.when->has(m.coords[i].qd)))) leg.expect.qd[i] = kNaN;
     }
+    // an effect switched inside the analysis: the closed form takes its work over its part;
+    // one run of the equations cannot switch it
+    for (auto& e : m.effects)
+      if (leg.why_not.empty() && e.activity(a) == model::Effect::Activity::Part)
+        leg.why_not = "effect '" + e.name + "' is switched inside it (at state '" +
+                      m.states[e.on > std::min(a.from, a.to) && e.on < std::max(a.from, a.to) ? e.on : e.off].name +
+                      "'): check the analyses on either side of that state";
     // an effect undefined at the start (a power drive from rest: its couple P/ω is infinite)
     if (leg.why_not.empty()) {
       exmap at = params;
@@ -180,7 +187,11 @@ std::vector<Leg> legs(const Solution& s) {
 LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double tolerance) {
   LegCheck c;
   c.leg = leg;
-  Simulator sim(s.model, simulation_values(s), o);
+  // only the effects that act over this analysis
+  Options own = o;
+  own.effects_on.clear();
+  for (auto& e : s.model.effects) own.effects_on.push_back(e.activity(s.model.analyses[leg.analysis]) != model::Effect::Activity::None);
+  Simulator sim(s.model, simulation_values(s), own);
   c.run = sim.run(leg.start, leg.stop);
   const model::Model& m = s.model;
   const Sample& e = c.run.end;

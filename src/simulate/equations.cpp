@@ -41,7 +41,7 @@ ForceTerm force_term(const model::Model& m, const model::Effect& e, int self) {
   return force_term(m, self, std::move(Q), e.conservative());
 }
 
-Equations equations_of_motion(const model::Model& m) {
+Equations equations_of_motion(const model::Model& m, const std::vector<bool>& on) {
   Equations eq;
   const std::size_t n = m.coords.size();
   for (auto& c : m.coords) {
@@ -68,7 +68,8 @@ Equations equations_of_motion(const model::Model& m) {
   for (auto& ci : eq.c) ci = collect_simplify(ci, l);
 
   // each effect adds its own terms (a force's Q, a friction's slip, a contact's gap, a blow)
-  for (std::size_t k = 0; k < m.effects.size(); ++k) m.effects[k].motion(m, static_cast<int>(k), eq);
+  for (std::size_t k = 0; k < m.effects.size(); ++k)
+    if (on.empty() || on[k]) m.effects[k].motion(m, static_cast<int>(k), eq);
 
   // holonomic constraints g(q, t) = 0:  A q̈ = γ,  γ = −d/dt(A q̇ + ∂g/∂t) at q̈ = 0
   const std::size_t nc = m.constraints.size();

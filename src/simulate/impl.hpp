@@ -86,7 +86,7 @@ struct Simulator::Impl {
   double rest_time = 0;
 
   Impl(const model::Model& mm, const exmap& vals, const Options& opt) : m(mm), o(opt), values(vals) {
-    eq = equations_of_motion(m);
+    eq = equations_of_motion(m, o.effects_on);
     n = eq.q.size();
     nc = eq.g.size();
     if (n == 0) throw SimulationError("the scene has no coordinates: nothing moves", "add coordinates to the bodies");

@@ -856,6 +856,13 @@ const ExactCase kExact[] = {
     {"track_off_at_state.yaml", "16:3",
      "track 'ice_line': disk is 0.2 m off the line through [0, 2*r] along [1, 0] at state '1' \u2014 fix the body's "
      "position/angle, the point or the track so that disk stays on it"},
+    {"switch_unknown_state.yaml", "16:37", "effect 'motor': no state named '4' \u2014 name one of the states: 1, 2, 3"},
+    {"switch_off_before_on.yaml", "16:44",
+     "effect 'motor' is switched off at state '1', not after it is switched on (state '2'); states are in the order they "
+     "are listed \u2014 switch it off at a later state, or list the states in the order they happen"},
+    {"switch_inside_momentum.yaml", "22:5",
+     "effect 'motor' is switched off at state '2', inside this angular_momentum analysis: its impulse covers only part of "
+     "the interval \u2014 split the analysis at state '2' (one from '1' to '2', one from there to '3')"},
 };
 }  // namespace
 

@@ -21,9 +21,10 @@ TEST_CASE("every derivation's analyses, simulated at tol 1e-12, agree with the c
       INFO(fs::path(f).filename().string() << ": " << s.model.analyses[static_cast<std::size_t>(leg.analysis)].kind << " "
                                            << s.model.states[leg.from].name << " -> " << s.model.states[leg.to].name);
       if (!leg.why_not.empty()) {
-        // the one kind of motion the equations cannot start: a power drive from rest (P/ω)
+        // the motion the equations cannot start (a power drive from rest: P/ω), and an analysis
+        // with an effect switched inside it (the analyses on either side of the switch are run)
         INFO(leg.why_not);
-        CHECK_THAT(leg.why_not, Catch::Contains("power drive"));
+        CHECK_THAT(leg.why_not, Catch::Contains("power drive") || Catch::Contains("is switched inside it"));
         ++skipped;
         continue;
       }
@@ -36,7 +37,7 @@ TEST_CASE("every derivation's analyses, simulated at tol 1e-12, agree with the c
     }
   }
   CHECK(legs >= 55);
-  CHECK(skipped <= 1);
+  CHECK(skipped <= 2);  // flywheel_power (a power drive from rest), flywheel_motor_then_coast 1 -> 3
 }
 
 TEST_CASE("a leg ends where its state is defined: a turning point by its rate, a place by its position",

@@ -96,6 +96,16 @@ public:
   std::string name;
   std::string kind;  ///< the name it was registered under (for messages only)
   SourcePos pos;
+  /// Acts from state `on` to state `off` (indices in the order the states are listed; −1: from
+  /// the first, to the last): a motor disconnected at 2, a brake applied from 2 on.
+  int on = -1, off = -1;
+
+  /// How it acts over an analysis: throughout, not at all, or in part (switched inside it).
+  enum class Activity { Whole, None, Part };
+  Activity activity(const Analysis& a) const;
+  /// The states bounding the part of analysis `a` where it acts (with Part: one of them is its
+  /// switching state).
+  std::pair<int, int> active_span(const Analysis& a) const;
 
   virtual ~Effect() = default;
 

@@ -79,7 +79,8 @@ struct Equations {
 
 /// The equations of motion of a model (generic symbols: parameters not substituted).
 /// @throws SceneError naming an effect the simulation cannot take (its place and why).
-Equations equations_of_motion(const model::Model& m);
+/// `on`: which effects act (by index; empty: all).
+Equations equations_of_motion(const model::Model& m, const std::vector<bool>& on = {});
 
 /// v = Σ J_i q̇_i + b as its Jacobian row and dv/dt at q̈ = 0.
 LinearRate linear_rate(const model::Model& m, const ex& v);

@@ -43,6 +43,8 @@ struct Options {
   double step = 0;           ///< fixed step of symplectic and rk4 (0: span/10⁴)
   bool native = true;        ///< right-hand side as machine code (else the tape, same doubles)
   bool record = true;        ///< keep every accepted step as a sample
+  /// The effects that act (by index; empty: all): those switched on over the run.
+  std::vector<bool> effects_on;
   std::size_t max_steps = 100'000'000;
   /// Called now and then with the fraction of the span done (a progress bar).
   std::function<void(double)> progress;
