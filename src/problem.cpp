@@ -324,17 +324,33 @@ private:
 
   /// The branch the results' root choices and continuity select; each analysis checks it.
   void choose(const std::vector<solve::Branch>& branches) {
-    sol_.branch = branches.size() == 1 ? branches.front() : Selector{m, env, given}.pick(branches);
+    // a branch that breaks what the effects declare (a point off its track, a one-sided spring
+    // taken as acting where it does not) is no solution of the scene
+    std::vector<solve::Branch> kept;
+    std::optional<SceneError> first;
+    for (auto& b : branches) {
+      try {
+        check_declared(b);
+        kept.push_back(b);
+      } catch (const SceneError& e) {
+        if (!first) first = e;
+      }
+    }
+    if (kept.empty()) throw *first;
+    sol_.branch = kept.size() == 1 ? kept.front() : Selector{m, env, given}.pick(kept);
     for (auto& a : m.analyses) {
       forward_in_time(a);
       a.type->check(m, a, given, sol_.branch, env);
     }
-    // what the effects declare (a point on its track) holds at every solved state
+  }
+
+  /// What the effects declare holds at every solved state of branch b.
+  void check_declared(const solve::Branch& b) const {
     exmap values = env;
-    for (const exmap* part : {static_cast<const exmap*>(&given), static_cast<const exmap*>(&sol_.branch.sol)})
+    for (const exmap* part : {static_cast<const exmap*>(&given), static_cast<const exmap*>(&b.sol)})
       for (auto& [k, v] : *part) {
         try {
-          ex x = v.subs(given).subs(sol_.branch.sol).subs(env).evalf();
+          ex x = v.subs(given).subs(b.sol).subs(env).evalf();
           if (is_a<numeric>(x)) values[k] = x;
         } catch (const std::exception&) {
         }

@@ -1,5 +1,9 @@
 // Linear spring between two points: V = ½ k (|r_A − r_B| − L₀)².
+#include <functional>
+#include <optional>
+
 #include "common.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 
 namespace kinergy::effects {
 
@@ -9,17 +13,116 @@ class Spring : public Effect {
 public:
   PointRef a, b;
   ex k = 0, free = 0;
+  /// 0: pushes and pulls; −1: only when compressed (a bumper, a stop, a launcher left behind);
+  /// +1: only when stretched (an elastic cord)
+  int side = 0;
   std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
-  bool conservative() const override { return true; }
+  bool conservative() const override { return side == 0; }
+
+  /// Its stretch δ = |r_A − r_B| − L₀ (generic).
+  ex stretch(const Model& m) const {
+    auto [xa, ya] = m.position(a);
+    auto [xb, yb] = m.position(b);
+    ex d2 = model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2));
+    return m.spring_length(d2) - free;
+  }
 
   ex potential(const Model& m) const override {
+    if (side != 0) return 0;  // one-sided: no potential of q alone (its work is taken part by part)
     // V = ½ k (|r_A − r_B| − L₀)²
     auto [xa, ya] = m.position(a);
     auto [xb, yb] = m.position(b);
     ex d2 = model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2));
     if (free.is_zero()) return k * d2 / 2;
     return k * pow(m.spring_length(d2) - free, 2) / 2;
+  }
+
+  // one-sided: Q_i = −k g(δ) ∂δ/∂q_i with g(δ) = (δ − |δ|)/2 = min(δ, 0) (compression only) or
+  // (δ + |δ|)/2 = max(δ, 0) (tension only)
+  ex generalized_force(const Model& m, std::size_t i) const override {
+    if (side == 0) return Effect::generalized_force(m, i);
+    ex d = stretch(m);
+    return -k * (d + side * abs(d)) / 2 * d.diff(m.coords[i].q);
+  }
+
+  ex power(const Model& m) const override {
+    if (side == 0) return Effect::power(m);
+    // P = Σ Q_i q̇_i
+    ex P = 0;
+    for (std::size_t i = 0; i < m.coords.size(); ++i) P += generalized_force(m, i) * m.coords[i].qd;
+    return model::collect_simplify(P, m.rates());
+  }
+
+  void motion(const Model& m, int self, simulate::Equations& eq) const override {
+    if (side == 0) return Effect::motion(m, self, eq);
+    std::vector<ex> Q;
+    for (std::size_t i = 0; i < m.coords.size(); ++i) Q.push_back(generalized_force(m, i));
+    eq.forces.push_back(simulate::force_term(m, self, Q, false));
+  }
+
+  /// Is it engaged at state s (its δ of the acting sign)? nothing when δ there is not known yet.
+  std::optional<bool> engaged(const Model& m, int s, const std::function<std::optional<GiNaC::numeric>(const ex&)>& value) const {
+    auto d = value(m.bind(stretch(m), s));
+    if (!d) return std::nullopt;
+    return side < 0 ? d->is_negative() : d->is_positive();
+  }
+
+  /// Engaged at the two states of an energy analysis, as its equation takes it: where δ is known
+  /// beforehand, from δ; where not, the opposite of the other state (a body meets the spring
+  /// part-way, or leaves it behind). @throws SceneError when neither state tells.
+  std::pair<bool, bool> engagement(const Model& m, int s1, int s2, const Knowledge& k) const {
+    auto value = [&](const ex& e) { return k.value(e); };
+    auto e1 = engaged(m, s1, value), e2 = engaged(m, s2, value);
+    if (!e1 && !e2)
+      throw SceneError(pos, "spring '" + name + "' acts only when " + (side < 0 ? "compressed" : "stretched") +
+                                ", and neither state '" + m.states[s1].name + "' nor '" + m.states[s2].name + "' tells whether it is",
+                       "give the position at one of the two states");
+    if (!e1) e1 = !*e2;
+    if (!e2) e2 = !*e1;
+    return {*e1, *e2};
+  }
+
+  // U = V(s₁) − V(s₂), V = ½ k δ² where it is engaged and 0 where not: the integral of its force
+  // over the part of the motion where it acts
+  principles::Work work(const Model& m, int s1, int s2, const Knowledge& k) const override {
+    if (side == 0) return Effect::work(m, s1, s2, k);
+    auto [e1, e2] = engagement(m, s1, s2, k);
+    ex V = k_half() * pow(stretch(m), 2);
+    principles::Work w;
+    w.effect = name;
+    w.U = (e1 ? m.bind(V, s1) : ex(0)) - (e2 ? m.bind(V, s2) : ex(0));
+    w.how = "U = V(" + m.states[s1].name + ") - V(" + m.states[s2].name + "), V = k*delta^2/2 where it is " +
+            (side < 0 ? "compressed" : "stretched") + " (at " + (e1 && e2 ? "both states" : e1 ? "state " + m.states[s1].name : e2 ? "state " + m.states[s2].name : "neither state") + "), else 0";
+    return w;
+  }
+  ex k_half() const { return k / 2; }
+
+  // the states solved as the energy equations took them: engaged where assumed
+  void check_state(const Model& m, int s, const GiNaC::exmap& values) const override {
+    if (side == 0) return;
+    Knowledge before(m);
+    for (auto& an : m.analyses) {
+      if (an.type->impulsive() || (an.from != s && an.to != s) || activity(an) == Activity::None) continue;
+      auto [e1, e2] = engagement(m, an.from, an.to, before);
+      bool assumed = an.from == s ? e1 : e2;
+      auto value = [&](const ex& e) -> std::optional<GiNaC::numeric> {
+        try {
+          ex v = e.subs(values).evalf();
+          if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return GiNaC::ex_to<GiNaC::numeric>(v);
+        } catch (const std::exception&) {
+        }
+        return std::nullopt;
+      };
+      auto actual = engaged(m, s, value);
+      if (!actual || *actual == assumed) continue;
+      auto d = value(m.bind(stretch(m), s));
+      throw SceneError(pos, "spring '" + name + "' was taken as " + (assumed ? "" : "not ") + (side < 0 ? "compressed" : "stretched") +
+                                " at state '" + m.states[s].name + "', but the solution puts its stretch there at " +
+                                numerics::format(*d, 6) + " m" + (assumed ? ": the motion does not reach it" : ": it does act there"),
+                       assumed ? "the body stops (or turns) before the spring: remove it from this analysis ('off:'), or check the state"
+                               : "give the position at state '" + m.states[s].name + "' so that it is known whether the spring acts there");
+    }
   }
 
   void pushes(const Model&, const Analysis& an, const Knowledge&, std::vector<Push>&) const override {
@@ -31,7 +134,7 @@ public:
 
 std::shared_ptr<Effect> read_spring(EffectReader& r, const EffectDef& ed) {
   auto e = make<Spring>(ed);
-  r.only(ed, {"k", "free_length"});
+  r.only(ed, {"k", "free_length", "acts"});
   std::tie(e->a, e->b) = two_points(r, ed, "a spring joins two points", "write 'spring: [A, bar.B]'");
   const scene::Node& kn = r.option(ed, "k", "k");
   e->k = r.quantity(r.text_of(kn, "k", "k"), false, force_dim() / Dimension::length(), "k",
@@ -41,6 +144,15 @@ std::shared_ptr<Effect> read_spring(EffectReader& r, const EffectDef& ed) {
     e->free = r.quantity(r.text_of(*f, "free_length", "L0"), false, Dimension::length(), "free_length",
                          "a free length is a length");
     r.positive(e->free, f->pos, "the free length", true);
+  }
+  if (auto* acts = ed.options.get("acts")) {
+    if (!acts->is_scalar() || (acts->scalar != "compression" && acts->scalar != "tension" && acts->scalar != "both"))
+      throw SceneError(acts->pos, "'acts' must be compression, tension or both",
+                       "write 'acts: compression' for a bumper or a launcher the body leaves");
+    e->side = acts->scalar == "compression" ? -1 : acts->scalar == "tension" ? 1 : 0;
+    if (e->side != 0 && e->free.is_zero())
+      throw SceneError(acts->pos, "a spring that acts only in " + acts->scalar + " needs its free length",
+                       "add 'free_length: L0'");
   }
   return e;
 }

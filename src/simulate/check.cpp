@@ -128,9 +128,13 @@ std::vector<Leg> legs(const Solution& s) {
       for (std::size_t i = 0; i < m.coords.size(); ++i)
         for (int r = 0; r < 2; ++r) {
           double v1 = r ? leg.start.qd[i] : leg.start.q[i], v2 = r ? leg.expect.qd[i] : leg.expect.q[i];
-          if (std::isnan(v2) || v1 == v2) continue;
           auto& [qs, qds] = S2.sym.at(m.coords[i].name);
           bool given = S2.given.count(r ? qds : qs) > 0;
+          // a turning point given as a zero rate ends the run even from rest (it is the next zero)
+          // when the coordinate moves between the states to a place not given (a given place
+          // with a zero rate is a stop the motion is held at)
+          const bool moves = !std::isnan(leg.expect.q[i]) && leg.expect.q[i] != leg.start.q[i] && !S2.given.count(qs);
+          if (std::isnan(v2) || (v1 == v2 && !(r && given && v2 == 0 && moves))) continue;
           double score = given ? (r && v2 == 0 ? 3e300 : (r ? 1e300 : 2e300)) : (r ? -1 : std::fabs(v2 - v1) / std::max({std::fabs(v1), std::fabs(v2), 1e-300}));
           if (score > best) {
             best = score;

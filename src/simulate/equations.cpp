@@ -83,7 +83,9 @@ Equations equations_of_motion(const model::Model& m, const std::vector<bool>& on
   }
 
   eq.T = m.kinetic_energy();
-  eq.V = m.potential_energy();
+  eq.V = 0;  // of the effects that act
+  for (std::size_t k = 0; k < m.effects.size(); ++k)
+    if (on.empty() || on[k]) eq.V += m.effects[k].potential(m);
   return eq;
 }
 

@@ -468,6 +468,9 @@ private:
         ev.push_back(p_.flimit[k] - std::hypot(F[0], F[1]));
       }
     }
+    // a stop condition that is zero at the start (a turning point sought from rest) takes the
+    // sign it has as the motion begins: the run ends at its next zero
+    if (p_.has_stop && stop_sign_ == 0 && t > t_ && p_.aux[p_.a_stop] != 0) stop_sign_ = p_.aux[p_.a_stop] > 0 ? 1 : -1;
     ev.push_back(p_.has_stop && stop_sign_ != 0 ? stop_sign_ * p_.aux[p_.a_stop] : 1.0);
     return ev;
   }
