@@ -294,6 +294,8 @@ static std::optional<ex> linear_coeff(const ex& arg, const symbol& s) {
   return d;
 }
 
+std::optional<ex> elementary_antiderivative(const ex& f, const symbol& s);
+
 namespace {
 
 bool is_sin_or_cos(const ex& f) { return is_ex_the_function(f, sin) || is_ex_the_function(f, cos); }
@@ -351,7 +353,14 @@ std::size_t trig_factors(const ex& t) {
 
 }  // namespace
 
+std::optional<ex> rational_antiderivative(const ex& f, const symbol& s);
+
 std::optional<ex> antiderivative(const ex& f, const symbol& s) {
+  if (auto a = elementary_antiderivative(f, s)) return a;
+  return rational_antiderivative(f, s);
+}
+
+std::optional<ex> elementary_antiderivative(const ex& f, const symbol& s) {
   if (!f.has(s)) return f * s;  // ∫ c ds = c s
   if (f.is_equal(s)) return pow(s, 2) / 2;
   if (is_a<add>(f)) {
@@ -447,6 +456,107 @@ std::optional<ex> antiderivative(const ex& f, const symbol& s) {
     return std::nullopt;
   }
   return std::nullopt;
+}
+
+/// ∫ P/Q ds for polynomials P, Q in s by partial fractions: the polynomial part, then over the
+/// factors of Q (linear L = a s + b and quadratic K = α s² + β s + γ with 4αγ − β² > 0):
+///   A/L → (A/a) log L,   A/L^j → A L^(1−j)/((1 − j) a),
+///   (B s + C)/K → (B/2α) log K + (C − Bβ/2α) (2/√Δ) atan((2α s + β)/√Δ),  Δ = 4αγ − β².
+/// The coefficients A, B, C from the identity P mod Q = Σ (terms) × Q (linear in them). Nothing
+/// for an irreducible factor of higher degree, a power of a quadratic, or a Δ of unknown sign.
+std::optional<ex> rational_antiderivative(const ex& f, const symbol& s) {
+  ex nd;
+  try {
+    nd = numer_denom(normal(f));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  ex P = nd.op(0).expand(), Q = nd.op(1).expand();
+  if (!Q.has(s) || !P.is_polynomial(s) || !Q.is_polynomial(s) || Q.degree(s) > 8) return std::nullopt;
+  ex out = 0;
+  ex q = quo(P, Q, s), r = rem(P, Q, s);
+  if (!q.is_zero()) {
+    auto a = elementary_antiderivative(q.expand(), s);
+    if (!a) return std::nullopt;
+    out += *a;
+  }
+  if (r.is_zero()) return out;
+  ex Qf;
+  try {
+    Qf = factor(Q);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  // the factors in s with their multiplicities; the rest is a constant
+  struct Part {
+    ex base;
+    int mult;
+  };
+  std::vector<Part> parts;
+  ex lead = 1;
+  for (const ex& x : factors_of(Qf)) {
+    ex b = x;
+    int k = 1;
+    if (is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_pos_integer()) {
+      b = x.op(0);
+      k = static_cast<int>(ex_to<numeric>(x.op(1)).to_long());
+    }
+    if (!b.has(s)) {
+      lead *= x;
+      continue;
+    }
+    int d = b.degree(s);
+    if (d > 2 || (d == 2 && k > 1)) return std::nullopt;
+    parts.push_back({b.expand(), k});
+  }
+  // the ansatz and its coefficients
+  lst unknowns, terms_l;
+  ex sum = 0;
+  std::vector<std::pair<ex, ex>> terms;  // (numerator, denominator) with unknowns
+  int n = 0;
+  for (auto& pt : parts)
+    for (int j = 1; j <= pt.mult; ++j) {
+      symbol A("pfA" + std::to_string(n++));
+      unknowns.append(A);
+      ex num = A;
+      if (pt.base.degree(s) == 2) {
+        symbol C("pfC" + std::to_string(n++));
+        unknowns.append(C);
+        num = A * s + C;
+      }
+      terms.push_back({num, pow(pt.base, j)});
+      sum += num * normal(Q / (lead * pow(pt.base, j)));
+    }
+  // r = lead × Σ num_i × (Q/lead)/den_i, coefficient by coefficient in s
+  ex id = (sum * lead - r).expand();
+  lst eqs;
+  for (int k = 0; k <= id.degree(s); ++k) eqs.append(id.coeff(s, k) == 0);
+  ex sol;
+  try {
+    sol = lsolve(eqs, unknowns);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (!is_a<lst>(sol) || sol.nops() != unknowns.nops()) return std::nullopt;
+  for (auto& [num, den] : terms) {
+    ex N = num.subs(ex_to<lst>(sol)), base = den, j = 1;
+    if (is_a<power>(den)) {
+      base = den.op(0);
+      j = den.op(1);
+    }
+    if (N.is_zero()) continue;
+    if (base.degree(s) == 1) {
+      ex a = base.diff(s);
+      out += j.is_equal(1) ? N * log(base) / a : N * pow(base, 1 - j) / ((1 - j) * a);
+      continue;
+    }
+    ex al = base.coeff(s, 2), be = base.coeff(s, 1), ga = base.coeff(s, 0);
+    ex D = (4 * al * ga - be * be).expand();
+    if (!(D.info(info_flags::positive) || (is_a<numeric>(D) && ex_to<numeric>(D).is_positive()))) return std::nullopt;
+    ex B = N.coeff(s, 1), C = N.coeff(s, 0);
+    out += B / (2 * al) * log(base) + (C - B * be / (2 * al)) * 2 / sqrt(D) * atan((2 * al * s + be) / sqrt(D));
+  }
+  return out;
 }
 
 }  // namespace kinergy::model
