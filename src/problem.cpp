@@ -163,7 +163,7 @@ std::optional<numeric> Result::value(const exmap& env, int digits) const {
 
 std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_double) const {
   if (!closed_form && digits > kRootDigits)
-    throw SceneError(pos, "'" + name + "' is a numeric root (no closed form), refined to " + std::to_string(kRootDigits) +
+    throw SceneError(pos, "'" + name + "' has no closed form (a numeric root or a work integral taken numerically), found to " + std::to_string(kRootDigits) +
                               " significant digits; " + std::to_string(digits) + " were asked",
                      "ask for --digits " + std::to_string(kRootDigits) + " or fewer");
   numerics::Evaluator ev(closed / unit_factor, env);

@@ -912,7 +912,7 @@ private:
                "number to " + std::to_string(o_.digits) + " significant figures")};
     bool numeric_root = false;
     for (auto& res : s_.results) numeric_root = numeric_root || !res.closed_form;
-    if (numeric_root) sp.push_back(W("; a result without closed form comes from a numeric root"));
+    if (numeric_root) sp.push_back(W("; a result without closed form comes from a numeric root or a work integral taken numerically"));
     sp.push_back(W(":"));
     para(sp);
     rows(r);

@@ -34,7 +34,7 @@ std::string text(const Solution& s, const Options& o) {
       else os << "  " << std::string(w, ' ') << "   (no number: some parameters have no value)\n";
     } else {
       os << "  " << r.name << pad << " = " << v << (r.unit.empty() ? "" : " " + r.unit)
-         << "   (no closed form: numeric root" << (val && o.guaranteed ? "; " + val->note() : std::string()) << ")\n";
+         << "   (no closed form: taken numerically" << (val && o.guaranteed ? "; " + val->note() : std::string()) << ")\n";
     }
   }
   return os.str();

@@ -647,22 +647,29 @@ private:
 
     std::string s;
     numeric p = c.numer(), q = c.denom();
+    // a float (a value taken numerically) to the digits of a number, not all its working digits
+    auto digits = [](const numeric& x) {
+      std::ostringstream os;
+      if (x.is_rational()) os << x;
+      else os << number_text(x);
+      return os.str();
+    };
     if (bottoms.empty() && !(one_fraction && q != 1)) {
       if (q != 1) {
         // ½ m v²: the number in front as a fraction
         std::ostringstream a, b;
-        a << p;
+        a << digits(p);
         b << q;
         s = juxtapose({"\\frac{" + a.str() + "}{" + b.str() + "}", juxtapose(tops)});
       } else {
         std::ostringstream a;
-        a << p;
+        a << digits(p);
         if (p != 1 || tops.empty()) s = a.str();
         s = juxtapose({s, juxtapose(tops)});
       }
     } else {
       std::ostringstream a, b;
-      a << p;
+      a << digits(p);
       b << q;
       std::string num = juxtapose({p != 1 ? a.str() : "", juxtapose(tops)});
       if (num.empty()) num = "1";

@@ -24,11 +24,18 @@ Dimension Model::dimension(const ex& e) const {
     return it->second;
   }
   if (is_a<add>(e)) {
-    Dimension d0 = dimension(e.op(0));
-    for (std::size_t i = 1; i < e.nops(); ++i) {
+    // a float term is a value taken numerically in SI units (a work integral with no closed
+    // form): it has the dimension of the terms it is added to
+    auto is_float = [](const ex& x) { return is_a<numeric>(x) && !ex_to<numeric>(x).is_rational(); };
+    std::size_t first = 0;
+    while (first < e.nops() && is_float(e.op(first))) ++first;
+    if (first == e.nops()) return {};
+    Dimension d0 = dimension(e.op(first));
+    for (std::size_t i = first + 1; i < e.nops(); ++i) {
+      if (is_float(e.op(i))) continue;
       Dimension di = dimension(e.op(i));
       if (di != d0)
-        throw DimensionError("'" + text(e.op(0)) + "' has dimension " + d0.str() + " but '" +
+        throw DimensionError("'" + text(e.op(first)) + "' has dimension " + d0.str() + " but '" +
                              text(e.op(i)) + "' has " + di.str());
     }
     return d0;

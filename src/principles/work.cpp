@@ -7,6 +7,9 @@
 
 namespace kinergy::principles {
 
+/// Digits of a work integral taken numerically: those of a numeric root, and a margin.
+constexpr int kIntegralDigits = 45;
+
 using namespace GiNaC;
 using model::Effect;
 using model::Model;
@@ -132,9 +135,28 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
     Qs += Q[j].subs(p->q_of_s) * qj.diff(s);
   }
   auto F = antiderivative(model::trig_simplify(Qs), s);
-  if (!F)
-    throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name,
-                     "write the " + what + " in a form with an elementary antiderivative");
+  if (!F) {
+    // no elementary antiderivative: U = ∫ Q ds numerically, where both ends and every parameter
+    // in it are known numbers (then marked "no closed form", as a numeric root is)
+    const exmap given = m.given_values(), vals = m.parameter_values();
+    auto a = numerics::evaluate(m.bind(ex(s), s1).subs(given), vals, 60);
+    auto b = numerics::evaluate(m.bind(ex(s), s2).subs(given), vals, 60);
+    if (!a || !b)
+      throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name +
+                                  ", and its value cannot be taken numerically: " + m.coords[p->s].name + " is not known at state '" +
+                                  m.states[!a ? s1 : s2].name + "'",
+                       "give " + m.coords[p->s].name + " at both states, or write the " + what +
+                           " in a form with an elementary antiderivative");
+    auto I = numerics::integrate(model::trig_simplify(Qs), s, *a, *b, vals, kIntegralDigits);
+    if (!I)
+      throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name +
+                                  ", and its numeric value does not settle between the states (a parameter without a value, or a "
+                                  "singular integrand?)",
+                       "give every parameter in it a value, or write the " + what + " in a form with an elementary antiderivative");
+    w.U = *I;
+    w.how = "U = integral along " + m.coords[p->s].name + ", numerically (no closed form)";
+    return w;
+  }
   w.U = m.bind(*F, s2) - m.bind(*F, s1);
   w.how = "U = integral along " + m.coords[p->s].name;
   return w;

@@ -22,6 +22,13 @@ bool beyond_precision(const GiNaC::ex& e, const GiNaC::exmap& values, int digits
 /// of 1e-12 N·m is a couple. @returns nothing when e has no value there.
 std::optional<bool> negligible(const GiNaC::ex& e, const GiNaC::exmap& values, int digits = 40);
 
+/// ∫_a^b f ds numerically to `digits` significant digits (double-exponential tanh–sinh
+/// quadrature, its step halved until two levels agree; `values` give f's other symbols). For an
+/// integrand with no elementary antiderivative. @returns nothing when f has no real value at a
+/// node, or the levels do not settle.
+std::optional<GiNaC::numeric> integrate(const GiNaC::ex& f, const GiNaC::symbol& s, const GiNaC::numeric& a,
+                                        const GiNaC::numeric& b, const GiNaC::exmap& values, int digits);
+
 /// v rounded to n significant digits, as text: "3.50178525897863", "-0.00125", "1.5e-12".
 std::string format(const GiNaC::numeric& v, int n);
 

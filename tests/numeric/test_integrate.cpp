@@ -1,0 +1,73 @@
+// Work integrals with no elementary antiderivative, taken numerically (issue 13, part 3):
+// tanh–sinh quadrature against mpmath's quad at 50 digits (the reference numbers were printed by
+//   python3 -c "from mpmath import *; mp.dps=50; print(quad(lambda x: exp(-x**2), [0,1]))"
+// and the like, kept here), and a scene whose work is an error function (by mpmath).
+#include <catch2/catch.hpp>
+
+#include "../support/helpers.hpp"
+#include "kinergy/common/error.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/problem.hpp"
+
+using namespace GiNaC;
+
+namespace {
+bool agree(const numeric& got, const char* ref, int digits) {
+  const long saved = Digits;
+  Digits = 70;  // the reference as written, not rounded to the default 17 digits
+  numeric r = ex_to<numeric>(parser()(ref).evalf());
+  bool ok = abs(got - r) <= abs(r) * pow(numeric(10), -digits);
+  Digits = saved;
+  return ok;
+}
+numeric dec(const char* s) { return ex_to<numeric>(parser()(s)); }
+}  // namespace
+
+TEST_CASE("numeric integrals to 40 digits against mpmath", "[numeric][integrate]") {
+  symbol x("x");
+  auto I = kinergy::numerics::integrate(exp(-pow(x, 2)), x, 0, 1, {}, 40);
+  REQUIRE(I);
+  CHECK(agree(*I, "0.74682413281242702539946743613185300535449968681261", 40));
+  // sin(x)/x: an integrand that is 0/0 at an end (the nodes never reach the end itself)
+  // (the end to 60 digits: the quadrature is as precise as its ends)
+  const long saved = Digits;
+  Digits = 60;
+  const numeric pi60 = ex_to<numeric>(Pi.evalf());
+  Digits = saved;
+  I = kinergy::numerics::integrate(sin(x) / x, x, 0, pi60, {}, 30);
+  REQUIRE(I);
+  CHECK(agree(*I, "1.8519370519824661703610533701579913633458097289812", 25));
+  // a parameter from `values`
+  symbol c("c");
+  I = kinergy::numerics::integrate(c / (1 + pow(x, 4)), x, 0, 2, {{c, 3}}, 40);
+  REQUIRE(I);
+  CHECK(agree(*I / 3, "1.070127689136688147727121362581770723727754630116", 40));
+  // backwards: the negative
+  I = kinergy::numerics::integrate(exp(-pow(x, 2)), x, 1, 0, {}, 40);
+  REQUIRE(I);
+  CHECK(agree(-*I, "0.74682413281242702539946743613185300535449968681261", 40));
+  // no real value inside: nothing (not a wrong number)
+  CHECK(!kinergy::numerics::integrate(log(x), x, dec("-1"), 1, {}, 20));
+  // a symbol without a value: nothing
+  symbol d("d");
+  CHECK(!kinergy::numerics::integrate(d * x, x, 0, 1, {}, 20));
+}
+
+TEST_CASE("a work with no closed form is taken numerically, or refused naming what is missing", "[numeric][integrate][work]") {
+  auto text = kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/wheel_cam_couple_numeric.yaml");
+  auto s = kinergy::solve_scene(kinergy::scene::load_string(text, "cam.yaml"));
+  const kinergy::Result& r = s.results.at(0);
+  CHECK(!r.closed_form);
+  auto v = r.value(s.model.numeric_environment(), 30);
+  REQUIRE(v);
+  // by mpmath: sqrt(2 M0 phi0 (sqrt(pi)/2) erf(phi2/phi0)/(m k^2))
+  CHECK(agree(*v, "6.709051266990077198931405617897785", 29));
+  // the end where the wheel stops is unknown: the integral cannot be taken
+  auto pos = text.find("  2: {phi: phi2}\n");
+  REQUIRE(pos != std::string::npos);
+  text.replace(pos, 17, "  2: {phi_dot: 0}\n");
+  text = text.substr(0, text.find("find:\n")) + "find:\n  phi2s: phi@2\n";
+  REQUIRE_THROWS_WITH(kinergy::solve_scene(kinergy::scene::load_string(text, "cam.yaml")),
+                      Catch::Contains("has no closed form integral along phi, and its value cannot be taken numerically: phi is not "
+                                      "known at state '2'"));
+}
