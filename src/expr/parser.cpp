@@ -15,7 +15,7 @@ using GiNaC::ex;
 bool is_math_function(const std::string& n) {
   static const std::set<std::string> f = {"sin",  "cos",  "tan",  "asin", "acos", "atan", "atan2",
                                           "sqrt", "exp",  "log",  "ln",   "abs",  "sinh", "cosh",
-                                          "tanh"};
+                                          "tanh", "max",  "min"};
   return f.count(n) > 0;
 }
 
@@ -218,7 +218,7 @@ struct Parser {
       while (eat(','));
       if (!eat(')')) fail("expected ')' after the arguments of " + f, "close the call with ')'", i);
     }
-    std::size_t want = f == "atan2" ? 2 : 1;
+    std::size_t want = f == "atan2" || f == "max" || f == "min" ? 2 : 1;
     if (a.size() != want)
       fail(f + " takes " + std::to_string(want) + " argument" + (want > 1 ? "s" : ""),
            "write e.g. " + f + (want > 1 ? "(y, x)" : "(x)"), at);
@@ -242,6 +242,10 @@ struct Parser {
     if (f == "exp") return GiNaC::exp(a[0]);
     if (f == "log" || f == "ln") return GiNaC::log(a[0]);
     if (f == "abs") return GiNaC::abs(a[0]);
+    // max(a, b) = (a + b + |a − b|)/2, min(a, b) = (a + b − |a − b|)/2: a force that acts in part
+    // of the motion (a bumper: k*max(x - L, 0)) is integrated piece by piece, split where |·| turns
+    if (f == "max") return (a[0] + a[1] + GiNaC::abs(a[0] - a[1])) / 2;
+    if (f == "min") return (a[0] + a[1] - GiNaC::abs(a[0] - a[1])) / 2;
     if (f == "sinh") return GiNaC::sinh(a[0]);
     if (f == "cosh") return GiNaC::cosh(a[0]);
     return GiNaC::tanh(a[0]);

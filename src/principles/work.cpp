@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <random>
 
 #include "kinergy/common/error.hpp"
@@ -101,6 +102,51 @@ int motion_sign(const Model& m, const Effect& e, std::optional<int> declared, co
 
 Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) { return e.work(m, s1, s2, k); }
 
+/// ∫ Q ds from state s1 to s2 for Q holding |g(s)| with g linear in s: the ends (state values,
+/// expressions of parameters) and the switching points s₀ = −g(0)/g′ between them, ordered by
+/// their values; on each piece |g| = σ g with σ the sign of g at the piece's middle. A closed form
+/// valid at the scene's values. Nothing when an end or a switching point has no value, or g is not
+/// linear.
+static std::optional<ex> piecewise_work(const Model& m, const ex& Q, const symbol& s, int s1, int s2) {
+  const exmap given = m.given_values(), env = m.numeric_environment();
+  ex A = m.bind(ex(s), s1).subs(given), B = m.bind(ex(s), s2).subs(given);
+  auto a = numerics::evaluate(A, env, 40), b = numerics::evaluate(B, env, 40);
+  if (!a || !b) return std::nullopt;
+  std::vector<ex> args;
+  for (auto it = Q.preorder_begin(); it != Q.preorder_end(); ++it)
+    if (is_ex_the_function(*it, abs) && it->op(0).has(s)) args.push_back(it->op(0));
+  // the pieces' ends: (expression, value)
+  std::vector<std::pair<ex, numeric>> cuts = {{A, *a}, {B, *b}};
+  const numeric lo = std::min(*a, *b), hi = std::max(*a, *b);
+  for (auto& g : args) {
+    ex d = g.diff(s);
+    if (d.has(s) || d.is_zero()) return std::nullopt;
+    ex s0 = normal(-g.subs(s == 0) / d);
+    auto v = numerics::evaluate(s0, env, 40);
+    if (!v) return std::nullopt;
+    if (*v > lo && *v < hi) cuts.push_back({s0, *v});
+  }
+  const bool up = *b >= *a;
+  std::sort(cuts.begin(), cuts.end(), [&](auto& x, auto& y) { return up ? x.second < y.second : x.second > y.second; });
+  ex U = 0;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    if (cuts[i].second == cuts[i + 1].second) continue;
+    numeric mid = (cuts[i].second + cuts[i + 1].second) / 2;
+    exmap at = env;
+    at[s] = mid;
+    exmap sign;
+    for (auto& g : args) {
+      auto gv = numerics::evaluate(g, at, 40);
+      if (!gv) return std::nullopt;
+      sign[abs(g)] = gv->is_negative() ? -g : g;
+    }
+    auto F = antiderivative(model::trig_simplify(Q.subs(sign)), s);
+    if (!F) return std::nullopt;
+    U += F->subs(s == cuts[i + 1].first) - F->subs(s == cuts[i].first);
+  }
+  return U;
+}
+
 Work generalized_force_work(const Model& m, const Effect& e, const std::string& what, const std::string& how, int s1,
                             int s2) {
   std::vector<ex> Q;
@@ -134,6 +180,14 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
     ex qj = j == p->s ? ex(s) : m.coords[j].q.subs(p->q_of_s);
     Qs += Q[j].subs(p->q_of_s) * qj.diff(s);
   }
+  // a force written with abs (max, min) of the motion: split the path where each |g(s)| turns
+  // (g(s₀) = 0 between the ends, the switching point) and integrate each piece with |g| = ±g
+  if (Qs.has(abs(wild())))
+    if (auto U = piecewise_work(m, Qs, s, s1, s2)) {
+      w.U = *U;
+      w.how = "U = integral along " + m.coords[p->s].name + ", split where the force switches";
+      return w;
+    }
   auto F = antiderivative(model::trig_simplify(Qs), s);
   if (!F) {
     // no elementary antiderivative: U = ∫ Q ds numerically, where both ends and every parameter
@@ -141,6 +195,11 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
     const exmap given = m.given_values(), vals = m.parameter_values();
     auto a = numerics::evaluate(m.bind(ex(s), s1).subs(given), vals, 60);
     auto b = numerics::evaluate(m.bind(ex(s), s2).subs(given), vals, 60);
+    if ((!a || !b) && Qs.has(abs(wild())))
+      throw SceneError(e.pos, "the force of '" + e.name + "' switches along the path (it has abs, max or min), and " + m.coords[p->s].name +
+                                  " is not known at state '" + m.states[!a ? s1 : s2].name + "', so its work cannot be split where it switches",
+                       "give " + m.coords[p->s].name + " at that state; a bumper or a launcher whose end is unknown is a spring with "
+                       "'acts: compression'");
     if (!a || !b)
       throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name +
                                   ", and its value cannot be taken numerically: " + m.coords[p->s].name + " is not known at state '" +

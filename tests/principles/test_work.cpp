@@ -591,3 +591,42 @@ find:
   REQUIRE(sol.results[0].si);
   CHECK(kt::close(*sol.results[0].si, numeric(4), kt::tol(28)));
 }
+
+TEST_CASE("forces written with abs, max or min: the path split where they switch", "[principles][work][piecewise]") {
+  // a collar on a smooth rod (x) pushed by F; from rest at x1 to x2, by hand:
+  //   F = k*abs(x), x from -1 to 2 (m): U = k (1/2 + 2) = 2.5 k
+  //   F = k*max(x - 1, 0), x from 0 to 3: U = k (3 - 1)^2/2 = 2 k
+  //   F = k*min(x, 1), x from 0 to 3: U = k (1/2 + 2) = 2.5 k  (x up to 1, then 1)
+  //   F = -k*abs(x - 1), x from 3 to 0 (moving back): U = -∫_3^0 k|x - 1| dx = k (2 + 1/2) = 2.5 k
+  struct Case {
+    std::string F, x1, x2;
+    ex U_over_k;
+  };
+  const std::vector<Case> cases = {{"k*abs(x)", "-1 m", "2 m", numeric(5, 2)},
+                                   {"k*max(x - L, 0)", "0", "3 m", 2},
+                                   {"k*min(x, L)", "0", "3 m", numeric(5, 2)},
+                                   {"-k*abs(x - L)", "3 m", "0", numeric(5, 2)}};
+  for (auto& c : cases) {
+    DYNAMIC_SECTION(c.F) {
+      auto m = kt::model_of("title: piecewise\nparameters:\n  m: 1 kg\n  k: 2 N/m\n  L: 1 m\ncoordinates:\n  x: m\nbodies:\n"
+                            "  collar: {mass: m, inertia: particle, position: [x, 0]}\neffects:\n  push: {force: collar, F: [\"" +
+                            c.F + "\", 0]}\nstates:\n  1: {x: " + c.x1 + ", x_dot: 0}\n  2: {x: " + c.x2 + "}\n");
+      Knowledge k(m);
+      auto w = work(m, kt::effect(m, "push"), 0, 1, k);
+      INFO("U = " << w.U << " (" << w.how << ")");
+      ex U = w.U.subs(m.parameter_values()).evalf();
+      CHECK(kt::close(ex_to<numeric>(U).to_double(), ex_to<numeric>((c.U_over_k * 2).evalf()).to_double(), 1e-14));
+      CHECK(w.how.find("split where the force switches") != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("max and min take two arguments", "[principles][work][piecewise][errors]") {
+  auto scene = [](const std::string& F) {
+    return "title: max\nparameters:\n  m: 1 kg\n  k: 2 N/m\ncoordinates:\n  x: m\nbodies:\n"
+           "  collar: {mass: m, inertia: particle, position: [x, 0]}\neffects:\n  push: {force: collar, F: [\"" + F +
+           "\", 0]}\nstates:\n  1: {x: 0, x_dot: 0}\n  2: {x: 1 m}\n";
+  };
+  REQUIRE_THROWS_WITH(kt::model_of(scene("k*max(x)")), Catch::Contains("max takes 2 arguments"));
+  REQUIRE_THROWS_WITH(kt::model_of(scene("k*min(x, 0, 1)")), Catch::Contains("min takes 2 arguments"));
+}
