@@ -32,6 +32,9 @@ struct Result {
   std::optional<GiNaC::numeric> si; ///< value in SI units (when every parameter has a value)
   units::Dimension dim;
   std::string unit;                 ///< display unit
+  /// For an extreme: how it was found (the stationary condition, the second-order check, the ends).
+  std::string extreme_note;
+  GiNaC::ex extreme_of;  ///< the expression made greatest or least (of the parameter)
   GiNaC::ex unit_factor = 1;        ///< SI value / unit_factor = value in the display unit
   /// Value in the display unit with `digits` correct significant digits (working precision
   /// raised until stable). @returns nothing when parameters lack values.

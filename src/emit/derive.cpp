@@ -886,7 +886,7 @@ private:
           what = tidy(f->value.subs(given_).subs(hidden_).subs(given_));
         } catch (const std::exception&) {
         }
-        if (plain(what) != res.name && plain(what) != plain(res.closed)) chain.push_back(Math::of(what));
+        if (plain(what) != res.name && plain(what) != plain(res.closed) && res.extreme_note.empty()) chain.push_back(Math::of(what));
       }
       std::string unit_tex = res.unit == "deg" ? "{}^{\\circ}" : tex_unit(res.unit);
       std::optional<numeric> v;
@@ -912,10 +912,16 @@ private:
                "number to " + std::to_string(o_.digits) + " significant figures")};
     bool numeric_root = false;
     for (auto& res : s_.results) numeric_root = numeric_root || !res.closed_form;
-    if (numeric_root) sp.push_back(W("; a result without closed form comes from a numeric root or a work integral taken numerically"));
+    if (numeric_root) sp.push_back(W("; a result without closed form comes from a numeric root, a work integral taken numerically "
+                                     "or an extreme"));
     sp.push_back(W(":"));
     para(sp);
     rows(r);
+    // an extreme: the expression made greatest or least, its stationary points and the ends
+    for (auto& res : s_.results) {
+      if (res.extreme_note.empty()) continue;
+      para({W("For " + res.name + ", of the parameter: "), M(res.extreme_of), W(" — " + res.extreme_note + ".")});
+    }
   }
 
   // --- checks ---------------------------------------------------------------------------------

@@ -714,6 +714,40 @@ private:
       f.value = bound_expr(fd.value, fd.name);
       f.dim = dim(f.value, fd.value.pos, fd.name);
       if (fd.root) f.root = root_spec(*fd.root);
+      if (fd.extreme) {
+        const auto& [ask, ptext] = *fd.extreme;
+        Find::Extreme x;
+        x.largest = ask == "max" || ask == "at_max";
+        x.location = ask == "at_max" || ask == "at_min";
+        x.pos = ptext.pos;
+        x.p_name = ptext.s;
+        const Parameter* p = m_.parameter(ptext.s);
+        if (!p || p->value || p->unknown)
+          throw SceneError(ptext.pos, "'" + ask + "' runs over a parameter without a value, and '" + ptext.s + "' is " +
+                                          (!p ? "no parameter" : p->value ? "given a value" : "an unknown"),
+                           "declare it as 'NAME: UNIT' under parameters (e.g. 'th: rad'), use it at a state (e.g. '2: {theta: th}'), "
+                           "and name it here");
+        x.p = p->sym;
+        const Node& r = *fd.over_range;
+        if (!r.is_list() || r.items.size() != 2)
+          throw SceneError(r.pos, "'over' is a range [lo, hi]", "write e.g. 'over: [0, 90 deg]'");
+        auto bound = [&](const Node& b) {
+          if (!b.is_scalar()) throw SceneError(b.pos, "a bound of 'over' must be a value", "write e.g. 'over: [0, 90 deg]'");
+          try {
+            units::Quantity q = units::parse_quantity(b.scalar);
+            if (q.has_number) return ex(q.si);
+          } catch (const InputError&) {
+          }
+          return parse(Text{b.scalar, b.pos}, SceneContext::ParamsOnly);
+        };
+        x.lo = bound(r.items[0]);
+        x.hi = bound(r.items[1]);
+        auto lo = value_of(x.lo, r.items[0].pos, "the lower end of 'over'"), hi = value_of(x.hi, r.items[1].pos, "the upper end of 'over'");
+        if (!lo || !hi || !(*lo < *hi))
+          throw SceneError(r.pos, "'over' must be a range [lo, hi] of numbers with lo < hi", "write e.g. 'over: [0, 90 deg]'");
+        if (x.location) f.dim = p->dim;
+        f.extreme = x;
+      }
       if (fd.unit) {
         units::Unit u = read_at(*fd.unit, units::parse_unit);
         if (f.value.is_zero()) f.dim = u.dim;  // an exact 0 has every dimension: take the unit's

@@ -450,7 +450,20 @@ struct Loader {
         f.name = k.scalar;
         f.pos = k.pos;
         if (v.is_map()) {
-          only_keys(v, "find '" + k.scalar + "'", {"value", "root", "unit"});
+          only_keys(v, "find '" + k.scalar + "'", {"value", "root", "unit", "max", "min", "at_max", "at_min", "over"});
+          for (const char* x : {"max", "min", "at_max", "at_min"})
+            if (auto* e = v.get(x)) {
+              if (f.extreme)
+                throw SceneError(e->pos, "find '" + k.scalar + "' asks for two extremes", "ask for one of max, min, at_max, at_min");
+              f.extreme = {x, text(*e, x, std::string(x) + ": theta")};
+            }
+          if (auto* o = v.get("over")) f.over_range = *o;
+          if (f.extreme && !f.over_range)
+            throw SceneError(k.pos, "find '" + k.scalar + "' asks for an extreme without its range",
+                             "add 'over: [lo, hi]', the range of " + f.extreme->second.s + " to look in");
+          if (f.over_range && !f.extreme)
+            throw SceneError(f.over_range->pos, "'over' gives the range of an extreme, and find '" + k.scalar + "' asks for none",
+                             "add 'max: PARAMETER' (or min, at_max, at_min), or remove 'over'");
           auto* val = v.get("value");
           if (!val)
             throw SceneError(k.pos, "find '" + k.scalar + "' has no 'value'",

@@ -100,6 +100,12 @@ std::vector<Leg> legs(const Solution& s) {
         leg.why_not = "state '" + m.states[a.from].name + "' does not fix " + m.coords[i].name +
                       (std::isnan(leg.start.q[i]) ? "" : "_dot");
     leg.stop.impulses = a.instant;
+    // a state placed by a parameter without a value (the variable of an extreme) is no one place
+    for (int st : {a.from, a.to})
+      for (auto& [sym, val] : m.states[st].given)
+        for (auto& p : m.params)
+          if (leg.why_not.empty() && !p.value && !p.unknown && val.has(p.sym))
+            leg.why_not = "state '" + m.states[st].name + "' is placed by '" + p.name + "', which has no value";
     if (!leg.why_not.empty()) {
       out.push_back(leg);
       continue;

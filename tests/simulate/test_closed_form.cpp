@@ -24,7 +24,8 @@ TEST_CASE("every derivation's analyses, simulated at tol 1e-12, agree with the c
         // the motion the equations cannot start (a power drive from rest: P/ω), and an analysis
         // with an effect switched inside it (the analyses on either side of the switch are run)
         INFO(leg.why_not);
-        CHECK_THAT(leg.why_not, Catch::Contains("power drive") || Catch::Contains("is switched inside it"));
+        CHECK_THAT(leg.why_not, Catch::Contains("power drive") || Catch::Contains("is switched inside it") ||
+                                    Catch::Contains("which has no value"));
         ++skipped;
         continue;
       }
@@ -37,7 +38,9 @@ TEST_CASE("every derivation's analyses, simulated at tol 1e-12, agree with the c
     }
   }
   CHECK(legs >= 55);
-  CHECK(skipped <= 2);  // flywheel_power (a power drive from rest), flywheel_motor_then_coast 1 -> 3
+  // flywheel_power (a power drive from rest), flywheel_motor_then_coast 1 -> 3, rod_gravity_power_max
+  // (its state 2 is placed by the extreme's variable)
+  CHECK(skipped <= 3);
 }
 
 TEST_CASE("a leg ends where its state is defined: a turning point by its rate, a place by its position",

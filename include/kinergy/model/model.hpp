@@ -87,6 +87,15 @@ struct Find {
   RootSpec root;
   Dimension dim;
   std::optional<units::Unit> unit;
+  /// The greatest or least value of `value` as the parameter `p` (without a value) runs over
+  /// [lo, hi], or where it is reached (`location`).
+  struct Extreme {
+    bool largest = true, location = false;
+    ex p, lo, hi;
+    std::string p_name;
+    SourcePos pos;
+  };
+  std::optional<Extreme> extreme;
 };
 
 struct Expect {

@@ -88,6 +88,9 @@ struct FindDef {
   Text value;
   std::optional<Node> root;  ///< positive | negative | {in: [lo, hi]}
   std::optional<Text> unit;
+  /// max | min | at_max | at_min over a parameter (its name), within `over_range`
+  std::optional<std::pair<std::string, Text>> extreme;
+  std::optional<Node> over_range;
 };
 
 struct ExpectDef {
