@@ -680,6 +680,18 @@ private:
     return e;
   }
 
+  /// A bound of a range (a root's, an extreme's): a number with its unit, or an expression of
+  /// parameters. `what` and `example` name it in the error.
+  ex range_bound(const Node& b, const std::string& what, const std::string& example) {
+    if (!b.is_scalar()) throw SceneError(b.pos, what + " must be a value", "write e.g. " + example);
+    try {
+      units::Quantity q = units::parse_quantity(b.scalar);
+      if (q.has_number) return ex(q.si);
+    } catch (const InputError&) {
+    }
+    return parse(Text{b.scalar, b.pos}, SceneContext::ParamsOnly);
+  }
+
   RootSpec root_spec(const Node& n) {
     RootSpec r;
     if (n.is_scalar() && n.scalar == "positive") r.kind = RootSpec::Kind::Positive;
@@ -688,15 +700,7 @@ private:
              n.get("in")->items.size() == 2) {
       r.kind = RootSpec::Kind::Interval;
       auto& it = n.get("in")->items;
-      auto bound = [&](const Node& b) {
-        if (!b.is_scalar()) throw SceneError(b.pos, "a root bound must be a value", "write e.g. {in: [0, 2 m]}");
-        try {
-          units::Quantity q = units::parse_quantity(b.scalar);
-          if (q.has_number) return ex(q.si);
-        } catch (const InputError&) {
-        }
-        return parse(Text{b.scalar, b.pos}, SceneContext::ParamsOnly);
-      };
+      auto bound = [&](const Node& b) { return range_bound(b, "a root bound", "{in: [0, 2 m]}"); };
       r.lo = bound(it[0]);
       r.hi = bound(it[1]);
     } else {
@@ -731,15 +735,7 @@ private:
         const Node& r = *fd.over_range;
         if (!r.is_list() || r.items.size() != 2)
           throw SceneError(r.pos, "'over' is a range [lo, hi]", "write e.g. 'over: [0, 90 deg]'");
-        auto bound = [&](const Node& b) {
-          if (!b.is_scalar()) throw SceneError(b.pos, "a bound of 'over' must be a value", "write e.g. 'over: [0, 90 deg]'");
-          try {
-            units::Quantity q = units::parse_quantity(b.scalar);
-            if (q.has_number) return ex(q.si);
-          } catch (const InputError&) {
-          }
-          return parse(Text{b.scalar, b.pos}, SceneContext::ParamsOnly);
-        };
+        auto bound = [&](const Node& b) { return range_bound(b, "a bound of 'over'", "'over: [0, 90 deg]'"); };
         x.lo = bound(r.items[0]);
         x.hi = bound(r.items[1]);
         auto lo = value_of(x.lo, r.items[0].pos, "the lower end of 'over'"), hi = value_of(x.hi, r.items[1].pos, "the upper end of 'over'");

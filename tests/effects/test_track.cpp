@@ -9,22 +9,9 @@
 
 using GiNaC::ex;
 
-namespace {
-
-kinergy::Solution solve_text(const std::string& text) {
-  INFO("scene:\n" << text);
-  return kinergy::solve_scene(kinergy::scene::load_string(text, "test.yaml"));
-}
-
-std::string edit(std::string text, const std::string& from, const std::string& to) {
-  auto i = text.find(from);
-  REQUIRE(i != std::string::npos);
-  return text.replace(i, from.size(), to);
-}
-
-std::string derivation(const std::string& rel) { return kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/" + rel); }
-
-}  // namespace
+using kt::derivation;
+using kt::edit;
+using kt::solve_text;
 
 TEST_CASE("tracks that hold: the sliding rod's slots, the bowl's circle", "[effects][track]") {
   // A = (l cos theta, 0) and B = (0, -l sin theta) for every theta: on y = 0 and x = 0

@@ -9,12 +9,11 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/problem.hpp"
 
-namespace {
+using kt::derivation;
+using kt::edit;
+using kt::solve_text;
 
-kinergy::Solution solve_text(const std::string& text) {
-  INFO("scene:\n" << text);
-  return kinergy::solve_scene(kinergy::scene::load_string(text, "test.yaml"));
-}
+namespace {
 
 // a particle at rest at x = 0; state 2 at x = p (a parameter without a value); the results are
 // expressions of p (the position at state 2)

@@ -14,12 +14,11 @@
 
 using GiNaC::ex;
 
-namespace {
+using kt::derivation;
+using kt::edit;
+using kt::solve_text;
 
-kinergy::Solution solve_text(const std::string& text) {
-  INFO("scene:\n" << text);
-  return kinergy::solve_scene(kinergy::scene::load_string(text, "test.yaml"));
-}
+namespace {
 
 ex P(const kinergy::Solution& s, const std::string& name) { return kt::param(s.model, name); }
 ex closed(const kinergy::Solution& s, const std::string& name) { return kt::result(s, name).closed; }
@@ -56,12 +55,6 @@ find:
   v2: {value: y_dot@2, root: negative}
   T: "force(cord, 1, 2)"
 )Y";
-
-std::string edit(std::string text, const std::string& from, const std::string& to) {
-  auto i = text.find(from);
-  REQUIRE(i != std::string::npos);
-  return text.replace(i, from.size(), to);
-}
 
 }  // namespace
 

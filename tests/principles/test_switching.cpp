@@ -11,12 +11,11 @@
 
 using GiNaC::ex;
 
-namespace {
+using kt::derivation;
+using kt::edit;
+using kt::solve_text;
 
-kinergy::Solution solve_text(const std::string& text) {
-  INFO("scene:\n" << text);
-  return kinergy::solve_scene(kinergy::scene::load_string(text, "test.yaml"));
-}
+namespace {
 
 // a wheel (I = m k^2) on an axle from rest; a couple M switched by ON_OFF, a brake couple Mb
 // switched by BRAKE; states 1 (rest, phi = 0), 2 (phi = a), 3 (phi = a + b); the forms are

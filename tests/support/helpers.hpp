@@ -68,6 +68,23 @@ inline const kinergy::Result& result(const kinergy::Solution& s, const std::stri
   throw std::runtime_error("no result " + name);
 }
 
+/// A scene solved from its text (named test.yaml in messages).
+inline kinergy::Solution solve_text(const std::string& text) {
+  return kinergy::solve_scene(kinergy::scene::load_string(text, "test.yaml"));
+}
+
+/// `text` with the first `from` replaced by `to`. @throws std::runtime_error when `from` is not in it.
+inline std::string edit(std::string text, const std::string& from, const std::string& to) {
+  auto i = text.find(from);
+  if (i == std::string::npos) throw std::runtime_error("edit: '" + from + "' is not in the text");
+  return text.replace(i, from.size(), to);
+}
+
+/// The text of a derivation scene, by its path under derivations/ ("energy/sliding_rod.yaml").
+inline std::string derivation(const std::string& rel) {
+  return read_file(std::filesystem::path(KINERGY_SOURCE_DIR) / "derivations" / rel);
+}
+
 inline kinergy::model::Model model_of(const std::string& yaml) {
   return kinergy::model::Model::build(kinergy::scene::load_string(yaml, "<test>"));
 }
