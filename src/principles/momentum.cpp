@@ -260,7 +260,8 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
         }
       continue;
     }
-    if (!declared && !moves_freely(m, a, [&](int) { return std::array<ex, 3>{nx, ny, 0}; }))
+    const ex along_x = nx, along_y = ny;  // (a lambda may not capture a structured binding in C++20 with clang 14)
+    if (!declared && !moves_freely(m, a, [&](int) { return std::array<ex, 3>{along_x, along_y, 0}; }))
       throw SceneError(a.pos, "the bodies of this momentum analysis (" + set_name(m, a) + ") cannot move freely along " + name +
                                   ": a support the scene does not declare (a track, a surface, an axle) pushes on them along " + name +
                                   " with a force the analysis does not know",
@@ -327,7 +328,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   // a support the scene does not declare must have no moment about P: the set turns freely
   // about P (δr̄ = k × (r̄ − r_P), δφ = 1) while the rest stays put
   if (!supports_declared(m, a, k) &&
-      !moves_freely(m, a, [&](int b) { return std::array<ex, 3>{-(m.bodies[b].y - py), m.bodies[b].x - px, 1}; }))
+      !moves_freely(m, a, [&, Px = px, Py = py](int b) { return std::array<ex, 3>{-(m.bodies[b].y - Py), m.bodies[b].x - Px, 1}; }))
     throw SceneError(a.pos, "the bodies of this angular momentum analysis (" + set_name(m, a) + ") cannot turn freely about " +
                                 a.about.text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
                                 a.about.text + " the analysis does not know",
