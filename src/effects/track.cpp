@@ -137,7 +137,6 @@ public:
 std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
   auto e = make<Track>(ed);
   r.only(ed, {"line", "circle"});
-  const Model& m = r.model();
   e->p = r.point_ref(ed.arg, ed.kind);
   e->arg_pos = ed.arg.pos;
   if (e->p.body < 0)
