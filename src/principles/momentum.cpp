@@ -115,28 +115,15 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field)
   return true;
 }
 
-/// Does a support the coordinates imply (a pin) join the set to the rest, with an unknown reaction?
-bool supports_declared(const Model& m, const Analysis& a, const Knowledge& k) {
-  for (auto& e : m.effects) {
-    std::vector<Push> out;
-    e.pushes(m, a, k, out);
-    for (auto& p : out)
-      if (p.implied) return true;
-  }
-  return false;
-}
-
-/// Does a support the coordinates imply (a pin) push on the set along n with an unknown reaction?
-/// (A constraint's reaction is a force the coordinates do not imply: the set still has to move
-/// freely along n for every other support to do no work.)
-bool reaction_along(const Model& m, const Analysis& a, const Knowledge& k, const ex& nx, const ex& ny) {
-  for (auto& e : m.effects) {
-    std::vector<Push> out;
-    e.pushes(m, a, k, out);
-    for (auto& p : out)
-      if (p.implied && !vanishes(m, p.Rx * nx + p.Ry * ny)) return true;
-  }
-  return false;
+/// The unknown reactions of the supports the coordinates imply (pins, tracks) that join the set to
+/// the rest. (A constraint's reaction is a force the coordinates do not imply: the set still has to
+/// move freely along n for every other support to do no work.)
+std::vector<Push> implied_reactions(const Model& m, const Analysis& a, const Knowledge& k) {
+  std::vector<Push> out, all;
+  for (auto& e : m.effects) e.pushes(m, a, k, all);
+  for (auto& p : all)
+    if (p.implied) out.push_back(p);
+  return out;
 }
 
 /// ∫_{t₁}^{t₂} f(t) dt for f free of the motion.
@@ -228,8 +215,10 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
   std::vector<std::pair<std::string, std::pair<ex, ex>>> dirs;
   if (a.has_along) dirs.push_back({a.along_name, {a.nx, a.ny}});
   else dirs = {{"x", {1, 0}}, {"y", {0, 1}}};
+  const std::vector<Push> implied = implied_reactions(m, a, k);
   for (auto& [name, n] : dirs) {
     auto [nx, ny] = n;
+    const ex along_x = nx, along_y = ny;  // (a lambda may not capture a structured binding in C++20 with clang 14)
     MomentumBalance::Component c;
     c.name = name;
     // L·n = Σ m v̄·n
@@ -238,7 +227,8 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
     L = model::collect_simplify(L, [&] { lst l; for (auto& co : m.coords) l.append(co.qd); return l; }());
     // a declared support across the set (a pin) takes up, with its unknown reaction, what the
     // set's own motion does not; any other support along n is one the scene does not declare
-    const bool declared = reaction_along(m, a, k, nx, ny);
+    const bool declared = std::any_of(implied.begin(), implied.end(),
+                                      [&](const Push& p) { return !vanishes(m, p.Rx * along_x + p.Ry * along_y); });
     if (!declared && vanishes(m, L)) {
       // the coordinates never move these bodies along n: their supports (a floor, a guide, a
       // cord held fixed) take every impulse along n, so the balance says nothing there — and
@@ -260,7 +250,6 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
         }
       continue;
     }
-    const ex along_x = nx, along_y = ny;  // (a lambda may not capture a structured binding in C++20 with clang 14)
     if (!declared && !moves_freely(m, a, [&](int) { return std::array<ex, 3>{along_x, along_y, 0}; }))
       throw SceneError(a.pos, "the bodies of this momentum analysis (" + set_name(m, a) + ") cannot move freely along " + name +
                                   ": a support the scene does not declare (a track, a surface, an axle) pushes on them along " + name +
@@ -327,7 +316,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   auto [px, py] = m.position(a.about);
   // a support the scene does not declare must have no moment about P: the set turns freely
   // about P (δr̄ = k × (r̄ − r_P), δφ = 1) while the rest stays put
-  if (!supports_declared(m, a, k) &&
+  if (implied_reactions(m, a, k).empty() &&
       !moves_freely(m, a, [&, Px = px, Py = py](int b) { return std::array<ex, 3>{-(m.bodies[b].y - Py), m.bodies[b].x - Px, 1}; }))
     throw SceneError(a.pos, "the bodies of this angular momentum analysis (" + set_name(m, a) + ") cannot turn freely about " +
                                 a.about.text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
