@@ -397,11 +397,8 @@ private:
     auto V = [&](const std::string& S) { return Math::notation(tex_at("V", S), text_at("V", S)); };
     std::string U_tex = "U_{" + tex_interval_sub(S1, S2) + "}", U_text = "U" + text_interval_sub(S1, S2);
 
-    // which effects store energy
-    std::vector<std::string> potentials, doers;
-    for (auto& e : m_.effects) {
-      if (!m_.potential_energy(e).is_zero()) potentials.push_back(e.name == e.kind ? e.name : e.name + " (" + e.kind + ")");
-    }
+    // which effects store energy (those whose V the balance holds)
+    const std::vector<std::string>& potentials = b.stored;
     Spans intro;
     if (b.conservative) {
       intro = {W("No non-conservative effect does work between states " + S1 + " and " + S2 + ", so "),
@@ -421,16 +418,6 @@ private:
         set += std::string(i ? (i + 1 == a.bodies.size() ? " and " : ", ") : "") + m_.bodies[a.bodies[i]].name;
       intro.insert(intro.begin(), W("Bodies: " + set + ", isolated from the rest: T is their kinetic energy, and the rest acts on them "
                                     "through the effects that cross the boundary. "));
-      potentials.clear();  // only what acts on the set counts
-      for (auto& e : m_.effects) {
-        bool all_in = true, any = false;
-        for (int bi : e.bodies_acted(m_)) {
-          bool in = std::find(a.bodies.begin(), a.bodies.end(), bi) != a.bodies.end();
-          all_in = all_in && in;
-          any = any || in;
-        }
-        if (any && all_in && !m_.potential_energy(e).is_zero()) potentials.push_back(e.name == e.kind ? e.name : e.name + " (" + e.kind + ")");
-      }
     }
     if (!potentials.empty()) {
       std::string list;

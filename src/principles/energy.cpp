@@ -85,7 +85,9 @@ EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& 
     if (!whole && inside < acted) {
       w = e.work_across(m, a, k);
     } else if (m.conservative(e)) {
-      V += e.potential(m);
+      ex Ve = e.potential(m);
+      V += Ve;
+      if (!Ve.is_zero()) b.stored.push_back(e.name == e.kind ? e.name : e.name + " (" + e.kind + ")");
       continue;
     } else {
       w = work(m, e, a.from, a.to, k);

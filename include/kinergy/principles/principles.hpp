@@ -53,6 +53,7 @@ struct EnergyTerms {
 struct EnergyBalance {
   EnergyTerms at_from, at_to;
   std::vector<Work> works;
+  std::vector<std::string> stored;  ///< the effects whose potential V holds ("name (kind)")
   Equation equation;
   bool conservative = true;  ///< no non-conservative effect did work
 };
