@@ -49,9 +49,6 @@ principles::Work Effect::work(const Model&, int, int, const principles::Knowledg
 }
 
 principles::Work Effect::work_across(const Model& m, const Analysis& a, const principles::Knowledge&) const {
-  std::string inside, outside;
-  for (int b : bodies_acted(m))
-    (principles::in_set(a.bodies, b) ? inside : outside) += std::string(inside.empty() && outside.empty() ? "" : ", ") + m.bodies[b].name;
   std::string all;
   for (int b : bodies_acted(m)) all += (all.empty() ? "" : ", ") + m.bodies[b].name;
   throw SceneError(a.pos, "effect '" + name + "' (" + kind + ") acts on bodies inside this energy analysis' set and outside it; its work on the set alone is not known",

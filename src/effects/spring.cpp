@@ -88,7 +88,7 @@ public:
   principles::Work work(const Model& m, int s1, int s2, const Knowledge& k) const override {
     if (side == 0) return Effect::work(m, s1, s2, k);
     auto [e1, e2] = engagement(m, s1, s2, k);
-    ex V = k_half() * pow(stretch(m), 2);
+    ex V = this->k * pow(stretch(m), 2) / 2;  // (k here is the knowledge: the stiffness is this->k)
     principles::Work w;
     w.effect = name;
     w.U = (e1 ? m.bind(V, s1) : ex(0)) - (e2 ? m.bind(V, s2) : ex(0));
@@ -96,7 +96,6 @@ public:
             (side < 0 ? "compressed" : "stretched") + " (at " + (e1 && e2 ? "both states" : e1 ? "state " + m.states[s1].name : e2 ? "state " + m.states[s2].name : "neither state") + "), else 0";
     return w;
   }
-  ex k_half() const { return k / 2; }
 
   // the states solved as the energy equations took them: engaged where assumed
   void check_state(const Model& m, int s, const GiNaC::exmap& values) const override {
