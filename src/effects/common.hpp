@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <initializer_list>
 #include <memory>
+#include <random>
 #include <vector>
 
 #include "kinergy/common/error.hpp"
@@ -74,6 +75,21 @@ inline std::vector<int> bodies_of(std::initializer_list<int> parties) {
   std::vector<int> out;
   for (int b : parties)
     if (b >= 0 && std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
+  return out;
+}
+
+/// `n` positions drawn at random over the `base` values (each coordinate in [−3, 3], t in [0, 6]),
+/// from `seed`: the same ones on every run. What a declared geometry (a pin, a track) must hold at.
+inline std::vector<GiNaC::exmap> random_positions(const Model& m, const GiNaC::exmap& base, unsigned seed, int n = 5) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-3, 3);
+  std::vector<GiNaC::exmap> out;
+  for (int i = 0; i < n; ++i) {
+    GiNaC::exmap at = base;
+    for (auto& c : m.coords) at[c.q] = GiNaC::numeric(u(rng));
+    at[m.t] = GiNaC::numeric(u(rng) + 3);
+    out.push_back(at);
+  }
   return out;
 }
 

@@ -1,8 +1,6 @@
 // A pin: two points that the coordinates keep together (a support the scene names, so that
 // its reaction can be asked for). It does no work; its reaction is an unknown of a momentum
 // analysis across it, and in an impact the pinned body's momentum change less the other impulses.
-#include <random>
-
 #include "common.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
@@ -88,13 +86,7 @@ void check_pin(const Model& m, const Pin& e, const SourcePos& pos) {
   auto [xb, yb] = m.position(e.b);
   ex dx = model::trig_simplify(xa - xb), dy = model::trig_simplify(ya - yb);
   if (dx.is_zero() && dy.is_zero()) return;
-  GiNaC::exmap vals = m.parameter_values();
-  std::mt19937 rng(12345);
-  std::uniform_real_distribution<double> u(-3, 3);
-  for (int trial = 0; trial < 5; ++trial) {
-    GiNaC::exmap at = vals;
-    for (auto& c : m.coords) at[c.q] = GiNaC::numeric(u(rng));
-    at[m.t] = GiNaC::numeric(u(rng) + 3);
+  for (const GiNaC::exmap& at : random_positions(m, m.parameter_values(), 12345)) {
     ex gx, gy;
     try {
       gx = dx.subs(at).evalf();

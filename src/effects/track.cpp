@@ -7,7 +7,6 @@
 // Checked: the point's distance to the track, d = (r_P − r_0)·n̂ for a line through r_0, or
 // |r_P − c| − R for a circle, vanishes for every value of the coordinates (random samples) when
 // the scene has no constraints, and at every state once the states are solved.
-#include <random>
 
 #include "common.hpp"
 #include "kinergy/numeric/evaluate.hpp"
@@ -98,13 +97,7 @@ public:
   // for every value of the coordinates, when no constraint relates them (else: at the states)
   void check_model(const Model& m) const override {
     if (!m.constraints.empty()) return;
-    GiNaC::exmap vals = m.numeric_environment();
-    std::mt19937 rng(4242);
-    std::uniform_real_distribution<double> u(-3, 3);
-    for (int trial = 0; trial < 5; ++trial) {
-      GiNaC::exmap at = vals;
-      for (auto& c : m.coords) at[c.q] = GiNaC::numeric(u(rng));
-      at[m.t] = GiNaC::numeric(u(rng) + 3);
+    for (GiNaC::exmap& at : random_positions(m, m.numeric_environment(), 4242)) {
       std::string off = off_track(m, at);
       if (off.empty()) continue;
       std::string where;
