@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <cln/real.h>
+#include <cln/rational.h>
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
@@ -312,8 +314,10 @@ private:
   }
 
   std::vector<solve::Branch> solve(const std::vector<principles::Equation>& eqs) const {
-    solve::Problem p{eqs, unknowns, given, env, reference, ranges, {}};
+    solve::Problem p{eqs, unknowns, given, env, reference, ranges, {}, {}};
     for (auto& a : m.analyses) p.impulses.insert(a.unknowns.begin(), a.unknowns.end());
+    for (auto& x : m.params)
+      if (!x.value && !x.unknown) p.stand_ins.insert(x.sym);
     try {
       return solve::solve(p);
     } catch (const solve::SolveError& e) {
@@ -449,6 +453,217 @@ private:
     r.closed_form = false;
   }
 
+  /// The least (greatest) value of f's parameter p for which its state S is reached: the
+  /// kinetic energy K = T@S from the solution must be ≥ 0 at S, and — when a parameter `along`
+  /// places S — at every position of the path, along ∈ [lo, hi]:
+  ///   g(p) = min over the path of K(along, p) ≥ 0.
+  /// The admissible p are found on a scan p = 2^k (SI, k = −20…40) and their bound refined: by
+  /// bisection on g, then on h(p) = K at the binding position (an end of the path, or the
+  /// stationary point ∂K/∂along = 0 inside it) to 45 digits. Where the binding position is exact
+  /// (an end) and K is a polynomial of degree ≤ 2 in p, the bound is also solved in closed form
+  /// and must agree with the number.
+  void reach(const model::Find& f, Result& r) const {
+    const auto& x = *f.reach;
+    const int digits = 45;
+    const std::string S = m.states[x.state].name;
+    const std::string what = x.least ? "least" : "greatest";
+    ex K = r.closed;
+    if (!K.has(x.p))
+      throw SceneError(x.pos, "the kinetic energy at state '" + S + "' does not depend on '" + x.p_name + "' (" + model::text(K) + ")",
+                       "name the parameter that sets the motion toward state '" + S + "' (a speed or position at an earlier state)");
+    for (auto& q : m.params)
+      if (!q.value && !q.unknown && K.has(q.sym) && !q.sym.is_equal(x.p) && !(x.along && q.sym.is_equal(*x.along)))
+        throw SceneError(q.pos, "parameter '" + q.name + "' has no value, but the " + what + " value of '" + x.p_name + "' needs numbers",
+                         "give '" + q.name + "' a value with its unit" +
+                             (x.along ? std::string() : ", or name it with 'along:' if it places state '" + S + "' on the path"));
+    auto two_to = [](int k) { return ex_to<numeric>(pow(numeric(2), k)); };
+    exmap at = env;
+    auto K_at = [&](const ex& e, const numeric& s, const numeric& p) -> std::optional<numeric> {
+      at[x.p] = p;
+      if (x.along) at[*x.along] = s;
+      auto v = numerics::evaluate(e, at, digits);
+      if (v && !v->is_real()) return std::nullopt;
+      return v;
+    };
+    numeric lo = 0, hi = 0;
+    if (x.along) {
+      lo = *numerics::evaluate(x.lo, env, digits);
+      hi = *numerics::evaluate(x.hi, env, digits);
+    }
+    // the lowest kinetic energy over the path, on a grid of n intervals
+    struct Low {
+      numeric K, s;
+      int i = 0;  // grid index (0 or n: an end)
+    };
+    auto lowest = [&](const numeric& p, int n) -> std::optional<Low> {
+      std::optional<Low> best;
+      for (int i = 0; i <= (x.along ? n : 0); ++i) {
+        numeric s = lo + (hi - lo) * numeric(i, n);
+        if (auto v = K_at(K, s, p); v && (!best || *v < best->K)) best = Low{*v, s, i};
+      }
+      return best;
+    };
+    auto admissible = [&](const numeric& p, int n) {
+      auto l = lowest(p, n);
+      return l && !l->K.is_negative();
+    };
+    // scan: the admissible p form [p*, ∞) for a least value, (0, p*] for a greatest
+    const int k0 = -20, k1 = 40;
+    std::optional<int> edge;  // first admissible k (least) / last admissible k (greatest)
+    bool first_ok = false, any = false;
+    for (int k = k0; k <= k1; ++k) {
+      bool ok = admissible(two_to(k), 100);
+      if (k == k0) first_ok = ok;
+      any = any || ok;
+      if (x.least && ok && !edge) edge = k;
+      if (!x.least && ok) edge = k;
+      if (!x.least && !ok && edge) break;
+    }
+    std::string path = x.along ? " at every position of the path (" + x.along_name + " from " + numerics::format(lo, 6) + " to " +
+                                     numerics::format(hi, 6) + ")"
+                               : "";
+    if (!any)
+      throw SceneError(x.pos, "state '" + S + "' is not reached for any value of '" + x.p_name + "' from 2^" + std::to_string(k0) +
+                                  " to 2^" + std::to_string(k1) + " (SI): the kinetic energy there stays negative" + path,
+                       "check the states and the effects: the motion toward state '" + S + "' cannot get there");
+    if ((x.least && *edge == k0) || (!x.least && *edge == k1))
+      throw SceneError(x.pos, "state '" + S + "' is reached for every value of '" + x.p_name + "' " +
+                                  (x.least ? "down to 2^" + std::to_string(k0) : "up to 2^" + std::to_string(k1)) +
+                                  " (SI): there is no " + what + " value to find",
+                       "check 'reaches' and the states: the kinetic energy at state '" + S + "' should fall to zero as '" + x.p_name +
+                           "' " + (x.least ? "decreases" : "increases"));
+    (void)first_ok;
+    // the bracket: a (not admissible), b (admissible)
+    numeric a = two_to(x.least ? *edge - 1 : *edge + 1), b = two_to(*edge);
+    for (int it = 0; it < 24; ++it) {
+      numeric c = (a + b) / 2;
+      (admissible(c, 100) ? b : a) = c;
+    }
+    // the binding position at b, and h(p) = K there
+    std::optional<Low> bind = lowest(b, 400);
+    std::optional<numeric> s_star;  // interior stationary point, refined per p
+    auto stationary = [&](const numeric& p, numeric s0, numeric s1) -> std::optional<numeric> {
+      ex dK = K.diff(ex_to<symbol>(*x.along));
+      auto d0 = K_at(dK, s0, p);
+      if (!d0) return std::nullopt;
+      for (int it = 0; it < 160; ++it) {
+        numeric c = (s0 + s1) / 2;
+        auto dc = K_at(dK, c, p);
+        if (!dc) return std::nullopt;
+        if (dc->is_zero()) return c;
+        if (dc->is_negative() == d0->is_negative()) {
+          s0 = c;
+          d0 = dc;
+        } else {
+          s1 = c;
+        }
+      }
+      return (s0 + s1) / 2;
+    };
+    const int n = 400;
+    const bool at_end = !x.along || bind->i == 0 || bind->i == n;
+    numeric step = (hi - lo) / n;
+    auto h = [&](const numeric& p) -> std::optional<numeric> {
+      if (at_end) return K_at(K, bind->s, p);
+      s_star = stationary(p, bind->s - step, bind->s + step);
+      if (!s_star) return std::nullopt;
+      return K_at(K, *s_star, p);
+    };
+    // Illinois (regula falsi) on h over [a, b], kept by bisection where it stalls
+    // the grid's least value lies above the true one: move the ends apart until h brackets zero
+    auto ha = h(a), hb = h(b);
+    for (numeric grow = numeric(1, 1000000); grow < 1 && hb && hb->is_negative(); grow *= 4) {
+      b = x.least ? b * (1 + grow) : b / (1 + grow);
+      hb = h(b);
+    }
+    for (numeric grow = numeric(1, 1000000); grow < 1 && ha && !ha->is_negative(); grow *= 4) {
+      a = x.least ? a / (1 + grow) : a * (1 + grow);
+      ha = h(a);
+    }
+    if (!ha || !hb || !ha->is_negative() || hb->is_negative())
+      throw SceneError(x.pos, "the " + what + " value of '" + x.p_name + "' for which state '" + S + "' is reached could not be isolated" + path,
+                       "give 'over' a narrower range of the path, or check the states");
+    numeric tol = abs(b) * ex_to<numeric>(pow(numeric(10), -digits));
+    int side = 0;
+    for (int it = 0; it < 300 && abs(b - a) > tol; ++it) {
+      numeric c = b - *hb * (b - a) / (*hb - *ha);
+      if (!(c > std::min(a, b) && c < std::max(a, b)) || it % 8 == 7) c = (a + b) / 2;
+      auto hc = h(c);
+      if (!hc) break;
+      if (hc->is_negative()) {
+        a = c;
+        ha = hc;
+        if (side == -1) hb = *hb / 2;
+        side = -1;
+      } else {
+        b = c;
+        hb = hc;
+        if (side == 1) ha = *ha / 2;
+        side = 1;
+      }
+    }
+    numeric p_star = b;
+    numeric s_bind = at_end ? bind->s : (s_star ? *s_star : bind->s);
+    // the binding position exactly: an end, or a stationary point that is a simple rational (or
+    // rational multiple of π, denominator ≤ 360) at which ∂K/∂along vanishes to 40 digits
+    std::optional<ex> exact_s;
+    if (x.along && at_end) exact_s = bind->i == 0 ? x.lo : x.hi;
+    if (x.along && !at_end) {
+      ex dK = K.diff(ex_to<symbol>(*x.along));
+      numeric scale = abs(*K_at(K.diff(ex_to<symbol>(x.p)), s_bind, p_star)) + 1;
+      for (const ex& unit : {ex(1), ex(Pi)})
+        for (int den = 1; den <= 360 && !exact_s; ++den) {
+          numeric u = *numerics::evaluate(unit, env, digits);
+          numeric k(cln::round1(cln::the<cln::cl_R>(ex_to<numeric>(s_bind * den / u).to_cl_N())));
+          ex cand = unit * k / den;
+          auto c = numerics::evaluate(cand, env, digits);
+          auto d = c ? K_at(dK, *c, p_star) : std::nullopt;
+          if (d && abs(*c - s_bind) < ex_to<numeric>(pow(numeric(10), -30)) * (abs(s_bind) + 1) &&
+              abs(*d) < scale * ex_to<numeric>(pow(numeric(10), -40)))
+            exact_s = cand;
+        }
+    }
+    // the closed form, where the binding position is exact: K(s, p) = 0 of degree ≤ 2 in p
+    std::optional<ex> closed;
+    if (!x.along || exact_s) {
+      ex e = K;
+      if (x.along) e = e.subs(*x.along == *exact_s);
+      e = model::tidy(e);
+      ex num_e = e.normal().numer();
+      if (num_e.is_polynomial(x.p) && num_e.degree(x.p) >= 1 && num_e.degree(x.p) <= 2) {
+        ex p2 = num_e.coeff(x.p, 2), p1 = num_e.coeff(x.p, 1), p0 = num_e.coeff(x.p, 0);
+        std::vector<ex> roots;
+        if (p2.is_zero()) {
+          roots.push_back(-p0 / p1);
+        } else if (p1.is_zero()) {
+          roots.push_back(sqrt(-p0 / p2));
+        } else {
+          ex d = sqrt(p1 * p1 - 4 * p2 * p0);
+          roots = {(-p1 + d) / (2 * p2), (-p1 - d) / (2 * p2)};
+        }
+        for (auto& c : roots) {
+          ex t = model::factored(model::root_simplify(model::tidy(c), [this](const ex& y) { return m.fixed_sign(y); }));
+          auto v = numerics::evaluate(t, env, digits);
+          if (v && v->is_real() && abs(*v - p_star) <= abs(p_star) * ex_to<numeric>(pow(numeric(10), -30))) {
+            closed = t;
+            break;
+          }
+        }
+      }
+    }
+    std::ostringstream note;
+    note << "it is " << (x.along ? "least over the path" : "taken at the state itself");
+    if (x.along)
+      note << " at " << x.along_name << " = " << numerics::format(s_bind, 8) << (at_end ? " (an end of the path)" : " (where its derivative along the path is zero)");
+    note << ", and zero there for " << x.p_name << " = " << numerics::format(p_star, 8) << "; state " << S << " is reached" << path
+         << " for " << x.p_name << (x.least ? " at least " : " at most ") << numerics::format(p_star, 8);
+    r.extreme_note = note.str();
+    r.extreme_of = K;
+    r.extreme_what = "the kinetic energy at state " + S + " as a function of " + x.p_name + (x.along ? " and " + x.along_name : "");
+    r.closed = closed ? *closed : ex(p_star);
+    r.closed_form = closed.has_value();
+  }
+
   /// A motion runs forward in time: a solved duration t₂ − t₁ < 0 would put the second state
   /// before the first (a motor weaker than the friction it must overcome, say).
   void forward_in_time(const model::Analysis& a) const {
@@ -513,6 +728,7 @@ private:
   r.closed = model::factored(model::root_simplify(model::tidy(model::tidy_function_arguments(c)),
                                                   [this](const ex& x) { return m.fixed_sign(x); }));
   if (f.extreme) extreme(f, r);
+  if (f.reach) reach(f, r);
   if (f.unit) {
     r.unit = f.unit->text;
     r.unit_factor = f.unit->factor;

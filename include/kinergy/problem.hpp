@@ -35,6 +35,7 @@ struct Result {
   /// For an extreme: how it was found (the stationary condition, the second-order check, the ends).
   std::string extreme_note;
   GiNaC::ex extreme_of;  ///< the expression made greatest or least (of the parameter)
+  std::string extreme_what = "of the parameter";  ///< what extreme_of is, for the derivation
   GiNaC::ex unit_factor = 1;        ///< SI value / unit_factor = value in the display unit
   /// Value in the display unit with `digits` correct significant digits (working precision
   /// raised until stable). @returns nothing when parameters lack values.

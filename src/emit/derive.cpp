@@ -907,7 +907,7 @@ private:
     // an extreme: the expression made greatest or least, its stationary points and the ends
     for (auto& res : s_.results) {
       if (res.extreme_note.empty()) continue;
-      para({W("For " + res.name + ", of the parameter: "), M(res.extreme_of), W(" — " + res.extreme_note + ".")});
+      para({W("For " + res.name + ", " + res.extreme_what + ": "), M(res.extreme_of), W(" — " + res.extreme_note + ".")});
     }
   }
 

@@ -710,13 +710,67 @@ private:
     return r;
   }
 
+  /// A parameter without a value, named by `key` (a range runs over it, a bound is found for it).
+  const Parameter& free_parameter(const Text& name, const std::string& key, const std::string& use, const std::string& verb = "runs over") {
+    const Parameter* p = m_.parameter(name.s);
+    if (!p || p->value || p->unknown)
+      throw SceneError(name.pos, "'" + key + "' " + verb + " a parameter without a value, and '" + name.s + "' is " +
+                                     (!p ? "no parameter" : p->value ? "given a value" : "an unknown"),
+                       "declare it as 'NAME: UNIT' under parameters (e.g. '" + use + "'), use it at a state, and name it here");
+    return *p;
+  }
+
+  /// [lo, hi] of numbers (or of parameters with values), lo < hi.
+  std::pair<ex, ex> range_of(const Node& r, const std::string& key) {
+    if (!r.is_list() || r.items.size() != 2)
+      throw SceneError(r.pos, "'" + key + "' is a range [lo, hi]", "write e.g. '" + key + ": [0, 90 deg]'");
+    auto bound = [&](const Node& b) { return range_bound(b, "a bound of '" + key + "'", "'" + key + ": [0, 90 deg]'"); };
+    std::pair<ex, ex> x{bound(r.items[0]), bound(r.items[1])};
+    auto lo = value_of(x.first, r.items[0].pos, "the lower end of '" + key + "'"),
+         hi = value_of(x.second, r.items[1].pos, "the upper end of '" + key + "'");
+    if (!lo || !hi || !(*lo < *hi))
+      throw SceneError(r.pos, "'" + key + "' must be a range [lo, hi] of numbers with lo < hi", "write e.g. '" + key + ": [0, 90 deg]'");
+    return x;
+  }
+
+  /// `least|greatest: p, reaches: S [, along: th, over: [lo, hi]]`: the value is the kinetic energy
+  /// at S, T@S; the result has p's dimension.
+  void reach(const scene::FindDef& fd, Find& f) {
+    const auto& [ask, ptext] = *fd.reach;
+    Find::Reach x;
+    x.least = ask == "least";
+    x.pos = ptext.pos;
+    x.p_name = ptext.s;
+    const Parameter& p = free_parameter(ptext, ask, "v0: m/s", "asks for the value of");
+    x.p = p.sym;
+    x.state = m_.state_index(fd.reaches->s);
+    if (x.state < 0)
+      throw SceneError(fd.reaches->pos, "'reaches' names state '" + fd.reaches->s + "', which the scene does not have",
+                       "name one of the states under 'states'");
+    f.value = bound_expr(Text{"T@" + fd.reaches->s, fd.reaches->pos}, fd.name);
+    f.dim = p.dim;
+    if (fd.along) {
+      const Parameter& a = free_parameter(*fd.along, "along", "th: rad");
+      if (a.sym.is_equal(p.sym))
+        throw SceneError(fd.along->pos, "'along' names the parameter whose " + ask + " value is asked", "name the parameter that places state '" + fd.reaches->s + "'");
+      x.along = a.sym;
+      x.along_name = a.name;
+      std::tie(x.lo, x.hi) = range_of(*fd.over_range, "over");
+    }
+    f.reach = x;
+  }
+
   void finds() {
     for (auto& fd : d_.finds) {
       Find f;
       f.name = fd.name;
       f.pos = fd.pos;
-      f.value = bound_expr(fd.value, fd.name);
-      f.dim = dim(f.value, fd.value.pos, fd.name);
+      if (fd.reach) {
+        reach(fd, f);
+      } else {
+        f.value = bound_expr(fd.value, fd.name);
+        f.dim = dim(f.value, fd.value.pos, fd.name);
+      }
       if (fd.root) f.root = root_spec(*fd.root);
       if (fd.extreme) {
         const auto& [ask, ptext] = *fd.extreme;
@@ -725,23 +779,10 @@ private:
         x.location = ask == "at_max" || ask == "at_min";
         x.pos = ptext.pos;
         x.p_name = ptext.s;
-        const Parameter* p = m_.parameter(ptext.s);
-        if (!p || p->value || p->unknown)
-          throw SceneError(ptext.pos, "'" + ask + "' runs over a parameter without a value, and '" + ptext.s + "' is " +
-                                          (!p ? "no parameter" : p->value ? "given a value" : "an unknown"),
-                           "declare it as 'NAME: UNIT' under parameters (e.g. 'th: rad'), use it at a state (e.g. '2: {theta: th}'), "
-                           "and name it here");
-        x.p = p->sym;
-        const Node& r = *fd.over_range;
-        if (!r.is_list() || r.items.size() != 2)
-          throw SceneError(r.pos, "'over' is a range [lo, hi]", "write e.g. 'over: [0, 90 deg]'");
-        auto bound = [&](const Node& b) { return range_bound(b, "a bound of 'over'", "'over: [0, 90 deg]'"); };
-        x.lo = bound(r.items[0]);
-        x.hi = bound(r.items[1]);
-        auto lo = value_of(x.lo, r.items[0].pos, "the lower end of 'over'"), hi = value_of(x.hi, r.items[1].pos, "the upper end of 'over'");
-        if (!lo || !hi || !(*lo < *hi))
-          throw SceneError(r.pos, "'over' must be a range [lo, hi] of numbers with lo < hi", "write e.g. 'over: [0, 90 deg]'");
-        if (x.location) f.dim = p->dim;
+        const Parameter& p = free_parameter(ptext, ask, "th: rad");
+        x.p = p.sym;
+        std::tie(x.lo, x.hi) = range_of(*fd.over_range, "over");
+        if (x.location) f.dim = p.dim;
         f.extreme = x;
       }
       if (fd.unit) {

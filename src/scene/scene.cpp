@@ -275,6 +275,48 @@ struct Loader {
     return d;
   }
 
+  /// `NAME: {least|greatest: p, reaches: S, along: th, over: [lo, hi], unit: U}`: the least
+  /// (greatest) value of the parameter p for which state S is reached. @returns false when v asks
+  /// for none of this (an ordinary result or an extreme).
+  bool read_reach(const Node& k, const Node& v, FindDef& f) const {
+    const Node* ask = v.get("least");
+    const Node* other = v.get("greatest");
+    if (ask && other)
+      throw SceneError(other->pos, "find '" + k.scalar + "' asks for both the least and the greatest value", "ask for one of them");
+    std::string which = ask ? "least" : "greatest";
+    if (!ask) ask = other;
+    const Node* reaches = v.get("reaches");
+    if (!ask) {
+      if (reaches) throw SceneError(reaches->pos, "'reaches' names the state of a least or greatest parameter value, and find '" + k.scalar + "' asks for none",
+                                    "add 'least: PARAMETER' (or greatest), or remove 'reaches'");
+      if (auto* a = v.get("along")) throw SceneError(a->pos, "'along' belongs with 'least' or 'greatest' and 'reaches'", "remove 'along'");
+      return false;
+    }
+    for (const char* x : {"value", "root", "max", "min", "at_max", "at_min"})
+      if (auto* e = v.get(x))
+        throw SceneError(e->pos, "find '" + k.scalar + "' asks for the " + which + " value of a parameter, which has no '" + x + "'",
+                         "remove '" + std::string(x) + "': the value found is the parameter's, from the kinetic energy at the state named by 'reaches'");
+    if (!reaches)
+      throw SceneError(k.pos, "find '" + k.scalar + "' asks for the " + which + " value of a parameter without the state to reach",
+                       "add 'reaches: S', the state that must be reached");
+    f.reach = {which, text(*ask, which, which + ": v0")};
+    f.reaches = text(*reaches, "reaches", "reaches: 2");
+    f.value = *f.reaches;
+    auto* along = v.get("along");
+    auto* over = v.get("over");
+    if (along && !over)
+      throw SceneError(along->pos, "'along' needs the range of the path: 'over: [lo, hi]'", "add e.g. 'over: [0, 180 deg]'");
+    if (over && !along)
+      throw SceneError(over->pos, "'over' gives the range of the parameter named by 'along', and find '" + k.scalar + "' has none",
+                       "add 'along: PARAMETER' (the parameter that places the state), or remove 'over'");
+    if (along) {
+      f.along = text(*along, "along", "along: th");
+      f.over_range = *over;
+    }
+    if (auto* u = v.get("unit")) f.unit = text(*u, "unit", "unit: m/s");
+    return true;
+  }
+
   SceneDef load(const YAML::Node& root) const {
     SceneDef s;
     s.file = file;
@@ -450,7 +492,12 @@ struct Loader {
         f.name = k.scalar;
         f.pos = k.pos;
         if (v.is_map()) {
-          only_keys(v, "find '" + k.scalar + "'", {"value", "root", "unit", "max", "min", "at_max", "at_min", "over"});
+          only_keys(v, "find '" + k.scalar + "'",
+                    {"value", "root", "unit", "max", "min", "at_max", "at_min", "over", "least", "greatest", "reaches", "along"});
+          if (read_reach(k, v, f)) {
+            s.finds.push_back(std::move(f));
+            continue;
+          }
           for (const char* x : {"max", "min", "at_max", "at_min"})
             if (auto* e = v.get(x)) {
               if (f.extreme)

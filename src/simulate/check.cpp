@@ -95,17 +95,18 @@ std::vector<Leg> legs(const Solution& s) {
     leg.to = a.to;
     leg.start = state_values(m, k, a.from);
     leg.expect = state_values(m, k, a.to);
-    for (std::size_t i = 0; i < m.coords.size(); ++i)
-      if (std::isnan(leg.start.q[i]) || std::isnan(leg.start.qd[i]))
-        leg.why_not = "state '" + m.states[a.from].name + "' does not fix " + m.coords[i].name +
-                      (std::isnan(leg.start.q[i]) ? "" : "_dot");
     leg.stop.impulses = a.instant;
-    // a state placed by a parameter without a value (the variable of an extreme) is no one place
+    // a state given by a parameter without a value (the variable of an extreme, the speed whose
+    // least value is asked) is no one motion
     for (int st : {a.from, a.to})
       for (auto& [sym, val] : m.states[st].given)
         for (auto& p : m.params)
           if (leg.why_not.empty() && !p.value && !p.unknown && val.has(p.sym))
-            leg.why_not = "state '" + m.states[st].name + "' is placed by '" + p.name + "', which has no value";
+            leg.why_not = "state '" + m.states[st].name + "' depends on '" + p.name + "', which has no value";
+    for (std::size_t i = 0; i < m.coords.size(); ++i)
+      if (leg.why_not.empty() && (std::isnan(leg.start.q[i]) || std::isnan(leg.start.qd[i])))
+        leg.why_not = "state '" + m.states[a.from].name + "' does not fix " + m.coords[i].name +
+                      (std::isnan(leg.start.q[i]) ? "" : "_dot");
     if (!leg.why_not.empty()) {
       out.push_back(leg);
       continue;

@@ -72,6 +72,13 @@ public:
 
 private:
   const Problem& p_;
+
+  /// Whether e's value is fixed by the given values (no stand-in for a parameter without one).
+  bool decided(const ex& e) const {
+    for (auto& s : p_.stand_ins)
+      if (e.has(s)) return false;
+    return true;
+  }
   std::vector<State> work_;
   std::vector<Branch> done_;
 
@@ -271,7 +278,7 @@ private:
       if (b.is_zero() || numerically_zero(b, p_.env, known)) {
         ex sq = model::tidy(-c) / model::tidy(a);  // u = ±√(−c/a), numerator and denominator tidied apart
         if (model::ex_size(sq) < 600) sq = model::tidy(sq);
-        auto v = num(sq, p_.env);
+        auto v = decided(sq) ? num(sq, p_.env) : std::nullopt;
         if (v && v->is_negative() && p_.impulses.count(u))
           // an impulse stands for the velocity it is tied to (v⁺ − v⁻ = J/m): say it of the motion
           throw SolveError("the " + q.label + " has no real solution: the motion cannot reach that state with these values "
@@ -287,7 +294,7 @@ private:
         return;
       }
       ex disc = model::tidy(b * b - 4 * a * c);
-      auto v = num(disc, p_.env);
+      auto v = decided(disc) ? num(disc, p_.env) : std::nullopt;
       if (v && v->is_negative())
         throw SolveError("the " + q.label + " has no real solution for " + model::text(u),
                          "the state cannot be reached with these values; check the states and parameters", q.pos);

@@ -319,13 +319,19 @@ Quantity parse_quantity(const std::string& text) {
   std::string rest = text.substr(i);
   bool blank = rest.find_first_not_of(' ') == std::string::npos;
   if (blank) {
-    if (q.unknown) throw InputError("'unknown' needs a unit", "write e.g. 'unknown N/m'");
+    if (q.unknown) throw InputError("'unknown' needs a unit", "write e.g. 'unknown N/m' (or 'unknown number' for a pure number)");
     if (q.has_number) {
       q.unit.text = "";
       q.si = q.number;
       return q;  // dimensionless number
     }
     throw InputError("empty quantity", "write a number and a unit, e.g. '5 kg'");
+  }
+  // `number`: a pure number without a value (`mu_k: number`), or an unknown one (`unknown number`)
+  if (!q.has_number && rest.find_first_not_of(' ') == rest.find("number") &&
+      rest.find_first_not_of(' ', rest.find("number") + 6) == std::string::npos) {
+    q.unit.text = "";
+    return q;
   }
   try {
     q.unit = parse_unit(rest);

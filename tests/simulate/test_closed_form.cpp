@@ -39,8 +39,9 @@ TEST_CASE("every derivation's analyses, simulated at tol 1e-12, agree with the c
   }
   CHECK(legs >= 55);
   // flywheel_power (a power drive from rest), flywheel_motor_then_coast 1 -> 3, rod_gravity_power_max
-  // (its state 2 is placed by the extreme's variable)
-  CHECK(skipped <= 3);
+  // (its state 2 is placed by the extreme's variable), collar_spring_least_speed and
+  // rod_full_revolution_least_speed (the speed at 1 is the parameter whose least value is asked)
+  CHECK(skipped <= 5);
 }
 
 TEST_CASE("a leg ends where its state is defined: a turning point by its rate, a place by its position",

@@ -96,6 +96,20 @@ struct Find {
     SourcePos pos;
   };
   std::optional<Extreme> extreme;
+  /// The least (greatest) value of the parameter p for which state `state` is reached: the
+  /// kinetic energy there (`value` is T@state) stays ≥ 0 — at every position of the path when a
+  /// parameter `along` places the state, over [lo, hi].
+  struct Reach {
+    bool least = true;
+    ex p;
+    std::string p_name;
+    int state = 0;
+    std::optional<ex> along;
+    std::string along_name;
+    ex lo, hi;
+    SourcePos pos;
+  };
+  std::optional<Reach> reach;
 };
 
 struct Expect {

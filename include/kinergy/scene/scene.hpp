@@ -91,6 +91,10 @@ struct FindDef {
   /// max | min | at_max | at_min over a parameter (its name), within `over_range`
   std::optional<std::pair<std::string, Text>> extreme;
   std::optional<Node> over_range;
+  /// least | greatest → a parameter (its name): its bound for which state `reaches` is reached,
+  /// checked at every position `along` a parameter placing that state (within `over_range`)
+  std::optional<std::pair<std::string, Text>> reach;
+  std::optional<Text> reaches, along;
 };
 
 struct ExpectDef {

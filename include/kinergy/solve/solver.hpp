@@ -41,6 +41,10 @@ struct Problem {
   /// one of them is solved for it first, so that what remains is in the states' values (a state
   /// that cannot be reached is then told by its velocity, not by an impulse).
   std::set<ex, GiNaC::ex_is_less> impulses;
+  /// Parameters without a value: env holds a stand-in for them, good for choosing a branch but
+  /// not for refusing one (a state unreachable at the stand-in may be reachable at the value the
+  /// result asks for, as in "the least speed for which the state is reached").
+  std::set<ex, GiNaC::ex_is_less> stand_ins;
 };
 
 /// One consistent solution.
