@@ -198,7 +198,8 @@ namespace {
 /// one determines is known to the next), the solver, the choice among its branches, the results.
 class SceneSolver {
 public:
-  explicit SceneSolver(Solution& sol) : sol_(sol), m(sol.model), env(m.numeric_environment()), given(m.given_values()) {}
+  SceneSolver(Solution& sol, int fewer_switches)
+      : sol_(sol), m(sol.model), env(m.numeric_environment()), given(m.given_values()), fewer_switches_(fewer_switches) {}
 
   void run() {
     knowledge();
@@ -225,6 +226,7 @@ private:
   exmap reference;  ///< a coordinate's value at another state, for numeric root searches
   std::map<ex, std::pair<ex, ex>, ex_is_less> ranges;  ///< root ranges of results that are one unknown
   std::set<int> states_in;
+  int fewer_switches_ = 0;  ///< see principles::Knowledge::fewer_switches
 
   // the constraints evaluated at the values given may be undefined there (x/tan(theta), theta = pi/2)
   static SceneError undefined(const SourcePos& pos, const std::string& what, const std::exception& err) {
@@ -235,6 +237,7 @@ private:
   void knowledge() {
     try {
       know_.emplace(m);
+      know_->fewer_switches = fewer_switches_;
     } catch (const std::exception& err) {
       throw undefined(m.constraints.empty() ? SourcePos{m.file, 1, 1} : m.constraints.front().second, "a constraint", err);
     }
@@ -361,6 +364,16 @@ private:
       }
     for (auto& e : m.effects)
       for (std::size_t s = 0; s < m.states.size(); ++s) e.check_state(m, static_cast<int>(s), values);
+    // what the energy equations took for granted (a switching force passed): e ≥ 0
+    for (auto& bal : sol_.balances)
+      for (auto& w : bal.works)
+        for (auto& c : w.holds) {
+          auto v = numerics::evaluate(c.e.subs(given).subs(b.sol), env, 30);
+          if (!v || !v->is_negative()) continue;
+          std::string what = c.what;
+          what.replace(what.find("{}"), 2, numerics::format(-*v, 6));
+          throw SceneError(c.pos, what, c.fix);
+        }
   }
 
   /// The greatest or least value of r.closed as f's parameter p runs over [lo, hi] (or where it
@@ -764,9 +777,23 @@ private:
 }  // namespace
 
 Solution solve_scene(const scene::SceneDef& def) {
-  Solution sol{Model::build(def), {}, {}, {}, {}, {}, {}, {}};
-  SceneSolver(sol).run();
-  return sol;
+  const Model base = Model::build(def);
+  // a force that switches on the way to a state whose position is unknown: the case taken
+  // first is past every switching point; while it has no solution, one switching point fewer
+  std::optional<SceneError> first;
+  for (int fewer = 0;; ++fewer) {
+    Solution sol{base, {}, {}, {}, {}, {}, {}, {}};
+    try {
+      SceneSolver(sol, fewer).run();
+      return sol;
+    } catch (const SceneError& e) {
+      if (!first) first = e;
+      int cases = 1;
+      for (auto& bal : sol.balances)
+        for (auto& w : bal.works) cases = std::max(cases, w.switch_cases);
+      if (fewer + 1 >= cases) throw *first;
+    }
+  }
 }
 
 Solution solve_file(const std::string& path) { return solve_scene(scene::load_file(path)); }

@@ -14,8 +14,8 @@ public:
 
   ex power(const Model& m) const override { return M * m.omega(body); }  // P = M ω
 
-  principles::Work work(const Model& m, int s1, int s2, const Knowledge&) const override {
-    return principles::generalized_force_work(m, *this, "couple", "U = integral of M dphi", s1, s2);
+  principles::Work work(const Model& m, int s1, int s2, const Knowledge& k) const override {
+    return principles::generalized_force_work(m, *this, "couple", "U = integral of M dphi", s1, s2, k.fewer_switches);
   }
 
   void pushes(const Model&, const Analysis& a, const Knowledge&, std::vector<Push>& out) const override {

@@ -22,8 +22,8 @@ public:
     return Fx * vx + Fy * vy;
   }
 
-  principles::Work work(const Model& m, int s1, int s2, const Knowledge&) const override {
-    return principles::generalized_force_work(m, *this, "force", "U = integral of F . dr", s1, s2);
+  principles::Work work(const Model& m, int s1, int s2, const Knowledge& k) const override {
+    return principles::generalized_force_work(m, *this, "force", "U = integral of F . dr", s1, s2, k.fewer_switches);
   }
 
   void pushes(const Model& m, const Analysis& an, const Knowledge&, std::vector<Push>& out) const override {

@@ -105,29 +105,90 @@ Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) {
 /// ∫ Q ds from state s1 to s2 for Q holding |g(s)| with g linear in s: the ends (state values,
 /// expressions of parameters) and the switching points s₀ = −g(0)/g′ between them, ordered by
 /// their values; on each piece |g| = σ g with σ the sign of g at the piece's middle. A closed form
-/// valid at the scene's values. Nothing when an end or a switching point has no value, or g is not
-/// linear.
-static std::optional<ex> piecewise_work(const Model& m, const ex& Q, const symbol& s, int s1, int s2) {
+/// valid at the scene's values.
+/// One end may be unknown (a bumper's greatest compression): the direction of the motion (the
+/// sign of a rate given at a state) tells on which side of the known end it lies, and it is taken
+/// past every switching point on that side (the body meets the bumper, or leaves the launcher) —
+/// recorded in `holds` and checked on the solution, where a root that breaks it is dropped.
+/// Nothing when both ends, a switching point or that direction have no value, or g is not linear.
+static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const ex& Q, const symbol& s, int s1, int s2,
+                                        int fewer, Work& w) {
   const exmap given = m.given_values(), env = m.numeric_environment();
   ex A = m.bind(ex(s), s1).subs(given), B = m.bind(ex(s), s2).subs(given);
   auto a = numerics::evaluate(A, env, 40), b = numerics::evaluate(B, env, 40);
-  if (!a || !b) return std::nullopt;
+  if (!a && !b) return std::nullopt;
   std::vector<ex> args;
   for (auto it = Q.preorder_begin(); it != Q.preorder_end(); ++it)
     if (is_ex_the_function(*it, abs) && it->op(0).has(s)) args.push_back(it->op(0));
-  // the pieces' ends: (expression, value)
-  std::vector<std::pair<ex, numeric>> cuts = {{A, *a}, {B, *b}};
-  const numeric lo = std::min(*a, *b), hi = std::max(*a, *b);
+  // the switching points: (expression, value)
+  std::vector<std::pair<ex, numeric>> switches;
   for (auto& g : args) {
     ex d = g.diff(s);
     if (d.has(s) || d.is_zero()) return std::nullopt;
     ex s0 = normal(-g.subs(s == 0) / d);
     auto v = numerics::evaluate(s0, env, 40);
     if (!v) return std::nullopt;
-    if (*v > lo && *v < hi) cuts.push_back({s0, *v});
+    switches.push_back({s0, *v});
   }
-  const bool up = *b >= *a;
-  std::sort(cuts.begin(), cuts.end(), [&](auto& x, auto& y) { return up ? x.second < y.second : x.second > y.second; });
+  // the pieces' ends from the first state's end to the second's, in the order the motion meets them
+  std::vector<std::pair<ex, numeric>> cuts;
+  numeric beyond;  // a place past the last switching point (for the sign on the last piece)
+  if (a && b) {
+    cuts = {{A, *a}, {B, *b}};
+    const numeric lo = std::min(*a, *b), hi = std::max(*a, *b);
+    for (auto& c : switches)
+      if (c.second > lo && c.second < hi) cuts.push_back(c);
+    const bool up = *b >= *a;
+    std::sort(cuts.begin(), cuts.end(), [&](auto& x, auto& y) { return up ? x.second < y.second : x.second > y.second; });
+  } else {
+    // σ: the direction of the motion from s1 to s2, from the sign of a rate given at a state
+    const auto& c = m.coords[static_cast<std::size_t>(std::find_if(m.coords.begin(), m.coords.end(),
+                                                                    [&](auto& x) { return x.q == s; }) - m.coords.begin())];
+    std::optional<int> sigma;
+    for (int st : {s1, s2}) {
+      auto v = numerics::evaluate(m.states[st].sym.at(c.name).second.subs(given), env, 40);
+      if (!sigma && v && !v->is_zero()) sigma = v->is_positive() ? 1 : -1;
+    }
+    if (!sigma) return std::nullopt;
+    const bool x_is_2 = !b;
+    const int unknown = x_is_2 ? s2 : s1;
+    const numeric k = x_is_2 ? *a : *b;
+    const int side = x_is_2 ? *sigma : -*sigma;  // the unknown end lies on this side of the known one
+    std::vector<std::pair<ex, numeric>> on_side;
+    for (auto& sw : switches)
+      if ((sw.second - k) * side > 0) on_side.push_back(sw);
+    std::sort(on_side.begin(), on_side.end(), [&](auto& x, auto& y) { return (x.second - y.second) * side < 0; });
+    ex X = x_is_2 ? B : A;
+    w.switch_cases = static_cast<int>(on_side.size()) + 1;
+    // the case taken: past all but the `fewer` farthest switching points, short of the next one
+    std::optional<std::pair<ex, numeric>> next;
+    if (std::size_t f = std::min(static_cast<std::size_t>(std::max(fewer, 0)), on_side.size()); f > 0) {
+      next = on_side[on_side.size() - f];
+      on_side.resize(on_side.size() - f);
+    }
+    cuts.push_back({x_is_2 ? A : B, k});
+    cuts.insert(cuts.end(), on_side.begin(), on_side.end());
+    const numeric last = cuts.back().second;
+    beyond = next ? (last + next->second) / 2 : last + side * (abs(last) + 1);
+    if (next)
+      // taken short of the next switching point: (s₀ − X) σ_side > 0
+      w.holds.push_back({(next->first - X) * side,
+                         "the force of '" + e.name + "' switches at " + c.name + " = " + numerics::format(next->second, 6) +
+                             ", and the energy equation took state '" + m.states[unknown].name + "' short of it, but the solution puts " +
+                             c.name + "@" + m.states[unknown].name + " {} " + units::si_name(c.dim) + " past it",
+                         "give " + c.name + " at state '" + m.states[unknown].name + "'", e.pos});
+    if (!on_side.empty()) {
+      // taken past the farthest switching point crossed: (X − s₀) σ_side > 0
+      w.holds.push_back({(X - on_side.back().first) * side,
+                       "the force of '" + e.name + "' switches at " + c.name + " = " + numerics::format(on_side.back().second, 6) +
+                           ", and the energy equation took state '" + m.states[unknown].name + "' past it, but the solution puts " +
+                           c.name + "@" + m.states[unknown].name + " {} " + units::si_name(c.dim) + " short of it: the motion does not get there",
+                       "give " + c.name + " at state '" + m.states[unknown].name + "', or switch the force off over this analysis ('off:')",
+                       e.pos});
+    }
+    cuts.push_back({X, beyond});
+    if (!x_is_2) std::reverse(cuts.begin(), cuts.end());
+  }
   ex U = 0;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (cuts[i].second == cuts[i + 1].second) continue;
@@ -148,14 +209,14 @@ static std::optional<ex> piecewise_work(const Model& m, const ex& Q, const symbo
 }
 
 Work generalized_force_work(const Model& m, const Effect& e, const std::string& what, const std::string& how, int s1,
-                            int s2) {
+                            int s2, int fewer_switches) {
   std::vector<ex> Q;
   for (std::size_t i = 0; i < m.coords.size(); ++i) Q.push_back(e.generalized_force(m, i));
-  return generalized_force_work(m, e, Q, what, how, s1, s2);
+  return generalized_force_work(m, e, Q, what, how, s1, s2, fewer_switches);
 }
 
 Work generalized_force_work(const Model& m, const Effect& e, const std::vector<ex>& Q, const std::string& what,
-                            const std::string& how, int s1, int s2) {
+                            const std::string& how, int s1, int s2, int fewer_switches) {
   Work w;
   w.effect = e.name;
   bool timed = false;
@@ -183,7 +244,7 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
   // a force written with abs (max, min) of the motion: split the path where each |g(s)| turns
   // (g(s₀) = 0 between the ends, the switching point) and integrate each piece with |g| = ±g
   if (Qs.has(abs(wild())))
-    if (auto U = piecewise_work(m, Qs, s, s1, s2)) {
+    if (auto U = piecewise_work(m, e, Qs, s, s1, s2, fewer_switches, w)) {
       w.U = *U;
       w.how = "U = integral along " + m.coords[p->s].name + ", split where the force switches";
       return w;
@@ -197,9 +258,10 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
     auto b = numerics::evaluate(m.bind(ex(s), s2).subs(given), vals, 60);
     if ((!a || !b) && Qs.has(abs(wild())))
       throw SceneError(e.pos, "the force of '" + e.name + "' switches along the path (it has abs, max or min), and " + m.coords[p->s].name +
-                                  " is not known at state '" + m.states[!a ? s1 : s2].name + "', so its work cannot be split where it switches",
-                       "give " + m.coords[p->s].name + " at that state; a bumper or a launcher whose end is unknown is a spring with "
-                       "'acts: compression'");
+                                  " is not known at state '" + m.states[!a ? s1 : s2].name + "'" + (!a && !b ? " nor at '" + m.states[s2].name + "'" : ", nor the direction of the motion") +
+                                  ", so its work cannot be split where it switches",
+                       "give " + m.coords[p->s].name + " at " + (!a && !b ? "one of the states" : "that state") +
+                           (!a && !b ? std::string() : ", or a nonzero " + m.coords[p->s].name + "_dot at a state"));
     if (!a || !b)
       throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name +
                                   ", and its value cannot be taken numerically: " + m.coords[p->s].name + " is not known at state '" +

@@ -621,6 +621,32 @@ TEST_CASE("forces written with abs, max or min: the path split where they switch
   }
 }
 
+TEST_CASE("a switching force with an unknown end: taken past the switching points, then one fewer", "[principles][work][piecewise]") {
+  // the two-stage bumper of derivations/energy/two_stage_bumper_max.yaml, -k1 max(x - d1, 0) - k2 max(x - d2, 0),
+  // k1 = 200 N/m, k2 = 1800 N/m, d1 = 0.5 m, d2 = 0.6 m, m = 2 kg, from x = 0 at v0 to rest. By hand:
+  //   v0 = 3 m/s: (1/2) m v0^2 = 9 J > (1/2) k1 (d2 - d1)^2 = 1 J, past both: x = 0.68 m (the derivation);
+  //   v0 = 0.5 m/s: 0.25 J < 1 J, stops in the soft stage: (1/2) k1 u^2 = 0.25 J, x = d1 + 0.05 m = 0.55 m
+  //   (the case past both has no real solution; the scene is solved again short of d2);
+  //   and any v0 with (1/2) m v0^2 < 1 J stops at d1 + v0 sqrt(m/k1).
+  const std::string scene = kt::derivation("energy/two_stage_bumper_max.yaml");
+  auto at = [&](const std::string& v0) {
+    auto s = kt::solve_text(kt::edit(scene.substr(0, scene.find("find:")), "v0: 3 m/s", "v0: " + v0) + "find:\n  xmax: {value: x@2, unit: m}\n");
+    return kt::result(s, "xmax").si->to_double();
+  };
+  CHECK(std::fabs(at("3 m/s") - 0.68) < 1e-14);
+  CHECK(std::fabs(at("0.5 m/s") - 0.55) < 1e-14);
+  CHECK(std::fabs(at("0.9 m/s") - (0.5 + 0.9 * 0.1)) < 1e-14);  // sqrt(m/k1) = 0.1 s
+  // the work states the case it took, and the condition it checks on the solution
+  auto m = kt::model_of(scene);
+  Knowledge k(m);
+  auto w = work(m, kt::effect(m, "bumper"), 0, 1, k);
+  CHECK(w.switch_cases == 3);
+  REQUIRE(w.holds.size() == 1);
+  k.fewer_switches = 1;
+  auto w1 = work(m, kt::effect(m, "bumper"), 0, 1, k);
+  CHECK(w1.holds.size() == 2);  // past d1, short of d2
+}
+
 TEST_CASE("max and min take two arguments", "[principles][work][piecewise][errors]") {
   auto scene = [](const std::string& F) {
     return "title: max\nparameters:\n  m: 1 kg\n  k: 2 N/m\ncoordinates:\n  x: m\nbodies:\n"

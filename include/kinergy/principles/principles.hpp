@@ -23,10 +23,21 @@ struct Equation {
 };
 
 /// The work of one non-conservative effect between two states, in state symbols.
+/// What an equation took for granted about the solution: `e` (state-bound) ≥ 0 there, or the
+/// branch is no solution (a force that switches, taken as switched at a state whose position is
+/// unknown).
+struct Condition {
+  ex e;
+  std::string what, fix;  ///< the error when it fails ("{}" in `what` is e's value)
+  SourcePos pos;
+};
+
 struct Work {
   std::string effect;
   ex U;
   std::string how;  ///< "U = M (φ₂ − φ₁)", …
+  std::vector<Condition> holds;
+  int switch_cases = 1;  ///< how many ways a switching force's unknown end may lie (see Knowledge)
 };
 
 /// What is known numerically at each state before solving: given values and what the
@@ -39,6 +50,10 @@ public:
   const GiNaC::exmap& values() const { return known_; }
   /// Record a value found by an earlier analysis.
   void set(const ex& sym, const GiNaC::numeric& v) { known_[sym] = v; }
+  /// A force that switches (abs, max, min) on the way to a state whose position is unknown is
+  /// taken past every switching point on that side but this many of the farthest (the scene
+  /// is solved again with one more while the taken case has no solution).
+  int fewer_switches = 0;
 private:
   GiNaC::exmap known_;
   GiNaC::exmap env_;  ///< parameter values
@@ -76,10 +91,10 @@ std::optional<Path> one_dof_path(const model::Model& m);
 /// Φ(q₂) − Φ(q₁) when Σ Q_i dq_i = dΦ, else the integral along the one-coordinate path.
 /// `what` names it in messages ("couple", "force"); `how` is the exact case's formula.
 Work generalized_force_work(const model::Model& m, const model::Effect& e, const std::string& what,
-                            const std::string& how, int s1, int s2);
+                            const std::string& how, int s1, int s2, int fewer_switches = 0);
 /// The same for given generalized forces Q_i (one per coordinate).
 Work generalized_force_work(const model::Model& m, const model::Effect& e, const std::vector<ex>& Q, const std::string& what,
-                            const std::string& how, int s1, int s2);
+                            const std::string& how, int s1, int s2, int fewer_switches = 0);
 
 /// The work of kinetic friction c along the one-coordinate path, U = −c σ (ℓ(s₂) − ℓ(s₁)), with
 /// dℓ/ds = `rate(path)` (a distance slid, or an angle turned) and σ the sign of the motion
