@@ -112,7 +112,7 @@ Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) {
 /// recorded in `holds` and checked on the solution, where a root that breaks it is dropped.
 /// Nothing when both ends, a switching point or that direction have no value, or g is not linear.
 static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const ex& Q, const symbol& s, int s1, int s2,
-                                        int fewer, Work& w) {
+                                        int fewer, Work& w, std::string& taken) {
   const exmap given = m.given_values(), env = m.numeric_environment();
   ex A = m.bind(ex(s), s1).subs(given), B = m.bind(ex(s), s2).subs(given);
   auto a = numerics::evaluate(A, env, 40), b = numerics::evaluate(B, env, 40);
@@ -188,6 +188,9 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
     }
     cuts.push_back({X, beyond});
     if (!x_is_2) std::reverse(cuts.begin(), cuts.end());
+    taken = "; state " + m.states[unknown].name + " taken " +
+            (on_side.empty() ? std::string() : "past " + c.name + " = " + numerics::format(on_side.back().second, 6)) +
+            (on_side.empty() || !next ? "" : " and ") + (next ? "short of " + c.name + " = " + numerics::format(next->second, 6) : "");
   }
   ex U = 0;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
@@ -243,12 +246,14 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
   }
   // a force written with abs (max, min) of the motion: split the path where each |g(s)| turns
   // (g(s₀) = 0 between the ends, the switching point) and integrate each piece with |g| = ±g
-  if (Qs.has(abs(wild())))
-    if (auto U = piecewise_work(m, e, Qs, s, s1, s2, fewer_switches, w)) {
+  if (Qs.has(abs(wild()))) {
+    std::string taken;
+    if (auto U = piecewise_work(m, e, Qs, s, s1, s2, fewer_switches, w, taken)) {
       w.U = *U;
-      w.how = "U = integral along " + m.coords[p->s].name + ", split where the force switches";
+      w.how = "U = integral along " + m.coords[p->s].name + ", split where the force switches" + taken;
       return w;
     }
+  }
   auto F = antiderivative(model::trig_simplify(Qs), s);
   if (!F) {
     // no elementary antiderivative: U = ∫ Q ds numerically, where both ends and every parameter
