@@ -259,20 +259,14 @@ int main(int argc, char** argv) {
                     << static_cast<int>(f * 100) << "%" << std::flush;
           shown = true;
         };
-      for (auto& e : m.effects)
-        if (e.on >= 0 || e.off >= 0)
-          throw kinergy::SceneError(e.pos, "effect '" + e.name + "' is switched on or off at a state, which a run from one state does not follow",
-                                    "check each analysis with --check (each runs with the effects that act over it), or remove "
-                                    "'on'/'off' to simulate it acting throughout");
-      sim::Simulator s(m, sol ? sim::simulation_values(*sol) : m.parameter_values(), o);
-      sim::Stop stop;
-      stop.until = until;
       // a given impulse acts at the state an impact analysis starts from (or, without
       // analyses, at the start): not again from a state after it
-      stop.impulses = m.analyses.empty();
-      for (auto& a : m.analyses) stop.impulses = stop.impulses || (a.instant && a.from == start);
+      bool impulses = m.analyses.empty();
+      for (auto& a : m.analyses) impulses = impulses || (a.instant && a.from == start);
       auto c0 = std::chrono::steady_clock::now();
-      sim::Run r = s.run(s0, stop);
+      // effects switched on or off at states are followed: the run switches them where it reaches those states
+      sim::Run r = sim::run_following(m, sol ? sol->branch.sol : GiNaC::exmap{}, sol ? sim::simulation_values(*sol) : m.parameter_values(),
+                                      start, s0, until, o, impulses);
       double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
       if (shown) std::cerr << "\n";
       std::cout << m.title << "\n"

@@ -1,6 +1,7 @@
 // A solved scene's states as numbers; each analysis run as a simulation and compared.
 #include "kinergy/simulate/check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -43,6 +44,59 @@ double value(const Known& k, const ex& sym) {
   } catch (const std::exception&) {
   }
   return kNaN;
+}
+
+/// The end of a run from leg.start toward state leg.to: its instant when both times are known,
+/// else where S2's given values are reached (a rate given as zero — a turning point, crossed
+/// transversally — else a given position, else a given rate; lacking all, the coordinate that
+/// moves most). Sets leg.stop, leg.target and leg.expect.t; why_not when nothing places S2.
+void aim(const model::Model& m, const Known& k, Leg& leg, double t1) {
+  const model::State& S2 = m.states[static_cast<std::size_t>(leg.to)];
+  const double t2 = value(k, S2.t);
+  if (!std::isnan(t1) && !std::isnan(t2)) {
+    leg.start.t = t1;
+    leg.stop.until = t2;
+    leg.expect.t = t2;
+    leg.target = "t = " + num(t2) + " s";
+    if (!(t2 > t1)) leg.why_not = "state '" + S2.name + "' is not later than '" + m.states[static_cast<std::size_t>(leg.from)].name + "'";
+  } else {
+    // the end is where S2's given values are reached: a rate given as zero (a turning point,
+    // crossed transversally), else a given position, else a given rate; lacking all, the
+    // coordinate that moves most
+    int pick = -1;
+    bool rate = false;
+    double best = -1;
+    for (std::size_t i = 0; i < m.coords.size(); ++i)
+      for (int r = 0; r < 2; ++r) {
+        double v1 = r ? leg.start.qd[i] : leg.start.q[i], v2 = r ? leg.expect.qd[i] : leg.expect.q[i];
+        auto& [qs, qds] = S2.sym.at(m.coords[i].name);
+        bool given = S2.given.count(r ? qds : qs) > 0;
+        // a turning point given as a zero rate ends the run even from rest (it is the next zero)
+        // when the coordinate moves between the states to a place not given (a given place
+        // with a zero rate is a stop the motion is held at)
+        const bool moves = !std::isnan(leg.expect.q[i]) && leg.expect.q[i] != leg.start.q[i] && !S2.given.count(qs);
+        if (std::isnan(v2) || (v1 == v2 && !(r && given && v2 == 0 && moves))) continue;
+        double score = given ? (r && v2 == 0 ? 3e300 : (r ? 1e300 : 2e300)) : (r ? -1 : std::fabs(v2 - v1) / std::max({std::fabs(v1), std::fabs(v2), 1e-300}));
+        if (score > best) {
+          best = score;
+          pick = static_cast<int>(i);
+          rate = r == 1;
+        }
+      }
+    if (pick < 0) {
+      leg.why_not = "nothing given at state '" + S2.name + "' places it on the way (no time, and no coordinate or rate that changes)";
+      return;
+    }
+    const auto i = static_cast<std::size_t>(pick);
+    double q1 = leg.start.q[i], q2 = rate ? leg.expect.qd[i] : leg.expect.q[i];
+    leg.stop.when = (rate ? m.coords[i].qd : m.coords[i].q) - numerics::exact(q2);
+    // time enough: the distance at a tenth of the faster of the two rates (or 100 s)
+    double v = std::max(std::fabs(leg.start.qd[i]), std::fabs(leg.expect.qd[i]));
+    double dq = std::fabs(leg.expect.q[i] - q1);
+    leg.stop.until = leg.start.t + (!rate && v > 0 && !std::isnan(dq) ? std::max(10 * dq / v, 1.0) : 100.0);
+    leg.target = m.coords[i].name + (rate ? "_dot" : "") + " reaches " + num(q2);
+    leg.expect.t = kNaN;
+  }
 }
 
 }  // namespace
@@ -113,51 +167,14 @@ std::vector<Leg> legs(const Solution& s) {
     }
     const model::State& S1 = m.states[a.from];
     const model::State& S2 = m.states[a.to];
-    double t1 = value(k, S1.t), t2 = value(k, S2.t);
+    const double t1 = value(k, S1.t);
     if (a.instant) {
       // an impact: everything happens at the start
       leg.stop.until = leg.start.t;
       leg.target = "the impact at the start";
       leg.expect.t = leg.start.t;
-    } else if (!std::isnan(t1) && !std::isnan(t2)) {
-      leg.start.t = t1;
-      leg.stop.until = t2;
-      leg.expect.t = t2;
-      leg.target = "t = " + num(t2) + " s";
-      if (!(t2 > t1)) leg.why_not = "state '" + S2.name + "' is not later than '" + S1.name + "'";
     } else {
-      // the end is where S2's given values are reached: a rate given as zero (a turning point,
-      // crossed transversally), else a given position, else a given rate; lacking all, the
-      // coordinate that moves most
-      int pick = -1;
-      bool rate = false;
-      double best = -1;
-      for (std::size_t i = 0; i < m.coords.size(); ++i)
-        for (int r = 0; r < 2; ++r) {
-          double v1 = r ? leg.start.qd[i] : leg.start.q[i], v2 = r ? leg.expect.qd[i] : leg.expect.q[i];
-          auto& [qs, qds] = S2.sym.at(m.coords[i].name);
-          bool given = S2.given.count(r ? qds : qs) > 0;
-          // a turning point given as a zero rate ends the run even from rest (it is the next zero)
-          // when the coordinate moves between the states to a place not given (a given place
-          // with a zero rate is a stop the motion is held at)
-          const bool moves = !std::isnan(leg.expect.q[i]) && leg.expect.q[i] != leg.start.q[i] && !S2.given.count(qs);
-          if (std::isnan(v2) || (v1 == v2 && !(r && given && v2 == 0 && moves))) continue;
-          double score = given ? (r && v2 == 0 ? 3e300 : (r ? 1e300 : 2e300)) : (r ? -1 : std::fabs(v2 - v1) / std::max({std::fabs(v1), std::fabs(v2), 1e-300}));
-          if (score > best) {
-            best = score;
-            pick = static_cast<int>(i);
-            rate = r == 1;
-          }
-        }
-      const auto i = static_cast<std::size_t>(pick);
-      double q1 = leg.start.q[i], q2 = rate ? leg.expect.qd[i] : leg.expect.q[i];
-      leg.stop.when = (rate ? m.coords[i].qd : m.coords[i].q) - numerics::exact(q2);
-      // time enough: the distance at a tenth of the faster of the two rates (or 100 s)
-      double v = std::max(std::fabs(leg.start.qd[i]), std::fabs(leg.expect.qd[i]));
-      double dq = std::fabs(leg.expect.q[i] - q1);
-      leg.stop.until = leg.start.t + (!rate && v > 0 && !std::isnan(dq) ? std::max(10 * dq / v, 1.0) : 100.0);
-      leg.target = m.coords[i].name + (rate ? "_dot" : "") + " reaches " + num(q2);
-      leg.expect.t = kNaN;
+      aim(m, k, leg, t1);
     }
     // The solved values at S2 are the closed forms to check; S2's given values define the state
     // (or assume it: balls locked at their stops). Without a solved value (a parameter or the
@@ -233,6 +250,102 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
   c.ok = any && c.worst <= tolerance;
   if (!any) c.worst_what = "no solved value at state '" + m.states[leg.to].name + "' to compare";
   return c;
+}
+
+namespace {
+
+// an effect acts after state `st` when it is switched on at or before it and not off by then
+bool acts_after(const model::Effect& e, int st) { return (e.on < 0 || e.on <= st) && (e.off < 0 || e.off > st); }
+
+// r appended to all: one run in time (works summed by effect, the drift weighted by each scale)
+void append(Run& all, Run r, bool first) {
+  if (first) {
+    all = std::move(r);
+    return;
+  }
+  if (!all.samples.empty() && !r.samples.empty() && r.samples.front().t == all.samples.back().t) r.samples.erase(r.samples.begin());
+  all.samples.insert(all.samples.end(), r.samples.begin(), r.samples.end());
+  all.impacts.insert(all.impacts.end(), r.impacts.begin(), r.impacts.end());
+  all.log.insert(all.log.end(), r.log.begin(), r.log.end());
+  for (auto& [name, U] : r.work) {
+    auto it = std::find_if(all.work.begin(), all.work.end(), [&](auto& w) { return w.first == name; });
+    if (it == all.work.end()) all.work.emplace_back(name, U);
+    else it->second += U;
+  }
+  const double scale = std::max(all.energy_scale, r.energy_scale);
+  all.drift = scale > 0 ? (all.drift * all.energy_scale + r.drift * r.energy_scale) / scale : 0;
+  all.energy_scale = scale;
+  all.end = r.end;
+  all.stopped = r.stopped;
+  all.E1 = r.E1;
+  all.impact_loss += r.impact_loss;
+  all.conservative = all.conservative && r.conservative;
+  all.steps += r.steps;
+  all.rejected += r.rejected;
+  all.rhs_calls += r.rhs_calls;
+}
+
+}  // namespace
+
+Run run_following(const model::Model& m, const exmap& solved, const exmap& params, int start, const State& s0, double until,
+                  const Options& o, bool impulses) {
+  const Known k{m.given_values(), solved, params};
+  Run all;
+  State x = s0;
+  int cur = start;
+  for (bool first = true;; first = false) {
+    Options own = o;
+    own.effects_on.clear();
+    for (auto& e : m.effects) own.effects_on.push_back(acts_after(e, cur));
+    // the next state where an effect is switched
+    int next = -1;
+    const model::Effect* by = nullptr;
+    for (auto& e : m.effects)
+      for (int st : {e.on, e.off})
+        if (st > cur && (next < 0 || st < next)) {
+          next = st;
+          by = &e;
+        }
+    Stop stop;
+    stop.until = until;
+    stop.impulses = first && impulses;
+    if (next >= 0) {
+      // it is reached as a check's leg reaches its end: its time, or a value given there
+      Leg leg;
+      leg.from = cur;
+      leg.to = next;
+      leg.start = x;
+      leg.expect = state_values(m, k, next);
+      aim(m, k, leg, x.t);
+      const model::State& S = m.states[static_cast<std::size_t>(next)];
+      if (!leg.why_not.empty())
+        throw SceneError(S.pos, "effect '" + by->name + "' is switched at state '" + S.name + "', which a run cannot find: " + leg.why_not,
+                         "give the time or a coordinate at state '" + S.name + "'");
+      if (leg.stop.when) stop.when = leg.stop.when;
+      else stop.until = std::min(until, leg.stop.until);
+    }
+    if (!(stop.until > x.t) && !first) break;
+    Simulator sim(m, params, own);
+    Run r = sim.run(x, stop);
+    const bool reached = next >= 0 && (r.stopped || (!stop.when && r.end.t == stop.until && stop.until < until));
+    append(all, std::move(r), first);
+    if (!reached) break;
+    // the switch: the effects that start or stop acting at state `next`
+    std::ostringstream note;
+    note.precision(8);
+    note << "t = " << all.end.t << " s: state '" << m.states[static_cast<std::size_t>(next)].name << "' reached:";
+    for (auto& e : m.effects)
+      if (acts_after(e, cur) != acts_after(e, next)) note << " effect '" << e.name << "' switched " << (acts_after(e, next) ? "on" : "off") << ";";
+    std::string line = note.str();
+    line.pop_back();
+    all.log.push_back(line);
+    all.stopped = false;
+    x.t = all.end.t;
+    x.q = all.end.q;
+    x.qd = all.end.qd;
+    cur = next;
+  }
+  return all;
 }
 
 }  // namespace kinergy::simulate

@@ -90,10 +90,45 @@ TEST_CASE("the simulator runs each analysis with the effects that act over it", 
   }
   // 1 -> 3 has the switch inside: not one run
   CHECK(legs[2].why_not.find("effect 'motor' is switched inside it (at state '2')") != std::string::npos);
-  // a run from one state cannot follow the switch: refused
+  // a run from state 1 follows the switch: the motor drives until phi = n1 (state 2), then the wheel coasts
+  // to rest. By hand: alpha = (M - Mf)/(m k^2) = 25/4.5 rad/s^2, phi = 20 pi at t = sqrt(2 (20 pi)/alpha) =
+  // sqrt(36 pi/5) = 4.7559928 s; at rest phi = n1 M/Mf = 60 rev = 120 pi rad, U_motor = M n1 = 600 pi J.
   int st = 0;
-  std::string out = kt::run_cli("simulate derivations/energy/flywheel_motor_then_coast.yaml --until 10", st);
+  std::string out = kt::run_cli("simulate derivations/energy/flywheel_motor_then_coast.yaml --until 100 --no-native", st);
   INFO(out);
-  CHECK(st == 1);
-  CHECK(out.find("effect 'motor' is switched on or off at a state, which a run from one state does not follow") != std::string::npos);
+  CHECK(st == 0);
+  CHECK(out.find("t = 4.7559928 s: state '2' reached: effect 'motor' switched off") != std::string::npos);
+  const auto s0 = kinergy::simulate::state_values(s, 0);
+  o.native = false;
+  auto r = kinergy::simulate::run_following(s.model, s.branch.sol, kinergy::simulate::simulation_values(s), 0, s0, 100, o, true);
+  CHECK(std::fabs(r.end.q[0] - 120 * M_PI) < 1e-7);
+  CHECK(r.end.qd[0] == 0);
+  REQUIRE(r.work.size() == 2);
+  CHECK(std::fabs(r.work[0].second - 600 * M_PI) < 1e-7);
+  CHECK(std::fabs(r.drift) < 1e-12);
+}
+
+TEST_CASE("a free run switches a brake on at a given time", "[switching][simulate]") {
+  // a wheel (m k^2 = 2 kg m^2) spinning at 10 rad/s; a brake couple of 4 N m is applied at t = 3 s (state 2).
+  // By hand: phi(3) = 30 rad; then alpha = -2 rad/s^2, rest after 5 s more, at phi = 30 + 10*5/2 = 55 rad.
+  const std::string scene =
+      "title: brake\nparameters:\n  m: 2 kg\n  k: 1 m\n  w0: 10 rad/s\n  Mb: 4 N*m\npoints:\n  O: [0, 0]\n"
+      "coordinates:\n  phi: rad\nbodies:\n  wheel: {mass: m, inertia: {gyration: k}, position: [0, 0], angle: phi}\n"
+      "effects:\n  axle: {pin: [O, wheel]}\n  brake: {friction_couple: wheel, M: Mb, direction: positive, on: 2}\n"
+      "states:\n  1: {t: 0, phi: 0, phi_dot: w0}\n  2: {t: 3 s}\n  3: {phi_dot: 0}\n"
+      "analyses:\n  - momentum: {from: 1, to: 2}\n  - energy: {from: 2, to: 3}\n";
+  auto s = kt::solve_text(scene);
+  kinergy::simulate::Options o;
+  o.native = false;
+  auto r = kinergy::simulate::run_following(s.model, s.branch.sol, kinergy::simulate::simulation_values(s), 0,
+                                            kinergy::simulate::state_values(s, 0), 20, o, true);
+  CHECK(std::fabs(r.end.q[0] - 55) < 1e-8);
+  REQUIRE(!r.log.empty());
+  CHECK(r.log.front() == "t = 3 s: state '2' reached: effect 'brake' switched on");
+  // a switching state that nothing places on the way is refused, naming it
+  auto m = kt::model_of(kt::edit(scene.substr(0, scene.find("analyses:")), "  2: {t: 3 s}", "  2: {phi_dot: w0}"));
+  const auto params = m.parameter_values();
+  CHECK_THROWS_WITH(kinergy::simulate::run_following(m, {}, params, 0, kinergy::simulate::state_values(m, {}, params, 0), 20, o, true),
+                    "<test>:18:3: effect 'brake' is switched at state '2', which a run cannot find: nothing given at state '2' places it "
+                    "on the way (no time, and no coordinate or rate that changes) \u2014 give the time or a coordinate at state '2'");
 }

@@ -43,4 +43,13 @@ struct LegCheck {
 /// agrees within `tolerance` relative to its scale.
 LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double tolerance);
 
+/// A run from state `start` (at s0) to time `until` that follows the effects switched on and off
+/// at states (`on: S`, `off: S`): it runs with the effects acting after the start state until the
+/// next state where one switches is reached — found as a check's leg finds its end (the state's
+/// time, or the first time a value given there is reached) — switches them, and goes on. The
+/// runs are joined (works summed; each switch in the log). `impulses`: apply the scene's given
+/// impulses at the start. @throws SceneError when a switching state cannot be found in a run.
+Run run_following(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int start, const State& s0,
+                  double until, const Options& o, bool impulses);
+
 }  // namespace kinergy::simulate
