@@ -66,7 +66,7 @@ EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& 
         throw SceneError(a.pos, "effect '" + e.name + "' is switched at state '" + m.states[e.on >= 0 && e.on > std::min(a.from, a.to) ? e.on : e.off].name +
                                     "' inside this energy analysis of isolated bodies",
                          "split the analysis at that state");
-      Work w = m.conservative(e) ? Work{e.name, -(m.bind(e.potential(m), s2) - m.bind(e.potential(m), s1)), "U = -(change of V)"}
+      Work w = m.conservative(e) ? Work{e.name, -(m.bind(e.potential(m), s2) - m.bind(e.potential(m), s1)), "U = -(change of V)", {}, 1}
                                  : work(m, e, s1, s2, k);
       w.how += " from state " + m.states[s1].name + " to " + m.states[s2].name + " (where it acts)";
       U += w.U;

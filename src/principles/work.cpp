@@ -288,6 +288,46 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
   return w;
 }
 
+std::optional<Work> exact_slip_work(const Model& m, const Effect& e, std::optional<int> declared, const ex& c, const ex& v,
+                                    const std::string& how, int s1, int s2, const Knowledge& k, const std::optional<ex>& moved) {
+  // f with df/dt = r = Σ a_i q̇_i (a_i = ∂r/∂q̇_i, free of the rates), when there is one
+  auto integral = [&](const ex& r) -> std::optional<ex> {
+    std::vector<ex> a;
+    for (auto& co : m.coords) {
+      ex ai = r.diff(co.qd);
+      for (auto& x : m.coords)
+        if (ai.has(x.qd)) return std::nullopt;
+      a.push_back(ai);
+    }
+    return potential(m, a);
+  };
+  auto f = integral(v);
+  if (!f) return std::nullopt;
+  auto g = moved ? integral(*moved) : f;
+  if (!g) return std::nullopt;
+  int sigma = 0;
+  if (declared) {
+    sigma = *declared;
+  } else {
+    for (int st : {s1, s2})
+      if (auto x = k.value(m.bind(v, st)); !sigma && x && !x->is_zero()) sigma = x->is_positive() ? 1 : -1;
+    if (!sigma) {
+      // the slip's sign from the change of f (the slip keeps its sign between the states)
+      if (auto d = k.value(m.bind(*f, s2) - m.bind(*f, s1)); d && !d->is_zero()) sigma = d->is_positive() ? 1 : -1;
+    }
+  }
+  if (!sigma)
+    throw SceneError(e.pos, "effect '" + e.name + "': the direction of the slip from state '" + m.states[s1].name + "' to '" +
+                                m.states[s2].name + "' is not known, so the sign of the friction work is not",
+                     "give the rates at one of the states, or 'direction: positive|negative' (of the slip)");
+  // U = −c σ (f(q₂) − f(q₁)): the distance slid is |Δf|, the slip keeping its sign between the states
+  Work w;
+  w.effect = e.name;
+  w.U = -c * sigma * (m.bind(*g, s2) - m.bind(*g, s1));
+  w.how = how;
+  return w;
+}
+
 Work friction_work(const Model& m, const Effect& e, std::optional<int> declared, const ex& c,
                    const std::function<ex(const Path&)>& rate, const std::string& how, int s1, int s2,
                    const Knowledge& k) {

@@ -863,6 +863,12 @@ const ExactCase kExact[] = {
     {"switch_inside_momentum.yaml", "22:5",
      "effect 'motor' is switched off at state '2', inside this angular_momentum analysis: its impulse covers only part of "
      "the interval \u2014 split the analysis at state '2' (one from '1' to '2', one from there to '3')"},
+    {"friction_against_itself.yaml", "16:39",
+     "friction 'rubbing' acts against the body it slides with \u2014 name the other body it slides on"},
+    {"friction_across_set_changing_line.yaml", "15:3",
+     "friction 'rubbing' acts between a body of this energy analysis and one outside it, and its work on block cannot be taken: its "
+     "slip is not along a fixed line, or the distance moved along it is not a function of the coordinates \u2014 analyse both "
+     "bodies together, or use an impulse-momentum analysis of the one"},
     // pushed from rest into a bumper: no rate tells the direction of the motion (an unknown end
     // with a known direction is taken past the switching points: two_stage_bumper_max)
     {"force_max_end_unknown.yaml", "12:3",

@@ -96,6 +96,17 @@ Work generalized_force_work(const model::Model& m, const model::Effect& e, const
 Work generalized_force_work(const model::Model& m, const model::Effect& e, const std::vector<ex>& Q, const std::string& what,
                             const std::string& how, int s1, int s2, int fewer_switches = 0);
 
+/// The work of kinetic friction c whose slip keeps to a fixed line, with slip rate
+/// v = Σ a_i(q) q̇_i along it: when that is the rate of a function of the coordinates (v = df/dt,
+/// ∂a_i/∂q_j = ∂a_j/∂q_i), U = −c σ (f(q₂) − f(q₁)) with σ the sign of the slip (at the first
+/// state, else the second, or `declared`) — no one-coordinate path needed (a block sliding on a
+/// moving cart). With `moved` (a rate along the same line, = dg/dt), the work of that force on
+/// the point moving at that rate: U = −c σ (g(q₂) − g(q₁)) (the friction on one of the two bodies
+/// alone). Nothing when v (or `moved`) is not such a rate.
+std::optional<Work> exact_slip_work(const model::Model& m, const model::Effect& e, std::optional<int> declared, const ex& c,
+                                    const ex& v, const std::string& how, int s1, int s2, const Knowledge& k,
+                                    const std::optional<ex>& moved = std::nullopt);
+
 /// The work of kinetic friction c along the one-coordinate path, U = −c σ (ℓ(s₂) − ℓ(s₁)), with
 /// dℓ/ds = `rate(path)` (a distance slid, or an angle turned) and σ the sign of the motion
 /// (from the states, or `declared`).
