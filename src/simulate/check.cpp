@@ -267,10 +267,10 @@ void append(Run& all, Run r, bool first) {
   all.samples.insert(all.samples.end(), r.samples.begin(), r.samples.end());
   all.impacts.insert(all.impacts.end(), r.impacts.begin(), r.impacts.end());
   all.log.insert(all.log.end(), r.log.begin(), r.log.end());
-  for (auto& [name, U] : r.work) {
-    auto it = std::find_if(all.work.begin(), all.work.end(), [&](auto& w) { return w.first == name; });
-    if (it == all.work.end()) all.work.emplace_back(name, U);
-    else it->second += U;
+  for (auto& w : r.work) {
+    auto it = std::find_if(all.work.begin(), all.work.end(), [&](auto& x) { return x.first == w.first; });
+    if (it == all.work.end()) all.work.push_back(w);
+    else it->second += w.second;
   }
   const double scale = std::max(all.energy_scale, r.energy_scale);
   all.drift = scale > 0 ? (all.drift * all.energy_scale + r.drift * r.energy_scale) / scale : 0;
