@@ -22,6 +22,40 @@ public:
     return in(a.body) != in(b.body);
   }
 
+  /// The fixed line the point of the party inside `set` moves along: x ([1, 0]) or y ([0, 1]).
+  std::optional<int> line_inside(const Model& m, const std::vector<int>& set) const {
+    const PointRef& p = principles::in_set(set, a.body) ? a : b;
+    auto [vx, vy] = m.velocity(p);
+    const bool x = principles::vanishes(m, vy), y = principles::vanishes(m, vx);
+    if (x == y) return std::nullopt;
+    return x ? 0 : 1;
+  }
+
+  // across an energy analysis of a set whose pinned point moves along a fixed line (a collar on
+  // its rod): the reaction's component along that line does the work, an unknown average force
+  bool works_across(const Model& m, const std::vector<int>& set) const override {
+    return reaction_across(set) && a.body >= 0 && b.body >= 0 && line_inside(m, set).has_value();
+  }
+
+  // U = F̄ Δs: F̄ the average force on the party inside along +x (or +y) over the distance, s that
+  // coordinate of its point
+  principles::Work work_across(const Model& m, const Analysis& an, const Knowledge&) const override {
+    auto it = an.reactions.find(name);
+    if (it == an.reactions.end() || !works_across(m, an.bodies))
+      throw SceneError(an.pos, "pin '" + name + "' joins a body of this energy analysis to one outside it, and the pinned point does not "
+                                   "keep to a fixed line (x or y): the work of its reaction is not one unknown force times a distance",
+                       "list both bodies it joins in 'bodies', or take its reaction from an impulse-momentum analysis of the body");
+    const PointRef& p = acts_on(an, a.body) ? a : b;
+    const int line = *line_inside(m, an.bodies);
+    auto [x, y] = m.position(p);
+    const ex s = line == 0 ? x : y;
+    principles::Work w;
+    w.effect = name;
+    w.U = it->second[0] * model::trig_simplify(m.bind(s, an.to) - m.bind(s, an.from));
+    w.how = "U = F (average, on " + p.text + " along " + (line == 0 ? "x" : "y") + ") times the distance " + p.text + " moves along it";
+    return w;
+  }
+
   void pushes(const Model& m, const Analysis& an, const Knowledge&, std::vector<Push>& out) const override {
     bool ia = acts_on(an, a.body), ib = acts_on(an, b.body);
     if (ia == ib) return;  // internal, or not acting on the set

@@ -181,7 +181,7 @@ public:
       int s1 = m_.state_index(args[1]), s2 = m_.state_index(args[2]);
       if (s1 < 0 || s2 < 0)
         throw InputError("no state named '" + (s1 < 0 ? args[1] : args[2]) + "'", "name two states of the scene");
-      int ai = m_.analysis_between(s1, s2);
+      int ai = m_.analysis_between(s1, s2, args[0]);
       if (ai < 0)
         throw InputError("no momentum or impact analysis goes from state '" + args[1] + "' to '" + args[2] + "'",
                          "add one, e.g. '- impact: {from: " + args[1] + ", to: " + args[2] + ", contact: …}'");

@@ -59,9 +59,13 @@ ex Model::bind_mixed(const ex& e, int ps, int rs) const {
   return e.subs(m);
 }
 
-int Model::analysis_between(int from, int to) const {
-  for (std::size_t i = 0; i < analyses.size(); ++i)
-    if (analyses[i].from == from && analyses[i].to == to && analyses[i].type->impulsive()) return static_cast<int>(i);
+int Model::analysis_between(int from, int to, const std::string& effect) const {
+  // first one that carries that effect's reaction (a body set it holds to the rest), else the first
+  for (bool carries : {true, false})
+    for (std::size_t i = 0; i < analyses.size(); ++i)
+      if (analyses[i].from == from && analyses[i].to == to && analyses[i].type->impulsive() &&
+          (!carries || analyses[i].reactions.count(effect)))
+        return static_cast<int>(i);
   return -1;
 }
 

@@ -869,6 +869,10 @@ const ExactCase kExact[] = {
      "friction 'rubbing' acts between a body of this energy analysis and one outside it, and its work on block cannot be taken: its "
      "slip is not along a fixed line, or the distance moved along it is not a function of the coordinates \u2014 analyse both "
      "bodies together, or use an impulse-momentum analysis of the one"},
+    {"pin_across_moving_point.yaml", "32:5",
+     "pin 'middle' joins a body of this energy analysis to one outside it, and the pinned point does not keep to a fixed line "
+     "(x or y): the work of its reaction is not one unknown force times a distance \u2014 list both bodies it joins in 'bodies', "
+     "or take its reaction from an impulse-momentum analysis of the body"},
     // pushed from rest into a bumper: no rate tells the direction of the motion (an unknown end
     // with a known direction is taken past the switching points: two_stage_bumper_max)
     {"force_max_end_unknown.yaml", "12:3",

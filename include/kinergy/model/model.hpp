@@ -186,7 +186,7 @@ public:
   /// (= ½(1 − e²) m_eff v_n⁻² for one smooth contact), free of the cancellation of T₁ − T₂.
   ex impact_loss(int contact, int analysis) const;
   /// The analysis between two states (−1 when none).
-  int analysis_between(int from, int to) const;
+  int analysis_between(int from, int to, const std::string& effect = "") const;
 
   // --- states ---
   int state_index(const std::string& name) const;  ///< −1 when none
