@@ -5,8 +5,10 @@
 // unknown N (the impulse N n̂).
 //
 // Checked: the point's distance to the track, d = (r_P − r_0)·n̂ for a line through r_0, or
-// |r_P − c| − R for a circle, vanishes for every value of the coordinates (random samples) when
-// the scene has no constraints, and at every state once the states are solved.
+// |r_P − c| − R for a circle, less the declared offset (`offset: r`: the centre of a round body
+// of radius r touching the surface — a wheel on a floor, a ball inside a bowl with offset −r),
+// vanishes for every value of the coordinates (random samples) when the scene has no
+// constraints, and at every state once the states are solved.
 
 #include "common.hpp"
 #include "kinergy/numeric/evaluate.hpp"
@@ -22,6 +24,7 @@ public:
   ex x0 = 0, y0 = 0;  ///< a point of the line, or the circle's centre
   ex tx = 0, ty = 0;  ///< the line's direction (unit)
   ex R = 0;           ///< the circle's radius
+  ex offset = 0;      ///< the point's distance from the surface (on the normal's side; circle: outward)
   std::string shape;  ///< "the line through [..] along [..]", "the circle of centre [..] and radius R"
   SourcePos arg_pos;  ///< where its point is named
 
@@ -35,14 +38,15 @@ public:
   std::pair<ex, ex> normal(const Model& m) const {
     if (!circle) return {-ty, tx};
     auto [x, y] = m.position(p);
-    return {(x - x0) / R, (y - y0) / R};
+    return {(x - x0) / (R + offset), (y - y0) / (R + offset)};  // the point keeps to radius R + offset
   }
 
-  /// Signed distance of the point from the track (generic).
+  /// Signed distance of the point from where the track keeps it (generic):
+  ///   line: (r_P − r_0)·n̂ − offset, n̂ = k × t̂;   circle: |r_P − c| − (R + offset)
   ex distance(const Model& m) const {
     auto [x, y] = m.position(p);
-    if (!circle) return model::trig_simplify((x - x0) * -ty + (y - y0) * tx);
-    return sqrt(pow(x - x0, 2) + pow(y - y0, 2)) - R;
+    if (!circle) return model::trig_simplify((x - x0) * -ty + (y - y0) * tx - offset);
+    return sqrt(pow(x - x0, 2) + pow(y - y0, 2)) - (R + offset);
   }
 
   void pushes(const Model& m, const Analysis& an, const Knowledge&, std::vector<Push>& out) const override {
@@ -87,7 +91,7 @@ public:
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return "";
     // off, against the size of the positions themselves (a scene may be a millimetre across)
     auto [x, y] = m.position(p);
-    ex scale = sqrt(pow(x, 2) + pow(y, 2) + pow(x0, 2) + pow(y0, 2) + pow(R, 2));
+    ex scale = sqrt(pow(x, 2) + pow(y, 2) + pow(x0, 2) + pow(y0, 2) + pow(R, 2) + pow(offset, 2));
     auto s = numerics::evaluate(scale, at, 30);
     GiNaC::numeric dv = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v));
     if (!s || dv <= *s * GiNaC::numeric(1, 1000000000)) return "";
@@ -129,7 +133,7 @@ public:
 
 std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
   auto e = make<Track>(ed);
-  r.only(ed, {"line", "circle"});
+  r.only(ed, {"line", "circle", "offset"});
   e->p = r.point_ref(ed.arg, ed.kind);
   e->arg_pos = ed.arg.pos;
   if (e->p.body < 0)
@@ -164,6 +168,17 @@ std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
     e->R = r.quantity(r.text_of(rn, "radius", "R"), false, L, "radius", "a radius is a length");
     r.positive(e->R, rn.pos, "the radius of track '" + ed.name + "'");
     e->shape = "the circle of centre " + text_of_vec(*circle->get("centre")) + " and radius " + rn.scalar;
+  }
+  if (auto* o = ed.options.get("offset")) {
+    e->offset = r.quantity(r.text_of(*o, "offset", "r"), false, L, "offset", "an offset is a length (the radius of the round body)");
+    e->shape += " at distance " + o->scalar;
+    if (e->circle) {
+      auto rv = r.value_of(e->R + e->offset, o->pos, "the radius of the circle the point keeps to");
+      if (rv && !rv->is_positive())
+        throw SceneError(o->pos, "track '" + ed.name + "': the offset " + o->scalar + " leaves no circle for the point (R + offset = " +
+                                     numerics::format(*rv, 6) + " m)",
+                         "a ball of radius r inside a bowl of radius R has offset -r with r < R");
+    }
   }
   return e;
 }

@@ -20,12 +20,19 @@ TEST_CASE("tracks that hold: the sliding rod's slots, the bowl's circle", "[effe
                   "  slotB: {track: rod.B, line: {through: [0, 0], along: [0, 1]}}\n");
   auto s = solve_text(rod);
   CHECK(kinergy::numerics::format(*kt::result(s, "omega2").si, 4) == "3.502");
-  // the sphere's centre is on the circle of radius R - r about O; checked at the states (a constraint)
-  auto bowl = edit(derivation("energy/sphere_in_bowl.yaml"), "effects:\n",
-                   "effects:\n  bowl: {track: ball, circle: {centre: [0, 0], radius: R - r}}\n");
+  // the sphere's centre is on the circle of radius R - r about O; checked at the states (a constraint).
+  // The derivation declares the bowl itself with offset -r (the sphere touches it); the same circle
+  // without the offset:
+  auto bowl = edit(derivation("energy/sphere_in_bowl.yaml"), "bowl: {track: ball, circle: {centre: [0, 0], radius: R}, offset: -r}",
+                   "bowl: {track: ball, circle: {centre: [0, 0], radius: R - r}}");
   CHECK_NOTHROW(solve_text(bowl));
   REQUIRE_THROWS_WITH(solve_text(edit(bowl, "radius: R - r}", "radius: R}")),
                       Catch::Contains("track 'bowl': ball is 0.1 m off the circle of centre [0, 0] and radius R at state '1'"));
+  // a wheel on an incline, its centre at distance r on the normal's side: the other side is 2 r off
+  auto wheel = derivation("energy/rolling_disk_incline.yaml");
+  CHECK_NOTHROW(solve_text(wheel));
+  REQUIRE_THROWS_WITH(solve_text(edit(wheel, "offset: r}", "offset: -r}")),
+                      Catch::Contains("track 'incline': disk is 0.3 m off the line through [0, 0] along [cos(beta), -sin(beta)] at distance -r"));
 }
 
 TEST_CASE("a track's normal reaction in momentum: a block on a smooth incline", "[effects][track][momentum]") {

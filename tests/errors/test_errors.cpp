@@ -873,6 +873,13 @@ const ExactCase kExact[] = {
      "pin 'middle' joins a body of this energy analysis to one outside it, and the pinned point does not keep to a fixed line "
      "(x or y): the work of its reaction is not one unknown force times a distance \u2014 list both bodies it joins in 'bodies', "
      "or take its reaction from an impulse-momentum analysis of the body"},
+    // a round body touching a surface: its centre keeps to the track at the offset (-r inside a bowl)
+    {"track_offset_wrong_side.yaml", "31:3",
+     "track 'bowl': ball is 0.2 m off the circle of centre [0, 0] and radius R at distance r at state '1' \u2014 fix the body's "
+     "position/angle, the point or the track so that ball stays on it"},
+    {"track_offset_no_circle.yaml", "31:68",
+     "track 'bowl': the offset -R leaves no circle for the point (R + offset = 0 m) \u2014 a ball of radius r inside a bowl of "
+     "radius R has offset -r with r < R"},
     // pushed from rest into a bumper: no rate tells the direction of the motion (an unknown end
     // with a known direction is taken past the switching points: two_stage_bumper_max)
     {"force_max_end_unknown.yaml", "12:3",
