@@ -64,6 +64,16 @@ void symbols_in(const ex& e, std::vector<ex>& out) {
     if (std::find_if(out.begin(), out.end(), [&](const ex& x) { return x.is_equal(e); }) == out.end()) out.push_back(e);
     return;
   }
+  // an integral's variable is bound inside it: only its integrand's other symbols and its ends
+  if (numerics::is_integral(e)) {
+    std::vector<ex> inner;
+    symbols_in(e.op(0), inner);
+    for (auto& x : inner)
+      if (!x.is_equal(e.op(1))) symbols_in(x, out);
+    symbols_in(e.op(2), out);
+    symbols_in(e.op(3), out);
+    return;
+  }
   for (std::size_t i = 0; i < e.nops(); ++i) symbols_in(e.op(i), out);
 }
 

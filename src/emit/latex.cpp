@@ -501,6 +501,12 @@ private:
       std::string s = "\\left\\lvert " + print(f.op(0), 0) + "\\right\\rvert";
       return k == 1 ? s : s + power;
     }
+    if (name == "integral") {
+      // ∫_a^b f dξ (a work integral taken numerically)
+      std::string s = "\\int_{" + print(f.op(2), 0) + "}^{" + print(f.op(3), 0) + "} " + print(f.op(0), kProduct) + "\\,\\mathrm{d}" +
+                      print(f.op(1), kAtom);
+      return k == 1 ? s : paren(s) + power;
+    }
     if (name == "exp") {
       std::string s = "e^{" + print(f.op(0), 0) + "}";
       return k == 1 ? s : paren(s) + power;

@@ -60,6 +60,12 @@ Dimension Model::dimension(const ex& e) const {
   if (is_a<function>(e)) {
     std::string n = ex_to<function>(e).get_name();
     if (n == "abs") return dimension(e.op(0));
+    if (numerics::is_integral(e)) {
+      // ∫_a^b f(ξ) dξ: f's dimension (ξ standing for an end) times the ends'
+      Dimension a = dimension(e.op(2)), b = dimension(e.op(3));
+      if (a != b) throw DimensionError("the ends of '" + text(e) + "' differ in dimension (" + a.str() + ", " + b.str() + ")");
+      return dimension(e.op(0).subs(e.op(1) == e.op(2))) * a;
+    }
     if (n == "atan2") {
       Dimension a = dimension(e.op(0)), b = dimension(e.op(1));
       if (a != b)

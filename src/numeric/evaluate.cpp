@@ -201,4 +201,34 @@ std::optional<numeric> integrate(const ex& f, const symbol& s, const numeric& a,
   return result;
 }
 
+// --- integral(f, s, a, b) -------------------------------------------------------------------
+
+namespace {
+
+DECLARE_FUNCTION_4P(integral)
+
+ex integral_evalf(const ex& f, const ex& s, const ex& a, const ex& b) {
+  ex av = a.evalf(), bv = b.evalf();
+  if (is_a<symbol>(s) && is_a<GiNaC::numeric>(av) && is_a<GiNaC::numeric>(bv) && ex_to<GiNaC::numeric>(av).is_real() &&
+      ex_to<GiNaC::numeric>(bv).is_real())
+    if (auto v = integrate(f, ex_to<symbol>(s), ex_to<GiNaC::numeric>(av), ex_to<GiNaC::numeric>(bv), {}, static_cast<int>(Digits)))
+      return *v;
+  return integral(f, s, a, b).hold();
+}
+
+// d/da ∫_a^b f ds = −f(a), d/db = f(b); by the integrand's own symbols it has no form here
+ex integral_deriv(const ex& f, const ex& s, const ex& a, const ex& b, unsigned i) {
+  if (i == 2) return -f.subs(s == a);
+  if (i == 3) return f.subs(s == b);
+  throw std::logic_error("integral(" + std::to_string(i) + "): only its ends are differentiated");
+}
+
+}  // namespace
+
+REGISTER_FUNCTION(integral, evalf_func(integral_evalf).derivative_func(integral_deriv))
+
+ex integral_of(const ex& f, const symbol& s, const ex& a, const ex& b) { return integral(f, s, a, b).hold(); }
+
+bool is_integral(const ex& e) { return is_ex_the_function(e, integral); }
+
 }  // namespace kinergy::numerics

@@ -267,12 +267,14 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
                                   ", so its work cannot be split where it switches",
                        "give " + m.coords[p->s].name + " at " + (!a && !b ? "one of the states" : "that state") +
                            (!a && !b ? std::string() : ", or a nonzero " + m.coords[p->s].name + "_dot at a state"));
-    if (!a || !b)
-      throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name +
-                                  ", and its value cannot be taken numerically: " + m.coords[p->s].name + " is not known at state '" +
-                                  m.states[!a ? s1 : s2].name + "'",
-                       "give " + m.coords[p->s].name + " at both states, or write the " + what +
-                           " in a form with an elementary antiderivative");
+    if (!a || !b) {
+      // an end unknown: U = ∫_{s(1)}^{s(2)} Q ds held as integral(Q, ξ, s₁, s₂), which takes its
+      // value by quadrature once the ends are numbers — the unknown end is found by a numeric root
+      static const symbol xi("xi");
+      w.U = numerics::integral_of(Qs.subs(s == xi), xi, m.bind(ex(s), s1).subs(given), m.bind(ex(s), s2).subs(given));
+      w.how = "U = integral along " + m.coords[p->s].name + ", numerically at each trial end (no closed form)";
+      return w;
+    }
     auto I = numerics::integrate(model::trig_simplify(Qs), s, *a, *b, vals, kIntegralDigits);
     if (!I)
       throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name +

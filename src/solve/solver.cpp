@@ -388,7 +388,10 @@ private:
         span = ((*hi - *lo) / 2).to_double();
       }
     }
-    const int n = 2000;
+    // a work integral taken by quadrature at each trial costs ~10³ evaluations: a coarser grid
+    bool quadrature = false;
+    for (auto it = r.preorder_begin(); it != r.preorder_end(); ++it) quadrature = quadrature || numerics::is_integral(*it);
+    const int n = quadrature ? 100 : 2000;
     std::vector<ex> roots;
     long saved = Digits;
     Digits = kWork + 10;

@@ -62,12 +62,16 @@ TEST_CASE("a work with no closed form is taken numerically, or refused naming wh
   REQUIRE(v);
   // by mpmath: sqrt(2 M0 phi0 (sqrt(pi)/2) erf(phi2/phi0)/(m k^2))
   CHECK(agree(*v, "6.709051266990077198931405617897785", 29));
-  // the end where the wheel stops is unknown: the integral cannot be taken
-  auto pos = text.find("  2: {phi: phi2}\n");
-  REQUIRE(pos != std::string::npos);
-  text.replace(pos, 17, "  2: {phi_dot: 0}\n");
-  text = text.substr(0, text.find("find:\n")) + "find:\n  phi2s: phi@2\n";
-  REQUIRE_THROWS_WITH(kinergy::solve_scene(kinergy::scene::load_string(text, "cam.yaml")),
-                      Catch::Contains("has no closed form integral along phi, and its value cannot be taken numerically: phi is not "
-                                      "known at state '2'"));
+  // the end is unknown: a braking cam M = -M0 exp(-(phi/phi0)^2) stops the wheel from w0 = 6 rad/s where its
+  // work reaches -(1/2) m k^2 w0^2 = -22.5 J: at phi0 erfinv(22.5/(M0 phi0 sqrt(pi)/2)), by mpmath
+  // 0.7144304417732017885921246356422574 (the derivation wheel_cam_couple_angle reaches 6 rad/s there)
+  auto brake = kt::edit(kt::edit(kt::edit(text, "  2: {phi: phi2}\n", "  2: {phi_dot: 0}\n"), "M: M0*exp(", "M: -M0*exp("),
+                        "  1: {phi: 0, phi_dot: 0}", "  1: {phi: 0, phi_dot: w0}");
+  brake = kt::edit(brake.substr(0, brake.find("find:\n")) + "find:\n  phi2s: phi@2\n", "  phi2: 1.5 rad\n", "  w0: 6 rad/s\n");
+  auto b = kinergy::solve_scene(kinergy::scene::load_string(brake, "cam.yaml"));
+  CHECK(!b.results.at(0).closed_form);
+  CHECK(agree(*b.results.at(0).value(b.model.numeric_environment(), 30), "0.7144304417732017885921246356422574", 30));
+  // from 8 rad/s (40 J) the brake's whole work, M0 phi0 sqrt(pi)/2 = 28.36 J, does not stop it: no root
+  REQUIRE_THROWS_WITH(kinergy::solve_scene(kinergy::scene::load_string(kt::edit(brake, "w0: 6 rad/s", "w0: 8 rad/s"), "cam.yaml")),
+                      Catch::Contains("has no closed form for phi@2 and no root was found"));
 }

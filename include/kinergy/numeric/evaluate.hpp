@@ -29,6 +29,14 @@ std::optional<bool> negligible(const GiNaC::ex& e, const GiNaC::exmap& values, i
 std::optional<GiNaC::numeric> integrate(const GiNaC::ex& f, const GiNaC::symbol& s, const GiNaC::numeric& a,
                                         const GiNaC::numeric& b, const GiNaC::exmap& values, int digits);
 
+/// ∫_a^b f ds held as an expression (a work integral with no elementary antiderivative whose end
+/// is unknown): it takes its value by `integrate` at the working precision once f's other symbols
+/// and both ends are numbers (evalf), and differentiates by its ends (d/db = f(b), d/da = −f(a)),
+/// so that a numeric root search can solve for an end. Printed as integral(f, s, a, b).
+GiNaC::ex integral_of(const GiNaC::ex& f, const GiNaC::symbol& s, const GiNaC::ex& a, const GiNaC::ex& b);
+/// Is e such an integral?
+bool is_integral(const GiNaC::ex& e);
+
 /// v rounded to n significant digits, as text: "3.50178525897863", "-0.00125", "1.5e-12".
 std::string format(const GiNaC::numeric& v, int n);
 
