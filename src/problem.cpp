@@ -13,6 +13,7 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/roots.hpp"
 #include "kinergy/numeric/evaluator.hpp"
 
 namespace kinergy {
@@ -380,6 +381,9 @@ private:
   /// is reached): the stationary points df/dp = 0 inside (sign changes of df/dp on a grid of 400,
   /// refined by bisection to 45 digits), the second derivative there (< 0 at a maximum, > 0 at a
   /// minimum), and the ends; the best of them. Numbers: the result is marked "no closed form".
+  /// 10^−n
+  static numeric tenth(int n) { return ex_to<numeric>(pow(numeric(10), -n)); }
+
   void extreme(const model::Find& f, Result& r) const {
     const auto& x = *f.extreme;
     const symbol& p = ex_to<symbol>(x.p);
@@ -408,24 +412,12 @@ private:
       numeric pi = *lo + (*hi - *lo) * numeric(i, N);
       auto d = value_at(dF, pi);
       if (d && prev && ((d->is_negative() && prev->is_positive()) || (d->is_positive() && prev->is_negative()) || d->is_zero())) {
-        // refine the sign change in [prev_p, pi]
-        numeric a = prev_p, b = pi, fa = *prev;
-        for (int it = 0; it < 160 && !d->is_zero(); ++it) {
-          numeric c = (a + b) / 2;
-          auto fc = value_at(dF, c);
-          if (!fc) break;
-          if (fc->is_zero()) {
-            a = b = c;
-            break;
-          }
-          if ((fc->is_negative() && fa.is_negative()) || (fc->is_positive() && fa.is_positive())) {
-            a = c;
-            fa = *fc;
-          } else {
-            b = c;
-          }
-        }
-        numeric root = d->is_zero() ? pi : (a + b) / 2;
+        // refine the sign change in [prev_p, pi]: dF/dp = 0
+        auto r = d->is_zero() ? std::optional<numeric>(pi)
+                              : numerics::bracketed_root([&](const numeric& c) { return value_at(dF, c); }, prev_p, pi, *prev, *d,
+                                                         tenth(digits), tenth(digits), digits + 10);
+        if (!r) continue;
+        numeric root = *r;
         auto v = value_at(F, root);
         auto s2 = value_at(d2F, root);
         if (v && s2) {
@@ -555,23 +547,13 @@ private:
     // the binding position at b, and h(p) = K there
     std::optional<Low> bind = lowest(b, 400);
     std::optional<numeric> s_star;  // interior stationary point, refined per p
-    auto stationary = [&](const numeric& p, numeric s0, numeric s1) -> std::optional<numeric> {
+    auto stationary = [&](const numeric& p, const numeric& s0, const numeric& s1) -> std::optional<numeric> {
+      // ∂K/∂along = 0 inside [s0, s1]
       ex dK = K.diff(ex_to<symbol>(*x.along));
-      auto d0 = K_at(dK, s0, p);
-      if (!d0) return std::nullopt;
-      for (int it = 0; it < 160; ++it) {
-        numeric c = (s0 + s1) / 2;
-        auto dc = K_at(dK, c, p);
-        if (!dc) return std::nullopt;
-        if (dc->is_zero()) return c;
-        if (dc->is_negative() == d0->is_negative()) {
-          s0 = c;
-          d0 = dc;
-        } else {
-          s1 = c;
-        }
-      }
-      return (s0 + s1) / 2;
+      auto f = [&](const numeric& s) { return K_at(dK, s, p); };
+      auto d0 = f(s0), d1 = f(s1);
+      if (!d0 || !d1) return std::nullopt;
+      return numerics::bracketed_root(f, s0, s1, *d0, *d1, tenth(digits), tenth(digits), digits + 10);
     };
     const int n = 400;
     const bool at_end = !x.along || bind->i == 0 || bind->i == n;
@@ -596,26 +578,11 @@ private:
     if (!ha || !hb || !ha->is_negative() || hb->is_negative())
       throw SceneError(x.pos, "the " + what + " value of '" + x.p_name + "' for which state '" + S + "' is reached could not be isolated" + path,
                        "give 'over' a narrower range of the path, or check the states");
-    numeric tol = abs(b) * ex_to<numeric>(pow(numeric(10), -digits));
-    int side = 0;
-    for (int it = 0; it < 300 && abs(b - a) > tol; ++it) {
-      numeric c = b - *hb * (b - a) / (*hb - *ha);
-      if (!(c > std::min(a, b) && c < std::max(a, b)) || it % 8 == 7) c = (a + b) / 2;
-      auto hc = h(c);
-      if (!hc) break;
-      if (hc->is_negative()) {
-        a = c;
-        ha = hc;
-        if (side == -1) hb = *hb / 2;
-        side = -1;
-      } else {
-        b = c;
-        hb = hc;
-        if (side == 1) ha = *ha / 2;
-        side = 1;
-      }
-    }
-    numeric p_star = b;
+    auto root = numerics::bracketed_root(h, a, b, *ha, *hb, tenth(digits), 0, digits + 10);
+    if (!root)
+      throw SceneError(x.pos, "the " + what + " value of '" + x.p_name + "' for which state '" + S + "' is reached could not be isolated" + path,
+                       "give 'over' a narrower range of the path, or check the states");
+    numeric p_star = *root;
     numeric s_bind = at_end ? bind->s : (s_star ? *s_star : bind->s);
     // the binding position exactly: an end, or a stationary point that is a simple rational (or
     // rational multiple of π, denominator ≤ 360) at which ∂K/∂along vanishes to 40 digits

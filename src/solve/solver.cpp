@@ -6,6 +6,7 @@
 
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/roots.hpp"
 
 namespace kinergy::solve {
 
@@ -343,34 +344,12 @@ private:
     return numerics::evaluate(r, m, digits);
   }
 
-  /// A root in [a, b] where the residual changes sign: Illinois regula falsi at working
-  /// precision (bisection when a step would leave the bracket). Bounded: it always returns.
-  std::optional<numeric> refine(const ex& r, const symbol& u, numeric a, numeric b, numeric fa, numeric fb) const {
+  /// A root in [a, b] where the residual changes sign, at working precision.
+  std::optional<numeric> refine(const ex& r, const symbol& u, const numeric& a, const numeric& b, const numeric& fa,
+                                const numeric& fb) const {
     const int digits = kWork + 10;
-    int side = 0;
-    numeric c = a;
-    for (int it = 0; it < 400; ++it) {
-      c = (a * fb - b * fa) / (fb - fa);
-      if (!(c > std::min(a, b) && c < std::max(a, b))) c = (a + b) / 2;
-      auto fc = residual_at(r, u, c, digits);
-      if (!fc) return std::nullopt;
-      if (fc->is_zero() || abs(b - a) <= abs(c) * pow(numeric(10), -kWork) + pow(numeric(10), -300)) return c;
-      if ((fc->is_positive() && fa.is_positive()) || (fc->is_negative() && fa.is_negative())) {
-        a = c;
-        fa = *fc;
-        if (side == -1) fb = fb / 2;  // Illinois: the end kept twice has its value halved
-        side = -1;
-      } else {
-        b = c;
-        fb = *fc;
-        if (side == 1) fa = fa / 2;
-        side = 1;
-      }
-      c = ex_to<numeric>(c.evalf());  // keep the working numbers floats of fixed size
-      a = ex_to<numeric>(a.evalf());
-      b = ex_to<numeric>(b.evalf());
-    }
-    return c;
+    return numerics::bracketed_root([&](const numeric& x) { return residual_at(r, u, x, digits); }, a, b, fa, fb,
+                                    ex_to<numeric>(pow(numeric(10), -kWork)), ex_to<numeric>(pow(numeric(10), -300)), digits);
   }
 
   // No closed form: find the sign changes of the residual around a reference and refine.
