@@ -456,6 +456,41 @@ private:
     r.extreme_of = F;
     r.closed = x.location ? ex(best->p) : ex(best->F);
     r.closed_form = false;
+    // the place in closed form: an end of the range, or the stationary condition solved for p
+    // (the root that is the number found); the value there follows
+    std::optional<ex> place;
+    if (best->how == "end of the range") place = best->p == *lo ? x.lo : x.hi;
+    else place = stationary_place(dF, p, best->p);
+    if (!place) return;
+    ex at_place = model::factored(model::root_simplify(model::tidy(F.subs(p == *place)), [this](const ex& y) { return m.fixed_sign(y); }));
+    auto pv = numerics::evaluate(*place, env, digits), fv = numerics::evaluate(at_place, env, digits);
+    const numeric close = tenth(30);
+    if (!pv || !fv || abs(*pv - best->p) > close * (abs(best->p) + 1) || abs(*fv - best->F) > close * (abs(best->F) + 1)) return;
+    r.closed = x.location ? *place : at_place;
+    r.closed_form = true;
+  }
+
+  /// The root of dF/dp = 0 that is the stationary point p* found numerically, in closed form when
+  /// the solver finds one (a polynomial in p, or in sin p, cos p or tan p alone).
+  std::optional<ex> stationary_place(const ex& dF, const symbol& p, const numeric& p_star) const {
+    principles::Equation eq{model::tidy(dF).normal().numer(), 0, "stationary", "stationary condition", {}};
+    exmap e = env;
+    e.erase(p);
+    solve::Problem pr{{eq}, {p}, {}, e, {}, {}, {}, {}};
+    std::vector<solve::Branch> branches;
+    try {
+      branches = solve::solve(pr);
+    } catch (const std::exception&) {
+      return std::nullopt;  // no closed form: the number stands
+    }
+    for (auto& b : branches) {
+      auto it = b.sol.find(p);
+      if (it == b.sol.end() || b.numeric_only.count(p)) continue;
+      ex c = model::tidy(model::root_simplify(model::tidy(it->second), [this](const ex& y) { return m.fixed_sign(y); }).eval());
+      auto v = numerics::evaluate(c, env, 45);
+      if (v && abs(*v - p_star) <= tenth(30) * (abs(p_star) + 1)) return c;
+    }
+    return std::nullopt;
   }
 
   /// The least (greatest) value of f's parameter p for which its state S is reached: the
@@ -636,7 +671,8 @@ private:
     if (x.along)
       note << " at " << x.along_name << " = " << numerics::format(s_bind, 8) << (at_end ? " (an end of the path)" : " (where its derivative along the path is zero)");
     note << ", and zero there for " << x.p_name << " = " << numerics::format(p_star, 8) << "; state " << S << " is reached" << path
-         << " for " << x.p_name << (x.least ? " at least " : " at most ") << numerics::format(p_star, 8);
+         << " for " << x.p_name << (x.least ? " above " : " below ") << numerics::format(p_star, 8)
+         << " (at that value itself its kinetic energy there is zero: it comes to rest at that place, or only creeps up to it)";
     r.extreme_note = note.str();
     r.extreme_of = K;
     r.extreme_what = "the kinetic energy at state " + S + " as a function of " + x.p_name + (x.along ? " and " + x.along_name : "");

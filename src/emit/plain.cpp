@@ -94,10 +94,12 @@ std::string product(const ex& e, int ctx) {
     c = 1;
   }
   std::string top, bottom;
+  // a root stands in the numerator (with only numbers under it after the fold, √(1/3) too)
+  const bool root = !f.root_num.empty() || !f.root_den.empty();
   if (!c.is_integer() && c.is_rational()) {
-    if (c.numer() != 1 || (f.num.empty() && f.root_num.empty())) top = number(c.numer());
+    if (c.numer() != 1 || (f.num.empty() && !root)) top = number(c.numer());
     bottom = number(c.denom());
-  } else if (c != 1 || (f.num.empty() && f.root_num.empty())) {
+  } else if (c != 1 || (f.num.empty() && !root)) {
     top = number(c);
   }
   std::string n = join(f.num);

@@ -22,7 +22,6 @@ struct Equation {
   ex residual() const { return lhs - rhs; }
 };
 
-/// The work of one non-conservative effect between two states, in state symbols.
 /// What an equation took for granted about the solution: `e` (state-bound) ≥ 0 there, or the
 /// branch is no solution (a force that switches, taken as switched at a state whose position is
 /// unknown).
@@ -32,6 +31,7 @@ struct Condition {
   SourcePos pos;
 };
 
+/// The work of one non-conservative effect between two states, in state symbols.
 struct Work {
   std::string effect;
   ex U;
