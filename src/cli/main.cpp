@@ -2,7 +2,7 @@
 //   kinergy solve SCENE [--digits N] [--json]
 //   kinergy derive SCENE [--latex FILE.tex] [--pdf FILE.pdf] [--digits N]
 //   kinergy verify SCENE... [--json]
-//   kinergy simulate SCENE --until T [--tol E] [--method M] [--csv FILE] [--plot FILE] [--check]
+//   kinergy simulate SCENE --until T [--tol E] [--method M] [--csv FILE] [--plot FILE] [--samples N | --dt T] [--check]
 // Exit status: 0 ok, 1 bad scene / no solution / a claim fails, 2 usage.
 #include <chrono>
 #include <cstdlib>
@@ -129,6 +129,14 @@ int main(int argc, char** argv) {
   simulate->add_option("--csv", csv_out, "write t, q, q_dot, T, V, E per step to FILE")->check(writable_file());
   simulate->add_option("--plot", plot_out, "draw coordinates and energy against time into FILE.svg or FILE.png (gnuplot)")
       ->check(writable_file());
+  int samples = 1000;
+  double sample_dt = 0;
+  simulate->add_option("--samples", samples,
+                       "for --csv and --plot: this many samples at regular times over the run, from the integrator's dense output, "
+                       "with every event exactly (default 1000; 0: the accepted steps themselves)")
+      ->check(CLI::Range(0, 10000000));
+  simulate->add_option("--dt", sample_dt, "for --csv and --plot: a sample every DT seconds instead of --samples")
+      ->check(finite_in(0, 1e300, false, "a positive interval in s"));
   simulate->add_flag("--equations", equations, "print the equations of motion");
   simulate->add_flag("--check", check, "run every analysis of the scene as a simulation and compare with the closed forms");
   simulate->add_flag("--no-native", no_native, "evaluate the right-hand side by the tape instead of compiled machine code");
@@ -259,6 +267,8 @@ int main(int argc, char** argv) {
                     << static_cast<int>(f * 100) << "%" << std::flush;
           shown = true;
         };
+      // what --csv and --plot draw: regular samples (dense output), or the accepted steps
+      if (!csv_out.empty() || !plot_out.empty()) o.sample_dt = sample_dt > 0 ? sample_dt : samples > 0 ? (until - s0.t) / samples : 0;
       // a given impulse acts at the state an impact analysis starts from (or, without
       // analyses, at the start): not again from a state after it
       bool impulses = m.analyses.empty();

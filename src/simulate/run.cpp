@@ -173,6 +173,11 @@ public:
     }
     max_T_ = std::max(max_T_, p_.T());
     record();
+    t0_ = t_;
+    next_k_ = 1;
+    if (sampling() && span_ / p_.o.sample_dt > 1e7)
+      throw SimulationError("sampling every " + num(p_.o.sample_dt) + " s over " + num(span_) + " s makes more than 10^7 samples",
+                            "sample less often (a larger --dt, fewer --samples)");
     if (span_ > 0) integrate();
     finish();
     return std::move(run_);
@@ -334,6 +339,7 @@ private:
       }
       ++run_.steps;
       if (which < 0) {
+        if (sampling()) samples_between(t_, y_, t, y);
         t_ = t;
         y_.swap(y);
         if (after_step()) {
@@ -344,9 +350,11 @@ private:
         }
         vn0 = vn_last_;
       } else {
+        if (sampling()) samples_between(t_, y_, t_ + when, ywhen);
         t_ = t_ + when;
         y_ = ywhen;
         if (!handle(static_cast<std::size_t>(which))) break;  // the stop condition
+        if (sampling()) record();  // after the event, at the same time (an impact's rebound)
         stepper_->reset();
         if (watch) ev0 = events(t_, y_);
         vn0 = vn_last_;
@@ -381,8 +389,35 @@ private:
     // the largest T (the scale of the energy audit) is taken at every step
     p_.eval_aux(t_, y_.data());
     max_T_ = std::max(max_T_, p_.T());
-    if (p_.o.record) record();
+    if (p_.o.record && !sampling()) record();
     return moved;
+  }
+
+  // ---------------------------------------------------------------- regular samples
+  bool sampling() const { return p_.o.record && p_.o.sample_dt > 0; }
+  double t0_ = 0;            ///< the run's start: samples at t0_ + k·sample_dt
+  std::size_t next_k_ = 1;   ///< the next sample's k
+
+  // the samples whose times fall in (ta, tb], from the cubic Hermite interpolant through the
+  // step's ends: y(ta + u h) = h00 ya + h10 h ẏa + h01 yb + h11 h ẏb
+  void samples_between(double ta, const state_type& ya, double tb, const state_type& yb) {
+    const double dt = p_.o.sample_dt, h = tb - ta;
+    if (!(h > 0)) return;
+    std::vector<double> fa, fb;
+    for (double tk = t0_ + static_cast<double>(next_k_) * dt; tk <= tb; tk = t0_ + static_cast<double>(++next_k_) * dt) {
+      if (tk <= ta) continue;
+      if (fa.empty()) {
+        fa.resize(ya.size());
+        fb.resize(yb.size());
+        p_.rhs(ya.data(), ta, fa.data());
+        p_.rhs(yb.data(), tb, fb.data());
+      }
+      const double u = (tk - ta) / h, h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u),
+                   h11 = u * u * (u - 1);
+      state_type y(ya.size());
+      for (std::size_t i = 0; i < ya.size(); ++i) y[i] = h00 * ya[i] + h10 * h * fa[i] + h01 * yb[i] + h11 * h * fb[i];
+      run_.samples.push_back(sample_at(tk, y));
+    }
   }
 
   // The integration from (t_, y_) over s, by the same method (adaptive methods: as many
@@ -834,10 +869,11 @@ private:
 
   // ---------------------------------------------------------------- records
   // the state now, with its energies
-  Sample sample() {
-    p_.eval_aux(t_, y_.data());
+  Sample sample() { return sample_at(t_, y_); }
+  Sample sample_at(double t, const state_type& y) {
+    p_.eval_aux(t, y.data());
     const auto n = static_cast<long>(p_.n);
-    return Sample{t_, std::vector<double>(y_.begin(), y_.begin() + n), std::vector<double>(y_.begin() + n, y_.begin() + 2 * n),
+    return Sample{t, std::vector<double>(y.begin(), y.begin() + n), std::vector<double>(y.begin() + n, y.begin() + 2 * n),
                   p_.T(), p_.V()};
   }
   void record() { run_.samples.push_back(sample()); }

@@ -42,7 +42,12 @@ struct Options {
   double tol = 1e-10;        ///< absolute and relative tolerance of the adaptive methods
   double step = 0;           ///< fixed step of symplectic and rk4 (0: span/10⁴)
   bool native = true;        ///< right-hand side as machine code (else the tape, same doubles)
-  bool record = true;        ///< keep every accepted step as a sample
+  bool record = true;        ///< keep samples (every accepted step, or every `sample_dt`)
+  /// > 0: samples at the regular times t₀ + k·sample_dt, from the integrator's steps by cubic
+  /// Hermite interpolation (the state and its rate at both ends of the step: error O(h⁴)), and
+  /// at each event exactly (an impact: the states before and after it, at the same time);
+  /// 0: the accepted steps themselves.
+  double sample_dt = 0;
   /// The effects that act (by index; empty: all): those switched on over the run.
   std::vector<bool> effects_on;
   std::size_t max_steps = 100'000'000;
