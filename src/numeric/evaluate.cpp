@@ -1,6 +1,7 @@
 #include "kinergy/numeric/evaluate.hpp"
 
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include <cln/cln.h>
@@ -148,11 +149,23 @@ std::optional<numeric> integrate(const ex& f, const symbol& s, const numeric& a,
   // x = c + r tanh(π/2 sinh t),  dx = r (π/2) cosh t / cosh²(π/2 sinh t) dt,  c = (a + b)/2, r = (b − a)/2
   const numeric c = (a + b) / 2, r = (b - a) / 2;
   exmap at = values;
+  // the nodes on [−1, 1], tanh(π/2 sinh t) and (π/2) cosh t / cosh²(π/2 sinh t), for t a
+  // multiple of 2^−12 at this precision: the same for every integrand, kept between calls
+  static thread_local std::map<std::pair<int, long>, std::pair<numeric, numeric>> unit_nodes;
+  auto unit_node = [&](const numeric& t) -> const std::pair<numeric, numeric>& {
+    const long key = (t * 4096).to_long();
+    auto it = unit_nodes.find({work, key});
+    if (it != unit_nodes.end()) return it->second;
+    if (unit_nodes.size() > 200000) unit_nodes.clear();
+    numeric un = ex_to<numeric>((Pi / 2 * sinh(ex(t))).evalf());
+    numeric th = ex_to<numeric>(tanh(ex(un)).evalf());
+    numeric wt = ex_to<numeric>((Pi / 2 * cosh(ex(t)) / pow(cosh(ex(un)), 2)).evalf());
+    return unit_nodes.emplace(std::pair<int, long>{work, key}, std::pair<numeric, numeric>{th, wt}).first->second;
+  };
   auto node = [&](const numeric& t) -> std::optional<numeric> {
-    ex u = (Pi / 2 * sinh(ex(t))).evalf();
-    numeric un = ex_to<numeric>(u);
-    numeric x = ex_to<numeric>((c + r * tanh(ex(un))).evalf());
-    numeric w = ex_to<numeric>((r * Pi / 2 * cosh(ex(t)) / pow(cosh(ex(un)), 2)).evalf());
+    const auto& [th, wt] = unit_node(t);
+    numeric x = ex_to<numeric>((c + r * th).evalf());
+    numeric w = ex_to<numeric>((r * wt).evalf());
     if (w.is_zero() || x == a || x == b) return numeric(0);  // underflowed: beyond the integrand's reach
     at[s] = x;
     auto v = evaluate(f, at, work);
@@ -179,7 +192,10 @@ std::optional<numeric> integrate(const ex& f, const symbol& s, const numeric& a,
       sum += *v;
     }
     numeric prev = sum * h;
-    for (int level = 1; level <= 12; ++level) {
+    // a few digits (a root search's signs) need few levels; a value that does not settle by then
+    // is no value
+    const int levels = digits <= 10 ? 7 : 12;
+    for (int level = 1; level <= levels; ++level) {
       h /= 2;
       // the new nodes are the odd multiples of h
       for (numeric t = -T + h; t < T; t += 2 * h) {

@@ -371,6 +371,7 @@ private:
     bool quadrature = false;
     for (auto it = r.preorder_begin(); it != r.preorder_end(); ++it) quadrature = quadrature || numerics::is_integral(*it);
     const int n = quadrature ? 100 : 2000;
+    const int scan_digits = quadrature ? 6 : 20;  // the signs only: a quadrature at 6 digits is cheap
     std::vector<ex> roots;
     long saved = Digits;
     Digits = kWork + 10;
@@ -383,11 +384,11 @@ private:
     };
     auto grid = [&](int i) { return numeric(ref) - numeric(span) + numeric(2 * span) * numeric(i, n); };
     numeric x0 = grid(0);
-    auto f0 = residual_at(r, u, x0, 20);
+    auto f0 = residual_at(r, u, x0, scan_digits);
     if (f0 && f0->is_zero()) keep(x0);
     for (int i = 1; i <= n && roots.size() <= 8; ++i) {
       numeric x1 = grid(i);
-      auto f1 = residual_at(r, u, x1, 20);
+      auto f1 = residual_at(r, u, x1, scan_digits);
       if (f1 && f1->is_zero()) {
         keep(x1);  // exactly on the grid
       } else if (f0 && f1 && !f0->is_zero() && (f0->is_negative() != f1->is_negative())) {
