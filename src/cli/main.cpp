@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/emit/emit.hpp"
 #include "kinergy/problem.hpp"
@@ -114,6 +115,12 @@ int main(int argc, char** argv) {
   verify->add_option("--rtol", rtol, "accept a value within this relative difference of the derived one (e.g. 0.005: books round on the way)")
       ->check(finite_in(0, 1, true, "a relative tolerance such as 0.005"));
 
+  std::string draw_state, draw_out;
+  auto* draw = app.add_subcommand("draw", "draw the scene at a state from its model: bodies, points, supports, springs, forces");
+  draw->add_option("SCENE", scene, "scene file (YAML)")->required();
+  draw->add_option("--state", draw_state, "the state to draw (default: the first)");
+  draw->add_option("-o,--output", draw_out, "FILE.svg, FILE.pdf or FILE.png (default: SVG on standard output)");
+
   double until = 0, tol = 1e-10, step = 0;
   std::string method = "dopri5", from, csv_out, plot_out;
   bool equations = false, check = false, no_native = false;
@@ -191,6 +198,27 @@ int main(int argc, char** argv) {
           return 1;
         }
       }
+      return 0;
+    });
+  }
+  if (*draw) {
+    return guarded(scene, [&]() -> int {
+      kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
+      // the state's coordinates: solved when the scene has analyses, else as given
+      std::optional<kinergy::Solution> sol;
+      std::optional<kinergy::model::Model> bare;
+      if (def.analyses.empty()) bare = kinergy::model::Model::build(def);
+      else sol = kinergy::solve_scene(def);
+      const kinergy::model::Model& m = sol ? sol->model : *bare;
+      if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to draw", "add a state with every coordinate");
+      int st = 0;
+      if (!draw_state.empty()) {
+        st = m.state_index(draw_state);
+        if (st < 0) throw kinergy::SceneError({scene, 1, 1}, "there is no state '" + draw_state + "'", "name a state of the scene's 'states'");
+      }
+      auto fig = kinergy::draw::scene_at(m, sol ? sol->branch.sol : GiNaC::exmap{}, sol ? kinergy::simulate::simulation_values(*sol) : m.parameter_values(), st);
+      if (draw_out.empty()) std::cout << fig.svg();
+      else kinergy::draw::write(fig, draw_out);
       return 0;
     });
   }

@@ -1,12 +1,14 @@
 // Pieces several effect kinds share (private to src/effects).
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <memory>
 #include <random>
 #include <vector>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/draw/figure.hpp"
 #include "kinergy/model/model.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/principles/momentum.hpp"
@@ -14,6 +16,10 @@
 #include "kinergy/simulate/equations.hpp"
 
 namespace kinergy::effects {
+
+using draw::At;
+using draw::Figure;
+using draw::Ink;
 
 using GiNaC::ex;
 using model::Analysis;

@@ -1,6 +1,7 @@
 // A contact: two parties (body points, bodies, fixed points or the ground) that may strike along
 // a normal n̂ (from the first into the second) with restitution e, smooth or rough.
 #include "kinergy/effects/contact.hpp"
+#include "kinergy/draw/figure.hpp"
 
 #include "common.hpp"
 
@@ -29,6 +30,17 @@ std::pair<ex, ex> Contact::impulse(const Model& m, int, int ai) const {
 // `impulse(hit, S1, S2)` of a contact is J, its impulse along n
 ex Contact::impulse_size(const Model& m, int ai, const ex&, const ex&) const {
   return m.analyses[ai].contact_impulses.at(name).first;
+}
+
+// the contact: its surface (a line across n̂ through the first party's point) and n̂ as a short
+// arrow from there into the second party
+void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
+  const PointRef& p = a.ground || a.body < 0 ? b : a;
+  auto [x, y] = at.point(m.position(p));
+  const double ux = at(nx), uy = at(ny), g = f.glyph();
+  f.line(x - uy * g * 3, y + ux * g * 3, x + uy * g * 3, y - ux * g * 3, draw::Ink::Track);
+  f.arrow(x, y, x + ux * g * 2, y + uy * g * 2, draw::Ink::Thin);
+  f.label(x + ux * g * 2, y + uy * g * 2, name + " n");
 }
 
 std::pair<ex, ex> Contact::impact_impulse_on(const Model& m, int body, int ai) const {

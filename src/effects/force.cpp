@@ -46,6 +46,16 @@ public:
   void motion(const Model& m, int self, simulate::Equations& eq) const override {
     eq.forces.push_back(simulate::force_term(m, *this, self));
   }
+
+  // an arrow along F ending at its point, 3 glyphs long, labelled with its name
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    auto [x, y] = at.point(m.position(a));
+    const double fx = at(Fx), fy = at(Fy), F = std::hypot(fx, fy);
+    if (!(F > 0)) return;
+    const double L = f.glyph() * 3;
+    f.arrow(x - fx / F * L, y - fy / F * L, x, y, Ink::Force);
+    f.label(x - fx / F * L, y - fy / F * L, name);
+  }
 };
 
 }  // namespace

@@ -9,6 +9,16 @@ class Gravity : public Effect {
 public:
   ex g = 0, dir_x = 0, dir_y = -1;
 
+  // the weight of each body: an arrow from its centre along g
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    const double dx = at(dir_x), dy = at(dir_y), L = f.glyph() * 2.5;
+    for (auto& b : m.bodies) {
+      const double x = at(b.x), y = at(b.y);
+      f.arrow(x, y, x + dx * L, y + dy * L, Ink::Force);
+      f.label(x + dx * L, y + dy * L, "m g");
+    }
+  }
+
   bool conservative() const override { return true; }
 
   std::vector<int> bodies_acted(const Model& m) const override {

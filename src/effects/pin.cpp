@@ -112,6 +112,13 @@ public:
   }
 
   void motion(const Model&, int, simulate::Equations&) const override {}  // the coordinates keep the points together
+
+  // a joint: a ring at the pinned point, on hatched ground when one side is a fixed point
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    auto [x, y] = at.point(m.position(b.body >= 0 ? b : a));
+    f.circle(x, y, f.glyph() * 0.45, Ink::Support);
+    if (a.body < 0 || b.body < 0) f.ground(x, y);
+  }
 };
 
 // A pin declares that two points coincide for every value of the coordinates.

@@ -127,6 +127,24 @@ public:
   void pushes(const Model&, const Analysis& an, const Knowledge&, std::vector<Push>&) const override {
     refuse_elastic_push(*this, acts_on(an, a.body), acts_on(an, b.body));
   }
+
+  // a zigzag from P1 to P2: straight ends, eight teeth between, its name at the middle
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    auto [x1, y1] = at.point(m.position(a));
+    auto [x2, y2] = at.point(m.position(b));
+    const double L = std::hypot(x2 - x1, y2 - y1);
+    if (!(L > 0)) return;
+    const double ux = (x2 - x1) / L, uy = (y2 - y1) / L, w = std::min(f.glyph() * 0.5, L / 6);
+    std::vector<std::pair<double, double>> pts{{x1, y1}, {x1 + ux * L * 0.15, y1 + uy * L * 0.15}};
+    for (int i = 1; i <= 8; ++i) {
+      const double s = 0.15 + 0.7 * (i - 0.5) / 8, side = (i % 2 ? 1 : -1) * w;
+      pts.push_back({x1 + ux * L * s - uy * side, y1 + uy * L * s + ux * side});
+    }
+    pts.push_back({x1 + ux * L * 0.85, y1 + uy * L * 0.85});
+    pts.push_back({x2, y2});
+    f.polyline(pts, Ink::Spring);
+    f.label((x1 + x2) / 2, (y1 + y2) / 2, name);
+  }
 };
 
 }  // namespace

@@ -80,6 +80,21 @@ public:
 
   void motion(const Model&, int, simulate::Equations&) const override {}  // the coordinates keep the point on it
 
+  // the guide: a dashed stretch of its line about the point, or its circle (at the offset, the
+  // surface itself: the line moved back along its normal, the circle's radius R)
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    auto [px, py] = at.point(m.position(p));
+    if (circle) {
+      f.circle(at(x0), at(y0), at(R), Ink::Track);
+    } else {
+      const double ux = at(tx), uy = at(ty), off = at(offset), nx = -uy, ny = ux;
+      // the foot of the point on the surface, and a stretch of ±25 glyphs along it (about the scene)
+      const double fx = px - off * nx, fy = py - off * ny, L = f.glyph() * 25;
+      f.line(fx - ux * L, fy - uy * L, fx + ux * L, fy + uy * L, Ink::Track);
+    }
+    f.label(px, py, name);
+  }
+
   std::string off_track(const Model& m, const GiNaC::exmap& at) const {
     ex d = distance(m);
     ex v;

@@ -254,6 +254,8 @@ private:
         a.push_back(e);
       }
       b.inertia = shape.inertia(b.mass, a);
+      b.shape = shape.name;
+      b.sizes = a;
       b.x = checked(bd.x, SceneContext::Geometry, L, "position[0]", "positions are lengths");
       b.y = checked(bd.y, SceneContext::Geometry, L, "position[1]", "positions are lengths");
       b.angle = bd.angle ? checked(*bd.angle, SceneContext::Geometry, Dimension{}, "angle",

@@ -13,19 +13,19 @@ using Sizes = std::vector<ex>;
 
 const std::vector<InertiaShape>& inertia_shapes() {
   static const std::vector<InertiaShape> table = {
-      {"slender_rod", 1, false, "a slender rod", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2) / 12; }},  // m L²/12
-      {"disk", 1, false, "a disk", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2) / 2; }},          // m r²/2
-      {"cylinder", 1, false, "a cylinder", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2) / 2; }},      // m r²/2
-      {"ring", 1, false, "a ring", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2); }},              // m r²
-      {"hoop", 1, false, "a hoop", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2); }},              // m r²
+      {"slender_rod", 1, false, "a slender rod", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2) / 12; }, Outline::Bar},  // m L²/12
+      {"disk", 1, false, "a disk", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2) / 2; }, Outline::Round},          // m r²/2
+      {"cylinder", 1, false, "a cylinder", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2) / 2; }, Outline::Round},      // m r²/2
+      {"ring", 1, false, "a ring", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2); }, Outline::Round},              // m r²
+      {"hoop", 1, false, "a hoop", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2); }, Outline::Round},              // m r²
       {"plate", 2, false, "a rectangular plate",
-       [](const ex& m, const Sizes& a) { return m * (pow(a[0], 2) + pow(a[1], 2)) / 12; }},          // m (a² + b²)/12
-      {"sphere", 1, false, "a sphere", [](const ex& m, const Sizes& a) { return 2 * m * pow(a[0], 2) / 5; }},   // 2 m r²/5
+       [](const ex& m, const Sizes& a) { return m * (pow(a[0], 2) + pow(a[1], 2)) / 12; }, Outline::Rect},          // m (a² + b²)/12
+      {"sphere", 1, false, "a sphere", [](const ex& m, const Sizes& a) { return 2 * m * pow(a[0], 2) / 5; }, Outline::Round},   // 2 m r²/5
       {"spherical_shell", 1, false, "a spherical shell",
-       [](const ex& m, const Sizes& a) { return 2 * m * pow(a[0], 2) / 3; }},                       // 2 m r²/3
-      {"gyration", 1, false, "given radius of gyration", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2); }},          // m k²
-      {"centroidal", 1, true, "given centroidal moment of inertia", [](const ex&, const Sizes& a) { return a[0]; }},                       // Ī given
-      {"particle", 0, false, "", [](const ex&, const Sizes&) { return ex(0); }},
+       [](const ex& m, const Sizes& a) { return 2 * m * pow(a[0], 2) / 3; }, Outline::Round},                       // 2 m r²/3
+      {"gyration", 1, false, "given radius of gyration", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2); }, Outline::Round},          // m k²
+      {"centroidal", 1, true, "given centroidal moment of inertia", [](const ex&, const Sizes& a) { return a[0]; }, Outline::Dot},                       // Ī given
+      {"particle", 0, false, "", [](const ex&, const Sizes&) { return ex(0); }, Outline::Dot},
   };
   return table;
 }

@@ -18,6 +18,7 @@ public:
   GiNaC::ex impulse_size(const model::Model& m, int ai, const GiNaC::ex& x, const GiNaC::ex& y) const override;
   std::pair<GiNaC::ex, GiNaC::ex> impact_impulse_on(const model::Model& m, int b, int ai) const override;
   GiNaC::ex impact_loss(const model::Model& m, int ai) const override;
+  void draw(const model::Model& m, const draw::At& at, draw::Figure& f) const override;
   void motion(const model::Model& m, int self, simulate::Equations& eq) const override;
 };
 

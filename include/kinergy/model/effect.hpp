@@ -27,6 +27,10 @@ struct Push;
 namespace kinergy::simulate {
 struct Equations;
 }
+namespace kinergy::draw {
+class Figure;
+struct At;
+}
 
 namespace kinergy::model {
 
@@ -164,6 +168,11 @@ public:
   /// Add this effect's terms to the equations of motion (`self`: its index); by default a
   /// conservative effect's Q_i = −∂V/∂q_i. @throws SceneError when it cannot be simulated.
   virtual void motion(const Model& m, int self, simulate::Equations& eq) const;
+
+  // --- pictures ---
+  /// Draw itself into a figure of the scene at a state (`at` gives numbers of expressions
+  /// there): a pin as a joint, a spring as a zigzag, a force as an arrow … Nothing by default.
+  virtual void draw(const Model& /*m*/, const draw::At& /*at*/, draw::Figure& /*f*/) const {}
   /// Check what it declares for every value of the coordinates, once every effect is read (the
   /// constraints complete). @throws SceneError when it does not hold.
   virtual void check_model(const Model&) const {}

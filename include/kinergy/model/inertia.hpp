@@ -8,6 +8,10 @@
 
 namespace kinergy::model {
 
+/// How a body of that shape is drawn (src/draw): a bar of length a[0] along its x axis, a round
+/// body of radius a[0] with a line showing its angle, an a[0] × a[1] rectangle, or a dot.
+enum class Outline { Bar, Round, Rect, Dot };
+
 struct InertiaShape {
   std::string name;
   int sizes = 1;       ///< how many sizes it takes (0: written alone, e.g. `particle`)
@@ -15,6 +19,7 @@ struct InertiaShape {
   std::string words;   ///< in a derivation's text: "a slender rod" ("" for none)
   /// Ī from the mass and the sizes
   std::function<GiNaC::ex(const GiNaC::ex& m, const std::vector<GiNaC::ex>& a)> inertia;
+  Outline outline = Outline::Dot;
 };
 
 /// The table of shapes (src/model/inertia.cpp), in the order messages list them.

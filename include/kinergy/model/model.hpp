@@ -38,6 +38,8 @@ struct Body {
   std::string name;
   SourcePos pos;
   ex mass, inertia;            ///< m and centroidal Ī
+  std::string shape;           ///< its inertia shape's name (model/inertia.hpp): how it is drawn
+  std::vector<ex> sizes;       ///< the shape's sizes (lengths; Ī for `centroidal`)
   ex x, y, angle;              ///< mass centre and body angle in coordinates (and t)
   std::map<std::string, std::pair<ex, ex>> points;  ///< body axes through G
 };

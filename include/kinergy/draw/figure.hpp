@@ -1,0 +1,79 @@
+/// @file figure.hpp  A figure in world coordinates (metres, y up), fitted to a page and written
+/// as SVG: the scene's bodies, points and effects drawn at a state.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace kinergy::model {
+class Model;
+}
+
+namespace kinergy::draw {
+
+/// Numbers of expressions at one state: coordinates, rates, time and parameters substituted.
+struct At {
+  GiNaC::exmap values;
+  double operator()(const GiNaC::ex& e) const;  ///< NaN where e has no real value there
+  std::pair<double, double> point(const std::pair<GiNaC::ex, GiNaC::ex>& p) const { return {(*this)(p.first), (*this)(p.second)}; }
+};
+
+/// What a stroke is for: its colour and weight follow.
+enum class Ink { Body, Thin, Support, Force, Spring, Track, Hidden };
+
+class Figure {
+public:
+  struct Shape {
+    enum Kind { Line, Circle, Polygon, Polyline, Arrow, Arc, Mark } kind;
+    std::vector<std::pair<double, double>> pts;  ///< world coordinates (Arc: centre, then (r, a0..a1) in pts[1], pts[2])
+    double r = 0;
+    Ink ink = Ink::Body;
+    bool filled = false;
+    std::string id;  ///< data-name of a marked point, for reading positions back
+  };
+  struct Label {
+    double x, y;  ///< the anchor, world coordinates
+    std::string text;
+  };
+
+  void line(double x1, double y1, double x2, double y2, Ink ink = Ink::Body);
+  void polyline(std::vector<std::pair<double, double>> pts, Ink ink, bool closed = false, bool filled = false);
+  void circle(double cx, double cy, double r, Ink ink = Ink::Body, bool filled = false);
+  /// An arrow from (x1, y1) to (x2, y2), its head at the end.
+  void arrow(double x1, double y1, double x2, double y2, Ink ink = Ink::Force);
+  /// A curved arrow round (cx, cy) of radius r from angle a0 to a1 (rad), its head at a1.
+  void arc_arrow(double cx, double cy, double r, double a0, double a1, Ink ink = Ink::Force);
+  /// A named point: a small marker of fixed size on the page, its world place kept as data.
+  void mark(double x, double y, const std::string& name, bool fixed = false);
+  /// Hatched ground under a fixed support at (x, y).
+  void ground(double x, double y);
+  void label(double x, double y, const std::string& text);
+
+  /// A length that reads as "small" in this figure (for glyphs whose size the scene does not set).
+  double glyph() const;
+  void set_glyph(double g) { glyph_ = g; }
+
+  /// The whole figure as an SVG document `width` pixels wide (height from the extent), the world
+  /// drawn in a group whose transform maps metres to pixels (y flipped); labels kept off each other.
+  std::string svg(int width = 640) const;
+
+  const std::vector<Shape>& shapes() const { return shapes_; }
+
+private:
+  std::vector<Shape> shapes_;
+  std::vector<Label> labels_;
+  double glyph_ = 0.05;
+};
+
+/// The scene at state `state` (coordinates and rates given or solved in `solved`), drawn from
+/// the model: each body by its inertia shape, its named points, the fixed points, and each
+/// effect as it draws itself. @throws SceneError when the state does not fix a coordinate.
+Figure scene_at(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int state);
+
+/// Write the figure to `path`: .svg as it is, .pdf or .png converted by rsvg-convert (Debian
+/// librsvg2-bin). @throws InputError for another extension, a missing converter or a failed write.
+void write(const Figure& f, const std::string& path);
+
+}  // namespace kinergy::draw
