@@ -85,6 +85,23 @@ int guarded(const std::string& file, const std::function<int()>& f) {
 
 }  // namespace
 
+namespace {
+
+/// A scene for a state's numbers: solved when it has analyses (the states' unknown values), else
+/// the model alone (the states as given).
+struct Loaded {
+  std::optional<kinergy::Solution> sol;
+  std::optional<kinergy::model::Model> bare;
+  explicit Loaded(const std::string& file) {
+    kinergy::scene::SceneDef def = kinergy::scene::load_file(file);
+    if (def.analyses.empty()) bare = kinergy::model::Model::build(def);
+    else sol = kinergy::solve_scene(def);
+  }
+  const kinergy::model::Model& model() const { return sol ? sol->model : *bare; }
+};
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"kinergy: plane rigid-body motion by energy and momentum, in closed form"};
   app.require_subcommand(1);
@@ -203,13 +220,9 @@ int main(int argc, char** argv) {
   }
   if (*draw) {
     return guarded(scene, [&]() -> int {
-      kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
-      // the state's coordinates: solved when the scene has analyses, else as given
-      std::optional<kinergy::Solution> sol;
-      std::optional<kinergy::model::Model> bare;
-      if (def.analyses.empty()) bare = kinergy::model::Model::build(def);
-      else sol = kinergy::solve_scene(def);
-      const kinergy::model::Model& m = sol ? sol->model : *bare;
+      Loaded in(scene);
+      const kinergy::model::Model& m = in.model();
+      const auto& sol = in.sol;
       if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to draw", "add a state with every coordinate");
       int st = 0;
       if (!draw_state.empty()) {
@@ -225,13 +238,9 @@ int main(int argc, char** argv) {
   if (*simulate) {
     return guarded(scene, [&]() -> int {
       namespace sim = kinergy::simulate;
-      kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
-      // the start state as numbers: solved when the scene has analyses, else as given
-      std::optional<kinergy::Solution> sol;
-      std::optional<kinergy::model::Model> bare;
-      if (def.analyses.empty()) bare = kinergy::model::Model::build(def);
-      else sol = kinergy::solve_scene(def);
-      const kinergy::model::Model& m = sol ? sol->model : *bare;
+      Loaded in(scene);
+      const kinergy::model::Model& m = in.model();
+      const auto& sol = in.sol;
       if (!plot_out.empty()) {
         auto ext = std::filesystem::path(plot_out).extension();
         if (ext != ".svg" && ext != ".png")
