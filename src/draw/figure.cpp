@@ -114,6 +114,18 @@ void Figure::label(double x, double y, const std::string& text) { labels_.push_b
 
 double Figure::glyph() const { return glyph_; }
 
+double Figure::extent() const {
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  for (auto& s : shapes_)
+    for (auto& p : s.pts) {
+      if (!std::isfinite(p.first) || !std::isfinite(p.second)) continue;
+      const double r = s.kind == Shape::Circle ? s.r : 0;
+      x0 = std::min(x0, p.first - r), x1 = std::max(x1, p.first + r);
+      y0 = std::min(y0, p.second - r), y1 = std::max(y1, p.second + r);
+    }
+  return std::isfinite(x0) ? std::max(x1 - x0, y1 - y0) : 0;
+}
+
 std::string Figure::svg(int width) const {
   // the extent of everything drawn (world)
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
@@ -251,68 +263,61 @@ Figure scene_at(const model::Model& m, const exmap& solved, const exmap& params,
     at.values[c.qd] = std::isnan(r) ? 0 : r;
   }
   if (double t = value_of(S.t); !std::isnan(t)) at.values[m.t] = t;
-  Figure f;
-  // the size of glyphs: from the bodies' sizes and the spread of the points
+  // drawn twice: glyphs (marks, arrows, ground) sized from the extent of the first drawing
+  auto drawing = [&](double glyph) {
+    Figure f;
+    f.set_glyph(glyph);
+    // the bodies by their shapes: r = G + R(φ) (lx, ly)
+    for (auto& b : m.bodies) {
+      const double gx = at(b.x), gy = at(b.y), phi = at(b.angle), c = std::cos(phi), s = std::sin(phi);
+      auto world = [&](double lx, double ly) { return std::pair<double, double>{gx + c * lx - s * ly, gy + s * lx + c * ly}; };
+      const model::InertiaShape& shape = model::inertia_shape(b.shape);
+      const double a = b.sizes.empty() ? 0 : at(b.sizes[0]);
+      switch (shape.outline) {
+        case model::Outline::Bar: {
+          auto [x1, y1] = world(-a / 2, 0);
+          auto [x2, y2] = world(a / 2, 0);
+          f.line(x1, y1, x2, y2, Ink::Body);
+          break;
+        }
+        case model::Outline::Round: {
+          f.circle(gx, gy, a, Ink::Body, true);
+          auto [x2, y2] = world(a, 0);
+          f.line(gx, gy, x2, y2, Ink::Thin);  // the reference line: the body's angle
+          break;
+        }
+        case model::Outline::Rect: {
+          const double bb = b.sizes.size() > 1 ? at(b.sizes[1]) : a;
+          f.polyline({world(-a / 2, -bb / 2), world(a / 2, -bb / 2), world(a / 2, bb / 2), world(-a / 2, bb / 2)}, Ink::Body, true, true);
+          break;
+        }
+        case model::Outline::Dot: {
+          // a particle: a small block, turned with its angle
+          const double g = f.glyph();
+          f.polyline({world(-g, -g * 0.7), world(g, -g * 0.7), world(g, g * 0.7), world(-g, g * 0.7)}, Ink::Body, true, true);
+          break;
+        }
+      }
+      f.mark(gx, gy, b.name + ".G");
+      f.label(gx, gy, b.name);
+      for (auto& [pn, lp] : b.points) {
+        auto [px, py] = world(at(lp.first), at(lp.second));
+        f.mark(px, py, b.name + "." + pn);
+        f.label(px, py, pn);
+      }
+    }
+    for (auto& [pn, p] : m.fixed_points) {
+      f.mark(at(p.first), at(p.second), pn, true);
+      f.label(at(p.first), at(p.second), pn);
+    }
+    for (auto& e : m.effects) e.draw(m, at, f);
+    return f;
+  };
   double extent = 0;
   for (auto& b : m.bodies)
-    for (auto& s : b.sizes) extent = std::max(extent, std::fabs(at(s)));
-  {
-    double xa = 1e300, xb = -1e300, ya = 1e300, yb = -1e300;
-    auto take = [&](double x, double y) {
-      if (std::isnan(x) || std::isnan(y)) return;
-      xa = std::min(xa, x), xb = std::max(xb, x), ya = std::min(ya, y), yb = std::max(yb, y);
-    };
-    for (auto& b : m.bodies) take(at(b.x), at(b.y));
-    for (auto& [nm, p] : m.fixed_points) take(at(p.first), at(p.second));
-    if (xb >= xa) extent = std::max(extent, std::max(xb - xa, yb - ya));
-  }
-  if (!(extent > 0)) extent = 1;
-  f.set_glyph(0.045 * extent);
-  // the bodies by their shapes: r = G + R(φ) (lx, ly)
-  for (auto& b : m.bodies) {
-    const double gx = at(b.x), gy = at(b.y), phi = at(b.angle), c = std::cos(phi), s = std::sin(phi);
-    auto world = [&](double lx, double ly) { return std::pair<double, double>{gx + c * lx - s * ly, gy + s * lx + c * ly}; };
-    const model::InertiaShape& shape = model::inertia_shape(b.shape);
-    const double a = b.sizes.empty() ? 0 : at(b.sizes[0]);
-    switch (shape.outline) {
-      case model::Outline::Bar: {
-        auto [x1, y1] = world(-a / 2, 0);
-        auto [x2, y2] = world(a / 2, 0);
-        f.line(x1, y1, x2, y2, Ink::Body);
-        break;
-      }
-      case model::Outline::Round: {
-        f.circle(gx, gy, a, Ink::Body, true);
-        auto [x2, y2] = world(a, 0);
-        f.line(gx, gy, x2, y2, Ink::Thin);  // the reference line: the body's angle
-        break;
-      }
-      case model::Outline::Rect: {
-        const double bb = b.sizes.size() > 1 ? at(b.sizes[1]) : a;
-        f.polyline({world(-a / 2, -bb / 2), world(a / 2, -bb / 2), world(a / 2, bb / 2), world(-a / 2, bb / 2)}, Ink::Body, true, true);
-        break;
-      }
-      case model::Outline::Dot: {
-        // a particle: a small block, turned with its angle
-        const double g = f.glyph();
-        f.polyline({world(-g, -g * 0.7), world(g, -g * 0.7), world(g, g * 0.7), world(-g, g * 0.7)}, Ink::Body, true, true);
-        break;
-      }
-    }
-    f.mark(gx, gy, b.name + ".G");
-    f.label(gx, gy, b.name);
-    for (auto& [pn, lp] : b.points) {
-      auto [px, py] = world(at(lp.first), at(lp.second));
-      f.mark(px, py, b.name + "." + pn);
-      f.label(px, py, pn);
-    }
-  }
-  for (auto& [pn, p] : m.fixed_points) {
-    f.mark(at(p.first), at(p.second), pn, true);
-    f.label(at(p.first), at(p.second), pn);
-  }
-  for (auto& e : m.effects) e.draw(m, at, f);
-  return f;
+    for (auto& sz : b.sizes) extent = std::max(extent, std::fabs(at(sz)));
+  const double first = drawing(0.045 * (extent > 0 ? extent : 1)).extent();
+  return drawing(0.045 * (first > 0 ? first : 1));
 }
 
 void write(const Figure& f, const std::string& path) {

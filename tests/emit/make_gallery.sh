@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Write docs/gallery.md: every worked problem in derivations/ with the closed forms kinergy
-# derives for it (as `kinergy solve` prints them) and links to its approved step-by-step
-# derivation. Run it after a change that alters a closed form, and commit the result:
+# derives for it (as `kinergy solve` prints them), a drawing of the scene at its first state
+# (`kinergy draw`, into docs/gallery/) and links to its approved step-by-step derivation. Run it after a change that alters a closed form, and commit the result:
 #   bash tests/emit/make_gallery.sh [BUILD_DIR]      (BUILD_DIR defaults to build)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 kinergy="${1:-build}/kinergy"
 [ -x "$kinergy" ] || { echo "make_gallery: no $kinergy (build first, or pass the build directory)" >&2; exit 1; }
 out=docs/gallery.md
+mkdir -p docs/gallery
 tmp=$(mktemp)
 trap 'rm -f "$tmp"' EXIT
 {
@@ -35,6 +36,12 @@ trap 'rm -f "$tmp"' EXIT
       echo
       echo "[\`$f\`](../$f) · derivation: [text](../$base.approved.txt) · [LaTeX](../$base.approved.tex)"
       echo
+      # the scene at its first state, drawn from the model (kinergy draw)
+      pic="docs/gallery/$(basename "$base").svg"
+      if "$kinergy" draw "$f" -o "$pic" 2>/dev/null; then
+        echo "![the scene at its first state](gallery/$(basename "$base").svg)"
+        echo
+      fi
       echo '```'
       tail -n +2 "$tmp" | sed 's/^  //'
       echo '```'

@@ -60,6 +60,8 @@ public:
   std::string svg(int width = 640) const;
 
   const std::vector<Shape>& shapes() const { return shapes_; }
+  /// The larger side of the box around everything drawn (0 when nothing is).
+  double extent() const;
 
 private:
   std::vector<Shape> shapes_;
