@@ -550,11 +550,8 @@ private:
     // scan: the admissible p form [p*, ∞) for a least value, (0, p*] for a greatest
     const int k0 = -20, k1 = 40;
     std::optional<int> edge;  // first admissible k (least) / last admissible k (greatest)
-    bool first_ok = false, any = false;
     for (int k = k0; k <= k1; ++k) {
       bool ok = admissible(two_to(k), 100);
-      if (k == k0) first_ok = ok;
-      any = any || ok;
       if (x.least && ok && !edge) edge = k;
       if (!x.least && ok) edge = k;
       if (!x.least && !ok && edge) break;
@@ -562,7 +559,7 @@ private:
     std::string path = x.along ? " at every position of the path (" + x.along_name + " from " + numerics::format(lo, 6) + " to " +
                                      numerics::format(hi, 6) + ")"
                                : "";
-    if (!any)
+    if (!edge)
       throw SceneError(x.pos, "state '" + S + "' is not reached for any value of '" + x.p_name + "' from 2^" + std::to_string(k0) +
                                   " to 2^" + std::to_string(k1) + " (SI): the kinetic energy there stays negative" + path,
                        "check the states and the effects: the motion toward state '" + S + "' cannot get there");
@@ -572,7 +569,6 @@ private:
                                   " (SI): there is no " + what + " value to find",
                        "check 'reaches' and the states: the kinetic energy at state '" + S + "' should fall to zero as '" + x.p_name +
                            "' " + (x.least ? "decreases" : "increases"));
-    (void)first_ok;
     // the bracket: a (not admissible), b (admissible)
     numeric a = two_to(x.least ? *edge - 1 : *edge + 1), b = two_to(*edge);
     for (int it = 0; it < 24; ++it) {

@@ -111,8 +111,9 @@ Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) {
 /// past every switching point on that side (the body meets the bumper, or leaves the launcher) —
 /// recorded in `holds` and checked on the solution, where a root that breaks it is dropped.
 /// Nothing when both ends, a switching point or that direction have no value, or g is not linear.
-static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const ex& Q, const symbol& s, int s1, int s2,
+static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const ex& Q, const model::Coordinate& c, int s1, int s2,
                                         int fewer, Work& w, std::string& taken) {
+  const symbol& s = c.q;
   const exmap given = m.given_values(), env = m.numeric_environment();
   ex A = m.bind(ex(s), s1).subs(given), B = m.bind(ex(s), s2).subs(given);
   auto a = numerics::evaluate(A, env, 40), b = numerics::evaluate(B, env, 40);
@@ -142,8 +143,6 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
     std::sort(cuts.begin(), cuts.end(), [&](auto& x, auto& y) { return up ? x.second < y.second : x.second > y.second; });
   } else {
     // σ: the direction of the motion from s1 to s2, from the sign of a rate given at a state
-    const auto& c = m.coords[static_cast<std::size_t>(std::find_if(m.coords.begin(), m.coords.end(),
-                                                                    [&](auto& x) { return x.q == s; }) - m.coords.begin())];
     std::optional<int> sigma;
     for (int st : {s1, s2}) {
       auto v = numerics::evaluate(m.states[st].sym.at(c.name).second.subs(given), env, 40);
@@ -248,7 +247,7 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
   // (g(s₀) = 0 between the ends, the switching point) and integrate each piece with |g| = ±g
   if (Qs.has(abs(wild()))) {
     std::string taken;
-    if (auto U = piecewise_work(m, e, Qs, s, s1, s2, fewer_switches, w, taken)) {
+    if (auto U = piecewise_work(m, e, Qs, m.coords[p->s], s1, s2, fewer_switches, w, taken)) {
       w.U = *U;
       w.how = "U = integral along " + m.coords[p->s].name + ", split where the force switches" + taken;
       return w;
