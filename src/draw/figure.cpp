@@ -280,8 +280,10 @@ Figure scene_at(const model::Model& m, const exmap& solved, const exmap& params,
           f.line(x1, y1, x2, y2, Ink::Body);
           break;
         }
-        case model::Outline::Round: {
-          f.circle(gx, gy, a, Ink::Body, true);
+        case model::Outline::Round:
+        case model::Outline::Gyration: {
+          if (shape.outline == model::Outline::Round) f.circle(gx, gy, a, Ink::Body, true);
+          else f.circle(gx, gy, a, Ink::Hidden);  // the radius of gyration, not the rim
           auto [x2, y2] = world(a, 0);
           f.line(gx, gy, x2, y2, Ink::Thin);  // the reference line: the body's angle
           break;

@@ -1,6 +1,8 @@
 // Pieces several effect kinds share (private to src/effects).
 #pragma once
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 #include <initializer_list>
 #include <memory>
@@ -110,5 +112,32 @@ public:
   /// Does it act on the bodies of analysis a?
   bool on(const Analysis& a) const { return acts_on(a, body); }
 };
+
+// --- pictures ----------------------------------------------------------------------------
+
+/// A curved arrow round body b's centre, counterclockwise when sense > 0 (clockwise < 0, no
+/// head when 0), `glyphs` glyphs out, labelled: a couple, a torsion spring, a power drive.
+inline void draw_turning(const Model& m, const At& at, Figure& f, int body, double sense, Ink ink, const std::string& label,
+                         double glyphs = 1.6) {
+  const auto& B = m.bodies[static_cast<std::size_t>(body)];
+  const double x = at(B.x), y = at(B.y), r = f.glyph() * glyphs;
+  if (sense > 0) f.arc_arrow(x, y, r, -0.6, 3.6, ink);
+  else if (sense < 0) f.arc_arrow(x, y, r, 3.6, -0.6, ink);
+  else {
+    std::vector<std::pair<double, double>> pts;
+    for (int i = 0; i <= 24; ++i) pts.push_back({x + r * std::cos(-0.6 + 4.2 * i / 24), y + r * std::sin(-0.6 + 4.2 * i / 24)});
+    f.polyline(pts, ink);
+  }
+  f.label(x + r * std::cos(2.2), y + r * std::sin(2.2), label);
+}
+
+/// The two points an effect joins, when both have a place (a party on the ground has none).
+inline std::optional<std::array<double, 4>> joined(const Model& m, const At& at, const PointRef& a, const PointRef& b) {
+  if (a.ground || b.ground) return std::nullopt;
+  auto [x1, y1] = at.point(m.position(a));
+  auto [x2, y2] = at.point(m.position(b));
+  if (std::isnan(x1) || std::isnan(y1) || std::isnan(x2) || std::isnan(y2)) return std::nullopt;
+  return std::array<double, 4>{x1, y1, x2, y2};
+}
 
 }  // namespace kinergy::effects

@@ -25,6 +25,15 @@ public:
   std::size_t index = 0;  ///< in the model's constraints
   ex fx = 0, fy = 0;      ///< F = λ f on party a (generic)
   ex ux = 0, uy = 0;      ///< f / |f|: the direction J is measured along
+
+  // the relation: a dashed link between its parties' places (a mesh, a cord), named
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    if (auto p = joined(m, at, a, b)) {
+      const auto [x1, y1, x2, y2] = *p;
+      f.line(x1, y1, x2, y2, Ink::Hidden);
+      f.label((x1 + x2) / 2, (y1 + y2) / 2, name);
+    }
+  }
   std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
   bool conservative() const override { return true; }  // V = 0: workless on the whole system

@@ -12,6 +12,17 @@ class CordPull : public Effect {
 public:
   PointRef a, b;
   ex P = 0;
+
+  // the cord from A to B, and the pull on A as an arrow toward B
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    auto p = joined(m, at, a, b);
+    if (!p) return;
+    const auto [x1, y1, x2, y2] = *p;
+    f.line(x1, y1, x2, y2, Ink::Thin);
+    const double L = std::hypot(x2 - x1, y2 - y1), g = f.glyph() * 3;
+    if (L > 0) f.arrow(x1, y1, x1 + (x2 - x1) / L * std::min(g, L), y1 + (y2 - y1) / L * std::min(g, L), Ink::Force);
+    f.label(x1, y1, name);
+  }
   std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
   bool conservative() const override { return true; }

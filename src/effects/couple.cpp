@@ -19,13 +19,7 @@ public:
   }
 
   // a curved arrow round the body's centre in the sense of M (counterclockwise when positive)
-  void draw(const Model& m, const At& at, Figure& f) const override {
-    const auto& B = m.bodies[static_cast<std::size_t>(body)];
-    const double x = at(B.x), y = at(B.y), M0 = at(M), r = f.glyph() * 1.6;
-    if (M0 > 0) f.arc_arrow(x, y, r, -0.6, 3.6, Ink::Force);
-    else if (M0 < 0) f.arc_arrow(x, y, r, 3.6, -0.6, Ink::Force);
-    f.label(x + r * std::cos(2.2), y + r * std::sin(2.2), name);
-  }
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, at(M), Ink::Force, name); }
 
   void pushes(const Model&, const Analysis& a, const Knowledge&, std::vector<Push>& out) const override {
     if (!on(a)) return;

@@ -9,6 +9,22 @@ class Damper : public Effect {
 public:
   PointRef a, b;
   ex c = 0;
+
+  // a dashpot: a line between its points with a cylinder (an open box) at the middle
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    auto p = joined(m, at, a, b);
+    if (!p) return;
+    const auto [x1, y1, x2, y2] = *p;
+    const double L = std::hypot(x2 - x1, y2 - y1);
+    if (!(L > 0)) return;
+    const double ux = (x2 - x1) / L, uy = (y2 - y1) / L, w = std::min(f.glyph() * 0.6, L / 5);
+    auto at_s = [&](double s, double side) { return std::pair<double, double>{x1 + ux * L * s - uy * side, y1 + uy * L * s + ux * side}; };
+    f.polyline({{x1, y1}, at_s(0.45, 0)}, Ink::Spring);
+    f.polyline({at_s(0.35, w), at_s(0.6, w), at_s(0.6, -w), at_s(0.35, -w)}, Ink::Spring);  // the cylinder, open at its left
+    f.polyline({at_s(0.45, w * 0.8), at_s(0.45, -w * 0.8)}, Ink::Spring);                     // the piston
+    f.polyline({at_s(0.6, 0), {x2, y2}}, Ink::Spring);
+    f.label((x1 + x2) / 2, (y1 + y2) / 2, name);
+  }
   std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
   /// d = r_B − r_A

@@ -13,6 +13,25 @@ public:
   std::optional<PointRef> b;  ///< the other body's material point at the same place (`against`)
   ex mu = 0, normal = 0;
   std::optional<int> direction;  ///< the sign of the motion it opposes, if declared
+
+  // a short hatched stroke at the sliding point along its slip (the slip at unit rates of the
+  // coordinates; along x when that is zero), named
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    auto [x, y] = at.point(m.position(a));
+    At unit = at;
+    for (auto& c : m.coords) unit.values[c.qd] = 1;
+    auto [sx, sy] = slip(m);
+    double ux = unit(sx), uy = unit(sy), u = std::hypot(ux, uy);
+    if (!(u > 0)) ux = 1, uy = 0, u = 1;
+    ux /= u, uy /= u;
+    const double g = f.glyph();
+    f.line(x - 2 * g * ux, y - 2 * g * uy, x + 2 * g * ux, y + 2 * g * uy, Ink::Support);
+    for (int i = 0; i < 5; ++i) {
+      const double bx = x + (i - 2) * g * ux, by = y + (i - 2) * g * uy;
+      f.line(bx, by, bx - 0.4 * g * ux + 0.5 * g * uy, by - 0.4 * g * uy - 0.5 * g * ux, Ink::Support);
+    }
+    f.label(x, y, name);
+  }
   std::vector<int> bodies_acted(const Model&) const override { return b ? bodies_of({a.body, b->body}) : bodies_of({a.body}); }
 
   /// The slip: v_rel = v_A − v_B (B the other body's material point there; the ground: 0).

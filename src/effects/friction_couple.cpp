@@ -8,6 +8,9 @@ namespace {
 class FrictionCouple : public BodyEffect {
 public:
   ex M = 0;
+
+  // an arc round the body's centre: a bearing's or a brake's friction couple
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Support, name, 1.2); }
   std::optional<int> direction;  ///< the sign of the rotation it opposes, if declared
 
   ex power(const Model& m) const override { return -M * abs(m.omega(body)); }  // P = −M |ω|

@@ -9,6 +9,9 @@ class Power : public BodyEffect {
 public:
   ex P = 0;
 
+  // a curved arrow round the body's centre: the drive (in the sense of the motion it drives)
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 1, Ink::Force, name + " (P)"); }
+
   ex power(const Model&) const override { return P; }
 
   principles::Work work(const Model& m, int s1, int s2, const Knowledge&) const override {

@@ -9,6 +9,9 @@ class TorsionDamper : public Effect {
 public:
   int body = -1, body2 = -1;
   ex c = 0;
+
+  // an arc round the (first) body's centre
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Hidden, name, 1.3); }
   std::vector<int> bodies_acted(const Model&) const override { return bodies_of({body, body2}); }
 
   /// φ₁ − φ₂ (the body's angle alone when there is no second body)

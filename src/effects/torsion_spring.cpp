@@ -9,6 +9,9 @@ class TorsionSpring : public Effect {
 public:
   int body = -1, body2 = -1;
   ex k = 0, free = 0;
+
+  // a coil round the (first) body's centre
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Spring, name, 1.0); }
   std::vector<int> bodies_acted(const Model&) const override { return bodies_of({body, body2}); }
 
   bool conservative() const override { return true; }

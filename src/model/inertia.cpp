@@ -23,7 +23,7 @@ const std::vector<InertiaShape>& inertia_shapes() {
       {"sphere", 1, false, "a sphere", [](const ex& m, const Sizes& a) { return 2 * m * pow(a[0], 2) / 5; }, Outline::Round},   // 2 m r²/5
       {"spherical_shell", 1, false, "a spherical shell",
        [](const ex& m, const Sizes& a) { return 2 * m * pow(a[0], 2) / 3; }, Outline::Round},                       // 2 m r²/3
-      {"gyration", 1, false, "given radius of gyration", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2); }, Outline::Round},          // m k²
+      {"gyration", 1, false, "given radius of gyration", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2); }, Outline::Gyration},          // m k²
       {"centroidal", 1, true, "given centroidal moment of inertia", [](const ex&, const Sizes& a) { return a[0]; }, Outline::Dot},                       // Ī given
       {"particle", 0, false, "", [](const ex&, const Sizes&) { return ex(0); }, Outline::Dot},
   };

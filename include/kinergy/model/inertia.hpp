@@ -9,8 +9,9 @@
 namespace kinergy::model {
 
 /// How a body of that shape is drawn (src/draw): a bar of length a[0] along its x axis, a round
-/// body of radius a[0] with a line showing its angle, an a[0] × a[1] rectangle, or a dot.
-enum class Outline { Bar, Round, Rect, Dot };
+/// body of radius a[0] with a line showing its angle, a dashed circle of its radius of gyration
+/// a[0] (its true outline unknown), an a[0] × a[1] rectangle, or a dot.
+enum class Outline { Bar, Round, Gyration, Rect, Dot };
 
 struct InertiaShape {
   std::string name;
