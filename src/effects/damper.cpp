@@ -14,7 +14,7 @@ public:
   void draw(const Model& m, const At& at, Figure& f) const override {
     auto p = joined(m, at, a, b);
     if (!p) return;
-    const auto [x1, y1, x2, y2] = *p;
+    const double x1 = (*p)[0], y1 = (*p)[1], x2 = (*p)[2], y2 = (*p)[3];
     const double L = std::hypot(x2 - x1, y2 - y1);
     if (!(L > 0)) return;
     const double ux = (x2 - x1) / L, uy = (y2 - y1) / L, w = std::min(f.glyph() * 0.6, L / 5);
