@@ -775,6 +775,16 @@ private:
 
 }  // namespace
 
+GiNaC::exmap parameter_values(const Solution& s) {
+  GiNaC::exmap v = s.model.parameter_values();
+  for (auto& p : s.model.params)
+    if (p.unknown) {
+      auto it = s.branch.sol.find(p.sym);
+      if (it != s.branch.sol.end()) v[p.sym] = it->second.subs(v);
+    }
+  return v;
+}
+
 Solution solve_scene(const scene::SceneDef& def) {
   const Model base = Model::build(def);
   // a force that switches on the way to a state whose position is unknown: the case taken

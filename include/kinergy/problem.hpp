@@ -61,6 +61,10 @@ struct Solution {
   std::vector<Result> results;
 };
 
+/// Every parameter's number: the given values, and the solved values of unknown parameters (for
+/// drawing and simulating the solved scene).
+GiNaC::exmap parameter_values(const Solution& s);
+
 /// Solve a scene. @throws SceneError (bad scene, no solution, ambiguous roots).
 Solution solve_scene(const scene::SceneDef& def);
 Solution solve_file(const std::string& path);

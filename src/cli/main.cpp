@@ -135,8 +135,8 @@ int main(int argc, char** argv) {
   std::string draw_state, draw_out;
   auto* draw = app.add_subcommand("draw", "draw the scene at a state from its model: bodies, points, supports, springs, forces");
   draw->add_option("SCENE", scene, "scene file (YAML)")->required();
-  draw->add_option("--state", draw_state, "the state to draw (default: the first)");
-  draw->add_option("-o,--output", draw_out, "FILE.svg, FILE.pdf or FILE.png (default: SVG on standard output)");
+  draw->add_option("--state", draw_state, "the state to draw (default: the first; 'all': every state side by side)");
+  draw->add_option("-o,--output", draw_out, "FILE.svg, FILE.pdf, FILE.png or FILE.tex (a TikZ picture) (default: SVG on standard output)");
 
   double until = 0, tol = 1e-10, step = 0;
   std::string method = "dopri5", from, csv_out, plot_out;
@@ -224,14 +224,21 @@ int main(int argc, char** argv) {
       const kinergy::model::Model& m = in.model();
       const auto& sol = in.sol;
       if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to draw", "add a state with every coordinate");
-      int st = 0;
-      if (!draw_state.empty()) {
-        st = m.state_index(draw_state);
-        if (st < 0) throw kinergy::SceneError({scene, 1, 1}, "there is no state '" + draw_state + "'", "name a state of the scene's 'states'");
+      std::vector<int> states{0};
+      if (draw_state == "all") {
+        states.clear();
+        for (std::size_t i = 0; i < m.states.size(); ++i) states.push_back(static_cast<int>(i));
+      } else if (!draw_state.empty()) {
+        states[0] = m.state_index(draw_state);
+        if (states[0] < 0)
+          throw kinergy::SceneError({scene, 1, 1}, "there is no state '" + draw_state + "'", "name a state of the scene's 'states', or 'all'");
       }
-      auto fig = kinergy::draw::scene_at(m, sol ? sol->branch.sol : GiNaC::exmap{}, sol ? kinergy::simulate::simulation_values(*sol) : m.parameter_values(), st);
-      if (draw_out.empty()) std::cout << fig.svg();
-      else kinergy::draw::write(fig, draw_out);
+      const GiNaC::exmap solved = sol ? sol->branch.sol : GiNaC::exmap{};
+      const GiNaC::exmap values = sol ? kinergy::simulate::simulation_values(*sol) : m.parameter_values();
+      const kinergy::draw::Sheet sheet = states.size() == 1 ? kinergy::draw::Sheet(kinergy::draw::scene_at(m, solved, values, states[0]))
+                                                            : kinergy::draw::states_at(m, solved, values, states);
+      if (draw_out.empty()) std::cout << sheet.svg();
+      else kinergy::draw::write(sheet, draw_out);
       return 0;
     });
   }

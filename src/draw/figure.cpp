@@ -110,54 +110,163 @@ void Figure::ground(double x, double y) {
   polyline({{x, y}, {x - g * 0.5, y - g * 0.8}, {x + g * 0.5, y - g * 0.8}}, Ink::Support, true);
 }
 
-void Figure::label(double x, double y, const std::string& text) { labels_.push_back({x, y, text}); }
+void Figure::label(double x, double y, const std::string& text, const std::string& tex) { labels_.push_back({x, y, text, tex}); }
 
 double Figure::glyph() const { return glyph_; }
 
-double Figure::extent() const {
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-  for (auto& s : shapes_)
-    for (auto& p : s.pts) {
-      if (!std::isfinite(p.first) || !std::isfinite(p.second)) continue;
-      const double r = s.kind == Shape::Circle ? s.r : 0;
-      x0 = std::min(x0, p.first - r), x1 = std::max(x1, p.first + r);
-      y0 = std::min(y0, p.second - r), y1 = std::max(y1, p.second + r);
-    }
-  return std::isfinite(x0) ? std::max(x1 - x0, y1 - y0) : 0;
-}
-
-std::string Figure::svg(int width) const {
-  // the extent of everything drawn (world)
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-  auto take = [&](double x, double y, double r = 0) {
+Figure::Bounds Figure::bounds(bool labels) const {
+  const double inf = std::numeric_limits<double>::infinity();
+  Bounds b{inf, inf, -inf, -inf};
+  auto take = [&](double x, double y, double r) {
     if (!std::isfinite(x) || !std::isfinite(y)) return;
-    x0 = std::min(x0, x - r);
-    x1 = std::max(x1, x + r);
-    y0 = std::min(y0, y - r);
-    y1 = std::max(y1, y + r);
+    b.x0 = std::min(b.x0, x - r), b.x1 = std::max(b.x1, x + r);
+    b.y0 = std::min(b.y0, y - r), b.y1 = std::max(b.y1, y + r);
   };
   for (auto& s : shapes_)
     for (auto& p : s.pts) take(p.first, p.second, s.kind == Shape::Circle ? s.r : 0);
-  for (auto& l : labels_) take(l.x, l.y);
-  if (!std::isfinite(x0)) x0 = y0 = -1, x1 = y1 = 1;
-  double w = std::max(x1 - x0, 1e-9), h = std::max(y1 - y0, 1e-9);
-  // a degenerate extent (all on one line): give it the other's size
-  if (w < h * 0.05) w = h * 0.5;
-  if (h < w * 0.05) h = w * 0.5;
-  const double pad = 48;
-  const double scale = (width - 2 * pad) / w;
-  const int height = static_cast<int>(std::ceil(h * scale + 2 * pad));
-  const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
-  // world → page: X = W/2 + s (x − cx), Y = H/2 − s (y − cy)
-  const double tx = width / 2.0 - scale * cx, ty = height / 2.0 + scale * cy;
-  auto X = [&](double x) { return tx + scale * x; };
-  auto Y = [&](double y) { return ty - scale * y; };
+  if (labels)
+    for (auto& l : labels_) take(l.x, l.y, 0);
+  return b;
+}
+
+double Figure::extent() const {
+  Bounds b = bounds();
+  return b.empty() ? 0 : std::max(b.x1 - b.x0, b.y1 - b.y0);
+}
+
+std::string Figure::svg(int width) const { return Sheet(*this).svg(width); }
+
+void Sheet::add(Figure f, std::string title, std::string title_tex) { panels_.push_back({std::move(f), std::move(title), std::move(title_tex), "", ""}); }
+
+void Sheet::then(std::string text, std::string tex) {
+  if (panels_.empty()) return;
+  panels_.back().after = std::move(text);
+  panels_.back().after_tex = std::move(tex);
+}
+
+namespace {
+
+// A sheet laid out on the page (pixels, y down): one scale for every panel, each panel's world
+// mapped by X = tx + s x, Y = ty − s y; labels placed off each other.
+struct Layout {
+  int width = 0, height = 0;
+  double scale = 1;
+  struct Place {
+    double tx, ty, centre;  // transform, and the panel's middle on the page (x)
+  };
+  std::vector<Place> places;
+  struct Box {
+    double x0, y0, x1, y1;
+  };
+  struct Placed {
+    Box box;
+    const Figure::Label* label;
+  };
+  std::vector<Placed> labels;
+  double mid = 0, title_y = 0;
+  std::vector<double> between_x;  // where the words after panel i go
+};
+
+constexpr double kPad = 48, kGap = 90, kTitle = 26;
+constexpr double kFont = 13, kCharWidth = 7.2;  // label font size and the width of a character (pixels)
+
+Layout lay_out(const std::vector<std::pair<const Figure*, bool>>& panels, int width, int max_height) {
+  Layout L;
+  const std::size_t n = panels.size();
+  if (width <= 0) width = n <= 1 ? 640 : static_cast<int>(std::min<std::size_t>(1200, 400 * n));
+  bool titles = false;
+  for (auto& p : panels) titles = titles || p.second;
+  std::vector<Figure::Bounds> bs;
+  double sum_w = 0, max_h = 0;
+  for (auto& p : panels) {
+    Figure::Bounds b = p.first->bounds(true);
+    if (b.empty()) b = {-1, -1, 1, 1};
+    double w = std::max(b.x1 - b.x0, 1e-9), h = std::max(b.y1 - b.y0, 1e-9);
+    // a degenerate extent (all on one line): give it the other's size
+    if (w < h * 0.05) w = h * 0.5;
+    if (h < w * 0.05) h = w * 0.5;
+    const double cx = (b.x0 + b.x1) / 2, cy = (b.y0 + b.y1) / 2;
+    bs.push_back({cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2});
+    sum_w += w;
+    max_h = std::max(max_h, h);
+  }
+  const double gaps = kGap * static_cast<double>(n > 0 ? n - 1 : 0);
+  L.scale = (width - 2 * kPad - gaps) / sum_w;
+  const double title_h = titles ? kTitle : 0;
+  L.scale = std::min(L.scale, (max_height - 2 * kPad - title_h) / max_h);
+  L.width = static_cast<int>(std::ceil(sum_w * L.scale + 2 * kPad + gaps - 1e-6));
+  L.height = static_cast<int>(std::ceil(max_h * L.scale + 2 * kPad + title_h - 1e-6));
+  L.mid = kPad + max_h * L.scale / 2;
+  L.title_y = kPad + max_h * L.scale + kPad / 2 + 8;
+  double left = kPad;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& b = bs[i];
+    const double w = (b.x1 - b.x0) * L.scale, cx = (b.x0 + b.x1) / 2, cy = (b.y0 + b.y1) / 2;
+    // X = left + w/2 + s (x − cx), Y = mid − s (y − cy)
+    L.places.push_back({left + w / 2 - L.scale * cx, L.mid + L.scale * cy, left + w / 2});
+    L.between_x.push_back(left + w + kGap / 2);
+    left += w + kGap;
+  }
+  // labels on the page, kept off each other and on the page: the first free place round the anchor
+  std::vector<Layout::Box> taken;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& P = L.places[i];
+    for (auto& l : panels[i].first->labels()) {
+      const double bw = kCharWidth * static_cast<double>(l.text.size()) + 2, bh = 15;
+      const double ax = P.tx + L.scale * l.x, ay = P.ty - L.scale * l.y;
+      const std::pair<double, double> tries[] = {{8, -6}, {8, 16}, {-8 - bw, -6}, {-8 - bw, 16}, {-bw / 2, -12}, {-bw / 2, 24},
+                                                 {14, -20}, {-14 - bw, 30}, {14, 30}, {-14 - bw, -20}};
+      Layout::Box best{ax + 8, ay - 6 - bh, ax + 8 + bw, ay - 6};
+      for (auto& [dx, dy] : tries) {
+        Layout::Box b{ax + dx, ay + dy - bh + 3, ax + dx + bw, ay + dy + 3};
+        bool clash = b.x0 < 0 || b.x1 > L.width || b.y0 < 0 || b.y1 > L.height;
+        for (auto& t : taken) clash = clash || (b.x0 < t.x1 && t.x0 < b.x1 && b.y0 < t.y1 && t.y0 < b.y1);
+        if (!clash) {
+          best = b;
+          break;
+        }
+      }
+      taken.push_back(best);
+      L.labels.push_back({best, &l});
+    }
+  }
+  return L;
+}
+
+// an arrowhead 11 px long and 8 px wide at page point b, pointing from page point a
+std::vector<std::pair<double, double>> head_at(double xa, double ya, double xb, double yb) {
+  double d = std::hypot(xb - xa, yb - ya);
+  if (!(d > 0)) return {};
+  const double ux = (xb - xa) / d, uy = (yb - ya) / d, L = 11, B = 4;
+  return {{xb, yb}, {xb - L * ux - B * uy, yb - L * uy + B * ux}, {xb - L * ux + B * uy, yb - L * uy - B * ux}};
+}
+
+// text for TeX's text mode
+std::string tex_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '_': case '#': case '%': case '&': case '$': case '{': case '}': o += std::string("\\") + c; break;
+      case '~': o += "\\textasciitilde{}"; break;
+      case '^': o += "\\textasciicircum{}"; break;
+      case '\\': o += "\\textbackslash{}"; break;
+      default: o += c;
+    }
+  }
+  return o;
+}
+
+}  // namespace
+
+std::string Sheet::svg(int width, int max_height) const {
+  std::vector<std::pair<const Figure*, bool>> ps;
+  for (auto& p : panels_) ps.push_back({&p.figure, !p.title.empty()});
+  const Layout L = lay_out(ps, width, max_height);
+  const double scale = L.scale;
   std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << " "
-    << height << "\">\n";
-  o << "<rect x=\"0\" y=\"0\" width=\"" << width << "\" height=\"" << height << "\" fill=\"white\"/>\n";
-  // the world group: metres, y up; strokes keep their page width
-  o << "<g data-world=\"metres\" transform=\"matrix(" << n(scale) << " 0 0 " << n(-scale) << " " << n(tx) << " " << n(ty) << ")\">\n";
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << L.width << "\" height=\"" << L.height << "\" viewBox=\"0 0 " << L.width
+    << " " << L.height << "\">\n";
+  o << "<rect x=\"0\" y=\"0\" width=\"" << L.width << "\" height=\"" << L.height << "\" fill=\"white\"/>\n";
   auto stroke = [&](Ink ink, bool filled) {
     Pen p = pen(ink);
     // widths in page pixels, written in metres (the group's scale makes them pixels again)
@@ -166,76 +275,164 @@ std::string Figure::svg(int width) const {
     if (p.dashed) s += " stroke-dasharray=\"" + n(6 / scale) + " " + n(4 / scale) + "\"";
     return s;
   };
-  auto head = [&](double xa, double ya, double xb, double yb, Ink ink) {
-    // an arrowhead 11 px long at (xb, yb), pointing from a to b
-    double d = std::hypot(xb - xa, yb - ya);
-    if (!(d > 0)) return;
-    double ux = (xb - xa) / d, uy = (yb - ya) / d, L = 11 / scale, B = 4 / scale;
-    o << "<polygon points=\"" << n(xb) << "," << n(yb) << " " << n(xb - L * ux - B * uy) << "," << n(yb - L * uy + B * ux) << " "
-      << n(xb - L * ux + B * uy) << "," << n(yb - L * uy - B * ux) << "\"" << stroke(ink, true) << "/>\n";
-  };
-  for (auto& s : shapes_) {
-    switch (s.kind) {
-      case Shape::Line:
-        o << "<line x1=\"" << n(s.pts[0].first) << "\" y1=\"" << n(s.pts[0].second) << "\" x2=\"" << n(s.pts[1].first) << "\" y2=\""
-          << n(s.pts[1].second) << "\"" << stroke(s.ink, false) << "/>\n";
-        break;
-      case Shape::Circle:
-        o << "<circle cx=\"" << n(s.pts[0].first) << "\" cy=\"" << n(s.pts[0].second) << "\" r=\"" << n(s.r) << "\""
-          << stroke(s.ink, s.filled) << (s.filled ? " fill-opacity=\"0.15\"" : "") << "/>\n";
-        break;
-      case Shape::Polygon:
-      case Shape::Polyline:
-      case Shape::Arc: {
-        o << (s.kind == Shape::Polygon ? "<polygon" : "<polyline") << " points=\"";
-        for (std::size_t i = 0; i < s.pts.size(); ++i) o << (i ? " " : "") << n(s.pts[i].first) << "," << n(s.pts[i].second);
-        o << "\"" << stroke(s.ink, s.filled) << (s.filled ? " fill-opacity=\"0.15\"" : "") << "/>\n";
-        if (s.kind == Shape::Arc && s.pts.size() >= 2)
-          head(s.pts[s.pts.size() - 2].first, s.pts[s.pts.size() - 2].second, s.pts.back().first, s.pts.back().second, s.ink);
-        break;
+  for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
+    const auto& P = L.places[pi];
+    // the world group: metres, y up; strokes keep their page width
+    o << "<g data-world=\"metres\"" << (panels_.size() > 1 ? " data-panel=\"" + std::to_string(pi) + "\"" : "") << " transform=\"matrix("
+      << n(scale) << " 0 0 " << n(-scale) << " " << n(P.tx) << " " << n(P.ty) << ")\">\n";
+    auto head = [&](double xa, double ya, double xb, double yb, Ink ink) {
+      // the head drawn on the page, written back in world coordinates
+      auto h = head_at(P.tx + scale * xa, P.ty - scale * ya, P.tx + scale * xb, P.ty - scale * yb);
+      if (h.empty()) return;
+      o << "<polygon points=\"";
+      for (std::size_t i = 0; i < h.size(); ++i) o << (i ? " " : "") << n((h[i].first - P.tx) / scale) << "," << n((P.ty - h[i].second) / scale);
+      o << "\"" << stroke(ink, true) << "/>\n";
+    };
+    for (auto& s : panels_[pi].figure.shapes()) {
+      switch (s.kind) {
+        case Figure::Shape::Line:
+        case Figure::Shape::Arrow:
+          o << "<line x1=\"" << n(s.pts[0].first) << "\" y1=\"" << n(s.pts[0].second) << "\" x2=\"" << n(s.pts[1].first) << "\" y2=\""
+            << n(s.pts[1].second) << "\"" << stroke(s.ink, false) << "/>\n";
+          if (s.kind == Figure::Shape::Arrow) head(s.pts[0].first, s.pts[0].second, s.pts[1].first, s.pts[1].second, s.ink);
+          break;
+        case Figure::Shape::Circle:
+          o << "<circle cx=\"" << n(s.pts[0].first) << "\" cy=\"" << n(s.pts[0].second) << "\" r=\"" << n(s.r) << "\""
+            << stroke(s.ink, s.filled) << (s.filled ? " fill-opacity=\"0.15\"" : "") << "/>\n";
+          break;
+        case Figure::Shape::Polygon:
+        case Figure::Shape::Polyline:
+        case Figure::Shape::Arc: {
+          o << (s.kind == Figure::Shape::Polygon ? "<polygon" : "<polyline") << " points=\"";
+          for (std::size_t i = 0; i < s.pts.size(); ++i) o << (i ? " " : "") << n(s.pts[i].first) << "," << n(s.pts[i].second);
+          o << "\"" << stroke(s.ink, s.filled) << (s.filled ? " fill-opacity=\"0.15\"" : "") << "/>\n";
+          if (s.kind == Figure::Shape::Arc && s.pts.size() >= 2)
+            head(s.pts[s.pts.size() - 2].first, s.pts[s.pts.size() - 2].second, s.pts.back().first, s.pts.back().second, s.ink);
+          break;
+        }
+        case Figure::Shape::Mark:
+          o << "<circle data-name=\"" << escape(s.id) << "\" cx=\"" << n(s.pts[0].first) << "\" cy=\"" << n(s.pts[0].second) << "\" r=\""
+            << n(3.2 / scale) << "\" fill=\"" << (s.filled ? "#333333" : "white") << "\" stroke=\"" << pen(s.ink).colour
+            << "\" stroke-width=\"" << n(1.2 / scale) << "\"/>\n";
+          break;
       }
-      case Shape::Arrow:
-        o << "<line x1=\"" << n(s.pts[0].first) << "\" y1=\"" << n(s.pts[0].second) << "\" x2=\"" << n(s.pts[1].first) << "\" y2=\""
-          << n(s.pts[1].second) << "\"" << stroke(s.ink, false) << "/>\n";
-        head(s.pts[0].first, s.pts[0].second, s.pts[1].first, s.pts[1].second, s.ink);
-        break;
-      case Shape::Mark:
-        o << "<circle data-name=\"" << escape(s.id) << "\" cx=\"" << n(s.pts[0].first) << "\" cy=\"" << n(s.pts[0].second) << "\" r=\""
-          << n(3.2 / scale) << "\" fill=\"" << (s.filled ? "#333333" : "white") << "\" stroke=\"" << pen(s.ink).colour
-          << "\" stroke-width=\"" << n(1.2 / scale) << "\"/>\n";
-        break;
     }
+    o << "</g>\n";
   }
-  o << "</g>\n";
-  // labels on the page, kept off each other: the first free place around the anchor
-  struct Box {
-    double x0, y0, x1, y1;
-  };
-  std::vector<Box> taken;
-  o << "<g font-family=\"DejaVu Sans, sans-serif\" font-size=\"13\" fill=\"#222222\">\n";
-  for (auto& l : labels_) {
-    const double bw = 7.2 * static_cast<double>(l.text.size()) + 2, bh = 15;
-    const double ax = X(l.x), ay = Y(l.y);
-    const std::pair<double, double> tries[] = {{8, -6}, {8, 16}, {-8 - bw, -6}, {-8 - bw, 16}, {-bw / 2, -12}, {-bw / 2, 24},
-                                               {14, -20}, {-14 - bw, 30}, {14, 30}, {-14 - bw, -20}};
-    Box best{ax + 8, ay - 6 - bh, ax + 8 + bw, ay - 6};
-    for (auto& [dx, dy] : tries) {
-      Box b{ax + dx, ay + dy - bh + 3, ax + dx + bw, ay + dy + 3};
-      bool clash = b.x0 < 0 || b.x1 > width || b.y0 < 0 || b.y1 > height;
-      for (auto& t : taken) clash = clash || (b.x0 < t.x1 && t.x0 < b.x1 && b.y0 < t.y1 && t.y0 < b.y1);
-      if (!clash) {
-        best = b;
-        break;
-      }
-    }
-    taken.push_back(best);
-    o << "<text x=\"" << n(best.x0 + 1) << "\" y=\"" << n(best.y1 - 3) << "\">" << escape(l.text) << "</text>\n";
+  o << "<g font-family=\"DejaVu Sans, sans-serif\" font-size=\"" << kFont << "\" fill=\"#222222\">\n";
+  for (auto& pl : L.labels) o << "<text x=\"" << n(pl.box.x0 + 1) << "\" y=\"" << n(pl.box.y1 - 3) << "\">" << escape(pl.label->text) << "</text>\n";
+  for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
+    const auto& p = panels_[pi];
+    if (!p.title.empty())
+      o << "<text x=\"" << n(L.places[pi].centre) << "\" y=\"" << n(L.title_y) << "\" text-anchor=\"middle\" font-style=\"italic\">"
+        << escape(p.title) << "</text>\n";
+    if (!p.after.empty())
+      o << "<text x=\"" << n(L.between_x[pi]) << "\" y=\"" << n(L.mid + 9) << "\" text-anchor=\"middle\" font-size=\"28\">" << escape(p.after)
+        << "</text>\n";
   }
   o << "</g>\n</svg>\n";
   return o.str();
 }
 
-Figure scene_at(const model::Model& m, const exmap& solved, const exmap& params, int state) {
+std::string Sheet::tikz(double width_cm, int width, int max_height) const {
+  std::vector<std::pair<const Figure*, bool>> ps;
+  for (auto& p : panels_) ps.push_back({&p.figure, !p.title.empty()});
+  const Layout L = lay_out(ps, width, max_height);
+  // page pixels → centimetres, y up: (k X, k (H − Y)); numbers to 1/1000 cm, the same text everywhere
+  const double k = width_cm / L.width;
+  auto c = [](double v) {
+    std::ostringstream os;
+    os << std::fixed << std::setprecision(3) << (std::fabs(v) < 5e-4 ? 0.0 : v);
+    return os.str();
+  };
+  auto pt = [&](double X, double Y) { return "(" + c(k * X) + "," + c(k * (L.height - Y)) + ")"; };
+  auto colour = [](Ink i) {
+    switch (i) {
+      case Ink::Body: case Ink::Thin: return "kBody";
+      case Ink::Support: return "kSupport";
+      case Ink::Force: return "kForce";
+      case Ink::Spring: return "kSpring";
+      case Ink::Track: return "kTrack";
+      case Ink::Hidden: return "kHidden";
+    }
+    return "black";
+  };
+  auto style = [&](Ink ink, bool filled) {
+    Pen p = pen(ink);
+    std::string s = "draw=" + std::string(colour(ink)) + ",line width=" + c(k * p.width) + "cm,line cap=round,line join=round";
+    if (filled) s += ",fill=" + std::string(colour(ink)) + ",fill opacity=0.15";
+    if (p.dashed) s += ",dash pattern=on " + c(6 * k) + "cm off " + c(4 * k) + "cm";
+    return s;
+  };
+  const double font_pt = kFont * k * 28.4527;
+  const std::string font = font_pt < 7.5 ? "\\scriptsize" : font_pt < 9 ? "\\footnotesize" : "\\small";
+  std::ostringstream o;
+  o << "\\begin{tikzpicture}\n"
+    << "\\definecolor{kBody}{HTML}{1F3B73}\\definecolor{kSupport}{HTML}{333333}\\definecolor{kForce}{HTML}{B8231F}"
+    << "\\definecolor{kSpring}{HTML}{2A7D2E}\\definecolor{kTrack}{HTML}{777777}\\definecolor{kHidden}{HTML}{999999}\n"
+    << "\\path[use as bounding box] (0,0) rectangle " << pt(L.width, 0) << ";\n";
+  for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
+    const auto& P = L.places[pi];
+    auto X = [&](double x) { return P.tx + L.scale * x; };
+    auto Y = [&](double y) { return P.ty - L.scale * y; };
+    auto path = [&](const std::vector<std::pair<double, double>>& pts) {
+      std::string s;
+      for (std::size_t i = 0; i < pts.size(); ++i) s += (i ? " -- " : "") + pt(X(pts[i].first), Y(pts[i].second));
+      return s;
+    };
+    auto head = [&](std::pair<double, double> a, std::pair<double, double> b, Ink ink) {
+      auto h = head_at(X(a.first), Y(a.second), X(b.first), Y(b.second));
+      if (h.empty()) return;
+      Pen p = pen(ink);
+      o << "\\filldraw[draw=" << colour(ink) << ",fill=" << colour(ink) << ",line width=" << c(k * p.width) << "cm,line join=round] "
+        << pt(h[0].first, h[0].second) << " -- " << pt(h[1].first, h[1].second) << " -- " << pt(h[2].first, h[2].second) << " -- cycle;\n";
+    };
+    for (auto& s : panels_[pi].figure.shapes()) {
+      bool finite = true;
+      for (auto& q : s.pts) finite = finite && std::isfinite(q.first) && std::isfinite(q.second);
+      if (!finite || s.pts.empty()) continue;
+      switch (s.kind) {
+        case Figure::Shape::Line:
+        case Figure::Shape::Arrow:
+        case Figure::Shape::Polyline:
+        case Figure::Shape::Arc:
+          o << "\\draw[" << style(s.ink, false) << "] " << path(s.pts) << ";\n";
+          if (s.kind == Figure::Shape::Arrow || s.kind == Figure::Shape::Arc)
+            if (s.pts.size() >= 2) head(s.pts[s.pts.size() - 2], s.pts.back(), s.ink);
+          break;
+        case Figure::Shape::Polygon:
+          o << "\\draw[" << style(s.ink, s.filled) << "] " << path(s.pts) << " -- cycle;\n";
+          break;
+        case Figure::Shape::Circle:
+          if (!(s.r > 0) || !std::isfinite(s.r)) break;
+          o << "\\draw[" << style(s.ink, s.filled) << "] " << pt(X(s.pts[0].first), Y(s.pts[0].second)) << " circle (" << c(k * L.scale * s.r)
+            << "cm);\n";
+          break;
+        case Figure::Shape::Mark:
+          o << "\\filldraw[draw=" << colour(s.ink) << ",fill=" << (s.filled ? "kSupport" : "white") << ",line width=" << c(k * 1.2)
+            << "cm] " << pt(X(s.pts[0].first), Y(s.pts[0].second)) << " circle (" << c(k * 3.2) << "cm);\n";
+          break;
+      }
+    }
+  }
+  for (auto& pl : L.labels) {
+    const std::string body = pl.label->tex.empty() ? tex_escape(pl.label->text) : "$" + pl.label->tex + "$";
+    o << "\\node[anchor=base west,inner sep=0pt,font=" << font << "] at " << pt(pl.box.x0 + 1, pl.box.y1 - 3) << " {" << body << "};\n";
+  }
+  for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
+    const auto& p = panels_[pi];
+    if (!p.title.empty())
+      o << "\\node[anchor=base,inner sep=0pt,font=" << font << "\\itshape] at " << pt(L.places[pi].centre, L.title_y) << " {"
+        << (p.title_tex.empty() ? tex_escape(p.title) : p.title_tex) << "};\n";
+    if (!p.after.empty())
+      o << "\\node[anchor=center,inner sep=0pt,font=\\Large] at " << pt(L.between_x[pi], L.mid) << " {$"
+        << (p.after_tex.empty() ? p.after : p.after_tex) << "$};\n";
+  }
+  o << "\\end{tikzpicture}\n";
+  return o.str();
+}
+
+At state_values(const model::Model& m, const exmap& solved, const exmap& params, int state) {
   const model::State& S = m.states.at(static_cast<std::size_t>(state));
   At at;
   at.values = params;
@@ -263,77 +460,111 @@ Figure scene_at(const model::Model& m, const exmap& solved, const exmap& params,
     at.values[c.qd] = std::isnan(r) ? 0 : r;
   }
   if (double t = value_of(S.t); !std::isnan(t)) at.values[m.t] = t;
-  // drawn twice: glyphs (marks, arrows, ground) sized from the extent of the first drawing
-  auto drawing = [&](double glyph) {
-    Figure f;
-    f.set_glyph(glyph);
-    // the bodies by their shapes: r = G + R(φ) (lx, ly)
-    for (auto& b : m.bodies) {
-      const double gx = at(b.x), gy = at(b.y), phi = at(b.angle), c = std::cos(phi), s = std::sin(phi);
-      auto world = [&](double lx, double ly) { return std::pair<double, double>{gx + c * lx - s * ly, gy + s * lx + c * ly}; };
-      const model::InertiaShape& shape = model::inertia_shape(b.shape);
-      const double a = b.sizes.empty() ? 0 : at(b.sizes[0]);
-      switch (shape.outline) {
-        case model::Outline::Bar: {
-          auto [x1, y1] = world(-a / 2, 0);
-          auto [x2, y2] = world(a / 2, 0);
-          f.line(x1, y1, x2, y2, Ink::Body);
-          break;
-        }
-        case model::Outline::Round:
-        case model::Outline::Gyration: {
-          if (shape.outline == model::Outline::Round) f.circle(gx, gy, a, Ink::Body, true);
-          else f.circle(gx, gy, a, Ink::Hidden);  // the radius of gyration, not the rim
-          auto [x2, y2] = world(a, 0);
-          f.line(gx, gy, x2, y2, Ink::Thin);  // the reference line: the body's angle
-          break;
-        }
-        case model::Outline::Rect: {
-          const double bb = b.sizes.size() > 1 ? at(b.sizes[1]) : a;
-          f.polyline({world(-a / 2, -bb / 2), world(a / 2, -bb / 2), world(a / 2, bb / 2), world(-a / 2, bb / 2)}, Ink::Body, true, true);
-          break;
-        }
-        case model::Outline::Dot: {
-          // a particle: a small block, turned with its angle
-          const double g = f.glyph();
-          f.polyline({world(-g, -g * 0.7), world(g, -g * 0.7), world(g, g * 0.7), world(-g, g * 0.7)}, Ink::Body, true, true);
-          break;
-        }
-      }
-      f.mark(gx, gy, b.name + ".G");
-      f.label(gx, gy, b.name);
-      for (auto& [pn, lp] : b.points) {
-        auto [px, py] = world(at(lp.first), at(lp.second));
-        f.mark(px, py, b.name + "." + pn);
-        f.label(px, py, pn);
-      }
+  return at;
+}
+
+void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
+  const model::Body& b = m.bodies.at(static_cast<std::size_t>(bi));
+  // the body by its shape: r = G + R(φ) (lx, ly)
+  const double gx = at(b.x), gy = at(b.y), phi = at(b.angle), c = std::cos(phi), s = std::sin(phi);
+  auto world = [&](double lx, double ly) { return std::pair<double, double>{gx + c * lx - s * ly, gy + s * lx + c * ly}; };
+  const model::InertiaShape& shape = model::inertia_shape(b.shape);
+  const double a = b.sizes.empty() ? 0 : at(b.sizes[0]);
+  switch (shape.outline) {
+    case model::Outline::Bar: {
+      auto [x1, y1] = world(-a / 2, 0);
+      auto [x2, y2] = world(a / 2, 0);
+      f.line(x1, y1, x2, y2, Ink::Body);
+      break;
     }
-    for (auto& [pn, p] : m.fixed_points) {
-      f.mark(at(p.first), at(p.second), pn, true);
-      f.label(at(p.first), at(p.second), pn);
+    case model::Outline::Round:
+    case model::Outline::Gyration: {
+      if (shape.outline == model::Outline::Round) f.circle(gx, gy, a, Ink::Body, true);
+      else f.circle(gx, gy, a, Ink::Hidden);  // the radius of gyration, not the rim
+      auto [x2, y2] = world(a, 0);
+      f.line(gx, gy, x2, y2, Ink::Thin);  // the reference line: the body's angle
+      break;
     }
-    for (auto& e : m.effects) e.draw(m, at, f);
-    return f;
-  };
+    case model::Outline::Rect: {
+      const double bb = b.sizes.size() > 1 ? at(b.sizes[1]) : a;
+      f.polyline({world(-a / 2, -bb / 2), world(a / 2, -bb / 2), world(a / 2, bb / 2), world(-a / 2, bb / 2)}, Ink::Body, true, true);
+      break;
+    }
+    case model::Outline::Dot: {
+      // a particle: a small block, turned with its angle
+      const double g = f.glyph();
+      f.polyline({world(-g, -g * 0.7), world(g, -g * 0.7), world(g, g * 0.7), world(-g, g * 0.7)}, Ink::Body, true, true);
+      break;
+    }
+  }
+  f.mark(gx, gy, b.name + ".G");
+  f.label(gx, gy, b.name);
+  if (!points) return;
+  for (auto& [pn, lp] : b.points) {
+    auto [px, py] = world(at(lp.first), at(lp.second));
+    f.mark(px, py, b.name + "." + pn);
+    f.label(px, py, pn);
+  }
+}
+
+namespace {
+
+// the scene drawn with glyphs of size g: bodies, fixed points, effects
+Figure drawing(const model::Model& m, const At& at, double g) {
+  Figure f;
+  f.set_glyph(g);
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) body(m, at, static_cast<int>(b), f);
+  for (auto& [pn, p] : m.fixed_points) {
+    f.mark(at(p.first), at(p.second), pn, true);
+    f.label(at(p.first), at(p.second), pn);
+  }
+  for (auto& e : m.effects) e.draw(m, at, f);
+  return f;
+}
+
+}  // namespace
+
+double glyph_for(const model::Model& m, const At& at) {
+  // glyphs (marks, arrows, ground) sized from the extent of a first drawing
   double extent = 0;
   for (auto& b : m.bodies)
     for (auto& sz : b.sizes) extent = std::max(extent, std::fabs(at(sz)));
-  const double first = drawing(0.045 * (extent > 0 ? extent : 1)).extent();
-  return drawing(0.045 * (first > 0 ? first : 1));
+  const double first = drawing(m, at, 0.045 * (extent > 0 ? extent : 1)).extent();
+  return 0.045 * (first > 0 ? first : 1);
 }
 
-void write(const Figure& f, const std::string& path) {
+Figure scene_at(const model::Model& m, const exmap& solved, const exmap& params, int state) {
+  const At at = state_values(m, solved, params, state);
+  return drawing(m, at, glyph_for(m, at));
+}
+
+Sheet states_at(const model::Model& m, const exmap& solved, const exmap& params, const std::vector<int>& states) {
+  std::vector<At> ats;
+  double g = 0;
+  for (int st : states) {
+    ats.push_back(state_values(m, solved, params, st));
+    g = std::max(g, glyph_for(m, ats.back()));
+  }
+  Sheet sheet;
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const std::string& name = m.states.at(static_cast<std::size_t>(states[i])).name;
+    sheet.add(drawing(m, ats[i], g), "state " + name);
+  }
+  return sheet;
+}
+
+void write(const Sheet& sheet, const std::string& path) {
   namespace fs = std::filesystem;
   const std::string ext = fs::path(path).extension().string();
-  if (ext != ".svg" && ext != ".pdf" && ext != ".png")
-    throw InputError("the drawing '" + path + "' is not .svg, .pdf or .png", "name it FILE.svg, FILE.pdf or FILE.png");
-  const std::string svg = f.svg();
+  if (ext != ".svg" && ext != ".pdf" && ext != ".png" && ext != ".tex")
+    throw InputError("the drawing '" + path + "' is not .svg, .pdf, .png or .tex", "name it FILE.svg, FILE.pdf, FILE.png or FILE.tex");
+  const std::string svg = ext == ".tex" ? sheet.tikz(16) : sheet.svg();
   auto put = [&](const fs::path& p) {
     std::ofstream out(p, std::ios::binary);
     out << svg;
     if (!out) throw InputError("cannot write '" + p.string() + "'", "check the directory and its permissions");
   };
-  if (ext == ".svg") return put(path);
+  if (ext == ".svg" || ext == ".tex") return put(path);
   // .pdf, .png: the SVG through rsvg-convert, in a private directory
   fs::path dir = fs::temp_directory_path() / ("kinergy-draw-" + std::to_string(::getpid()));
   fs::create_directories(dir);

@@ -5,6 +5,7 @@
 #include <functional>
 #include <random>
 #include <sstream>
+#include <tuple>
 
 #include <Eigen/Dense>
 
@@ -300,6 +301,8 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
                   a.pos};
     out.components.push_back(c);
   }
+  for (auto& e : m.effects)
+    for (auto& p : pushes(m, e, a, k)) out.shown.push_back({e.name, p});
   return out;
 }
 
@@ -369,6 +372,8 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   }
   const char* what = a.conserved ? "conservation of angular momentum" : "angular impulse-momentum";
   c.equation = {c.before + I, c.after, what, std::string(what) + " about " + a.about.text + ", " + state_pair(m, a), a.pos};
+  for (auto& e : m.effects)
+    for (auto& p : pushes(m, e, a, k)) out.shown.push_back({e.name, p});
   out.components.push_back(c);
   return out;
 }
@@ -475,6 +480,52 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
       ex vt = dot(pb.v.first - pa.v.first, pb.v.second - pa.v.second, -e.ny, e.nx);
       out.restitution.push_back({after(vt), 0, "no sliding",
                                  "no sliding at contact " + e.name + " after the impact " + SB + " -> " + SA, e.pos});
+    }
+  }
+  // what each body's diagram shows: P = J n (+ Jt t) on the second party at the contact, −P on
+  // the first; the given blows; a pin's impulse (its body's momentum change less the others)
+  for (int ci : a.contacts) {
+    const effects::Contact& e = effects::contact(m, ci);
+    const auto& [J, Jt] = a.contact_impulses.at(e.name);
+    for (const PointRef* p : {&e.b, &e.a}) {
+      if (p->ground || p->body < 0) continue;
+      const int sign = p == &e.b ? 1 : -1;
+      Push push;
+      push.unknown = true;
+      push.body = p->body;
+      std::tie(push.arm_x, push.arm_y) = m.position(*p);
+      push.Rx = sign * (J * e.nx - (e.stick ? Jt * e.ny : ex(0)));
+      push.Ry = sign * (J * e.ny + (e.stick ? Jt * e.nx : ex(0)));
+      out.shown.push_back({e.name, push});
+    }
+  }
+  for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
+    const Effect& e = m.effects[ei];
+    if (const model::Blow* g = e.blow(); g && g->at.body >= 0) {
+      Push push;
+      push.unknown = true;
+      push.body = g->at.body;
+      std::tie(push.arm_x, push.arm_y) = m.position(g->at);
+      push.Rx = g->Jx;
+      push.Ry = g->Jy;
+      out.shown.push_back({e.name, push});
+    }
+    // (a pin to the ground: its impulse on its one body; one between two bodies is internal to neither's
+    // diagram alone, and not drawn)
+    const std::vector<int> acted = e.bodies_acted(m);
+    const int ai = static_cast<int>(&a - m.analyses.data());
+    if (ai < 0 || ai >= static_cast<int>(m.analyses.size())) continue;
+    for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+      if (!e.holds(static_cast<int>(b)) || acted.size() != 1) continue;
+      Push push;
+      push.unknown = push.reaction = true;
+      push.body = static_cast<int>(b);
+      try {
+        std::tie(push.Rx, push.Ry) = e.impulse(m, static_cast<int>(ei), ai);
+      } catch (const std::exception&) {
+        continue;  // not told apart from the others (two pins on a body): not drawn
+      }
+      out.shown.push_back({e.name, push});
     }
   }
   return out;

@@ -101,15 +101,7 @@ void aim(const model::Model& m, const Known& k, Leg& leg, double t1) {
 
 }  // namespace
 
-exmap simulation_values(const Solution& s) {
-  exmap v = s.model.parameter_values();
-  for (auto& p : s.model.params)
-    if (p.unknown) {
-      auto it = s.branch.sol.find(p.sym);
-      if (it != s.branch.sol.end()) v[p.sym] = it->second.subs(v);
-    }
-  return v;
-}
+exmap simulation_values(const Solution& s) { return parameter_values(s); }
 
 namespace {
 

@@ -36,6 +36,12 @@ public:
   struct Label {
     double x, y;  ///< the anchor, world coordinates
     std::string text;
+    std::string tex;  ///< the same in TeX's math mode (empty: the text, escaped)
+  };
+  /// The box round everything drawn (world coordinates); empty when nothing finite is.
+  struct Bounds {
+    double x0, y0, x1, y1;
+    bool empty() const { return !(x0 <= x1); }
   };
 
   void line(double x1, double y1, double x2, double y2, Ink ink = Ink::Body);
@@ -49,7 +55,7 @@ public:
   void mark(double x, double y, const std::string& name, bool fixed = false);
   /// Hatched ground under a fixed support at (x, y).
   void ground(double x, double y);
-  void label(double x, double y, const std::string& text);
+  void label(double x, double y, const std::string& text, const std::string& tex = "");
 
   /// A length that reads as "small" in this figure (for glyphs whose size the scene does not set).
   double glyph() const;
@@ -60,6 +66,9 @@ public:
   std::string svg(int width = 640) const;
 
   const std::vector<Shape>& shapes() const { return shapes_; }
+  const std::vector<Label>& labels() const { return labels_; }
+  /// The box round the shapes (and the labels' anchors, with `labels`).
+  Bounds bounds(bool labels = false) const;
   /// The larger side of the box around everything drawn (0 when nothing is).
   double extent() const;
 
@@ -69,13 +78,57 @@ private:
   double glyph_ = 0.05;
 };
 
+/// Figures side by side at one scale, each with a title under it and words between them: the
+/// scene at several states, or an impulse–momentum diagram (momenta + impulses = momenta).
+class Sheet {
+public:
+  Sheet() = default;
+  explicit Sheet(Figure f) { add(std::move(f)); }
+  /// A panel; `title` under it (plain text, and in TeX's text mode when `title_tex` is set).
+  void add(Figure f, std::string title = "", std::string title_tex = "");
+  /// Words between the last panel added and the next ("+", "="), plain and in TeX's math mode.
+  void then(std::string text, std::string tex);
+
+  /// An SVG document at most `width` pixels wide and `max_height` high; each panel's world in its
+  /// own group (data-world="metres", data-panel="i") whose transform maps metres to pixels.
+  /// (`width` 0: 640 for one panel, more for several.)
+  std::string svg(int width = 0, int max_height = 100000) const;
+  /// The same drawing as a TikZ picture `width_cm` wide (at most), for pdflatex: the page laid out
+  /// as for svg(width, max_height), at width_cm / width centimetres a pixel.
+  std::string tikz(double width_cm, int width = 0, int max_height = 100000) const;
+  std::size_t size() const { return panels_.size(); }
+
+private:
+  struct Panel {
+    Figure figure;
+    std::string title, title_tex, after, after_tex;
+  };
+  std::vector<Panel> panels_;
+};
+
+/// The values of a state for drawing: its coordinates and rates (given, or solved in `solved`),
+/// its time, and the parameters. @throws SceneError when the state does not fix a coordinate.
+At state_values(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int state);
+
+/// Body b by its inertia shape at `at`: a bar, a disk with its reference line, a plate, a
+/// block; its mass centre and (with `points`) its named points marked and labelled.
+void body(const model::Model& m, const At& at, int b, Figure& f, bool points = true);
+
+/// A glyph size that suits a drawing of these bodies at `at`: from a first drawing's extent.
+double glyph_for(const model::Model& m, const At& at);
+
 /// The scene at state `state` (coordinates and rates given or solved in `solved`), drawn from
 /// the model: each body by its inertia shape, its named points, the fixed points, and each
 /// effect as it draws itself. @throws SceneError when the state does not fix a coordinate.
 Figure scene_at(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int state);
 
-/// Write the figure to `path`: .svg as it is, .pdf or .png converted by rsvg-convert (Debian
-/// librsvg2-bin). @throws InputError for another extension, a missing converter or a failed write.
-void write(const Figure& f, const std::string& path);
+/// The scene at each of `states` side by side, at one scale and with one glyph size, each titled
+/// "state NAME". @throws SceneError when a state does not fix a coordinate.
+Sheet states_at(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, const std::vector<int>& states);
+
+/// Write the drawing to `path`: .svg as it is, .pdf or .png converted by rsvg-convert (Debian
+/// librsvg2-bin), .tex as a TikZ picture to \input in a document that loads tikz.
+/// @throws InputError for another extension, a missing converter or a failed write.
+void write(const Sheet& s, const std::string& path);
 
 }  // namespace kinergy::draw

@@ -18,6 +18,13 @@ struct Push {
   bool implied = false;     ///< the support is one the coordinates imply (a pin), not a relation between them
   ex Rx = 0, Ry = 0;
   std::string what;         ///< how a derivation names it, when not by the defaults
+  int body = -1;            ///< the body it acts on, where that is one (an impact's impulses); −1: the set
+};
+
+/// An effect's push as a diagram shows it.
+struct Shown {
+  std::string effect;
+  Push push;
 };
 
 /// Is body b in the set?
@@ -47,6 +54,7 @@ struct MomentumBalance {
     Equation equation;
   };
   std::vector<Component> components;
+  std::vector<Shown> shown;  ///< every force and impulse on the set, for its impulse–momentum diagram
   bool conserved = false;
   bool angular = false;  ///< angular (about a point), else linear
 };
@@ -65,6 +73,9 @@ struct ImpactBalance {
   std::vector<Equation> momentum;     ///< one per coordinate
   std::vector<Equation> restitution;  ///< one per contact (and stick conditions)
   std::vector<Equation> positions;    ///< q_after = q_before
+  /// The impulses on each body (Push::body), for the impact's diagrams: contact impulses at the
+  /// contact point, given blows, and each pin's impulsive reaction.
+  std::vector<Shown> shown;
 };
 
 ImpactBalance impact(const model::Model& m, const model::Analysis& a, const Knowledge& k);
