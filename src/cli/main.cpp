@@ -235,8 +235,13 @@ int main(int argc, char** argv) {
       }
       const GiNaC::exmap solved = sol ? sol->branch.sol : GiNaC::exmap{};
       const GiNaC::exmap values = sol ? kinergy::simulate::simulation_values(*sol) : m.parameter_values();
+      std::vector<std::string> left_out;
       const kinergy::draw::Sheet sheet = states.size() == 1 ? kinergy::draw::Sheet(kinergy::draw::scene_at(m, solved, values, states[0]))
-                                                            : kinergy::draw::states_at(m, solved, values, states);
+                                                            : kinergy::draw::states_at(m, solved, values, states, &left_out);
+      if (sheet.size() == 0)
+        throw kinergy::SceneError({scene, 1, 1}, "no state of the scene fixes every coordinate, so none can be drawn",
+                                  "give every coordinate at one state at least");
+      for (auto& why : left_out) std::cerr << scene << ": left out of the drawing: " << why << "\n";
       if (draw_out.empty()) std::cout << sheet.svg();
       else kinergy::draw::write(sheet, draw_out);
       return 0;

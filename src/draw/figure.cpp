@@ -59,6 +59,7 @@ Pen pen(Ink i) {
     case Ink::Spring: return {"#2a7d2e", 1.5, false};
     case Ink::Track: return {"#777777", 1.2, true};
     case Ink::Hidden: return {"#999999", 1.0, true};
+    case Ink::Momentum: return {"#6a1b9a", 2.2, false};
   }
   return {"#000000", 1.0, false};
 }
@@ -149,7 +150,8 @@ namespace {
 // A sheet laid out on the page (pixels, y down): one scale for every panel, each panel's world
 // mapped by X = tx + s x, Y = ty − s y; labels placed off each other.
 struct Layout {
-  int width = 0, height = 0;
+  int page = 0;               // the width asked for (pixels)
+  int width = 0, height = 0;  // the page's size: narrower than asked when the height bounds the scale
   double scale = 1;
   struct Place {
     double tx, ty, centre;  // transform, and the panel's middle on the page (x)
@@ -167,15 +169,16 @@ struct Layout {
   std::vector<double> between_x;  // where the words after panel i go
 };
 
-constexpr double kPad = 48, kGap = 90, kTitle = 26;
+constexpr double kPad = 48, kGap = 120, kTitle = 26;
 constexpr double kFont = 13, kCharWidth = 7.2;  // label font size and the width of a character (pixels)
 
-Layout lay_out(const std::vector<std::pair<const Figure*, bool>>& panels, int width, int max_height) {
+Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height) {
   Layout L;
   const std::size_t n = panels.size();
   if (width <= 0) width = n <= 1 ? 640 : static_cast<int>(std::min<std::size_t>(1200, 400 * n));
+  L.page = width;
   bool titles = false;
-  for (auto& p : panels) titles = titles || p.second;
+  for (auto& p : panels) titles = titles || p.second > 0;
   std::vector<Figure::Bounds> bs;
   double sum_w = 0, max_h = 0;
   for (auto& p : panels) {
@@ -188,20 +191,44 @@ Layout lay_out(const std::vector<std::pair<const Figure*, bool>>& panels, int wi
     const double cx = (b.x0 + b.x1) / 2, cy = (b.y0 + b.y1) / 2;
     bs.push_back({cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2});
     sum_w += w;
-    max_h = std::max(max_h, h);
   }
+  // one vertical place for every panel: the same height in the world at the same height on the page
+  double gy0 = bs.empty() ? 0 : bs[0].y0, gy1 = bs.empty() ? 0 : bs[0].y1;
+  for (auto& b : bs) gy0 = std::min(gy0, b.y0), gy1 = std::max(gy1, b.y1);
+  max_h = gy1 - gy0;
   const double gaps = kGap * static_cast<double>(n > 0 ? n - 1 : 0);
-  L.scale = (width - 2 * kPad - gaps) / sum_w;
   const double title_h = titles ? kTitle : 0;
+  // each panel as wide as its drawing, or its title when that is wider: the scale s solves
+  // Σ max(w_i s, t_i) = the width available (a few rounds of fixing the panels their titles hold)
+  std::vector<double> tw;
+  for (auto& p : panels) tw.push_back(p.second > 0 ? kCharWidth * static_cast<double>(p.second) + 12 : 0);
+  const double avail = width - 2 * kPad - gaps;
+  L.scale = avail / sum_w;
+  for (int round = 0; round < 4; ++round) {
+    double fixed = 0, free_w = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double w = bs[i].x1 - bs[i].x0;
+      if (tw[i] > w * L.scale) fixed += tw[i];
+      else free_w += w;
+    }
+    if (free_w > 0 && avail - fixed > 0) L.scale = (avail - fixed) / free_w;
+  }
   L.scale = std::min(L.scale, (max_height - 2 * kPad - title_h) / max_h);
-  L.width = static_cast<int>(std::ceil(sum_w * L.scale + 2 * kPad + gaps - 1e-6));
+  std::vector<double> slot;
+  double slots = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    slot.push_back(std::max((bs[i].x1 - bs[i].x0) * L.scale, tw[i]));
+    slots += slot.back();
+  }
+  L.width = static_cast<int>(std::ceil(slots + 2 * kPad + gaps - 1e-6));
   L.height = static_cast<int>(std::ceil(max_h * L.scale + 2 * kPad + title_h - 1e-6));
   L.mid = kPad + max_h * L.scale / 2;
   L.title_y = kPad + max_h * L.scale + kPad / 2 + 8;
+  const double cy = (gy0 + gy1) / 2;
   double left = kPad;
   for (std::size_t i = 0; i < n; ++i) {
     const auto& b = bs[i];
-    const double w = (b.x1 - b.x0) * L.scale, cx = (b.x0 + b.x1) / 2, cy = (b.y0 + b.y1) / 2;
+    const double w = slot[i], cx = (b.x0 + b.x1) / 2;
     // X = left + w/2 + s (x − cx), Y = mid − s (y − cy)
     L.places.push_back({left + w / 2 - L.scale * cx, L.mid + L.scale * cy, left + w / 2});
     L.between_x.push_back(left + w + kGap / 2);
@@ -259,8 +286,8 @@ std::string tex_escape(const std::string& s) {
 }  // namespace
 
 std::string Sheet::svg(int width, int max_height) const {
-  std::vector<std::pair<const Figure*, bool>> ps;
-  for (auto& p : panels_) ps.push_back({&p.figure, !p.title.empty()});
+  std::vector<std::pair<const Figure*, std::size_t>> ps;
+  for (auto& p : panels_) ps.push_back({&p.figure, p.title.size()});
   const Layout L = lay_out(ps, width, max_height);
   const double scale = L.scale;
   std::ostringstream o;
@@ -335,11 +362,11 @@ std::string Sheet::svg(int width, int max_height) const {
 }
 
 std::string Sheet::tikz(double width_cm, int width, int max_height) const {
-  std::vector<std::pair<const Figure*, bool>> ps;
-  for (auto& p : panels_) ps.push_back({&p.figure, !p.title.empty()});
+  std::vector<std::pair<const Figure*, std::size_t>> ps;
+  for (auto& p : panels_) ps.push_back({&p.figure, p.title.size()});
   const Layout L = lay_out(ps, width, max_height);
   // page pixels → centimetres, y up: (k X, k (H − Y)); numbers to 1/1000 cm, the same text everywhere
-  const double k = width_cm / L.width;
+  const double k = width_cm / L.page;
   auto c = [](double v) {
     std::ostringstream os;
     os << std::fixed << std::setprecision(3) << (std::fabs(v) < 5e-4 ? 0.0 : v);
@@ -354,6 +381,7 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
       case Ink::Spring: return "kSpring";
       case Ink::Track: return "kTrack";
       case Ink::Hidden: return "kHidden";
+      case Ink::Momentum: return "kMomentum";
     }
     return "black";
   };
@@ -369,7 +397,8 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
   std::ostringstream o;
   o << "\\begin{tikzpicture}\n"
     << "\\definecolor{kBody}{HTML}{1F3B73}\\definecolor{kSupport}{HTML}{333333}\\definecolor{kForce}{HTML}{B8231F}"
-    << "\\definecolor{kSpring}{HTML}{2A7D2E}\\definecolor{kTrack}{HTML}{777777}\\definecolor{kHidden}{HTML}{999999}\n"
+    << "\\definecolor{kSpring}{HTML}{2A7D2E}\\definecolor{kTrack}{HTML}{777777}\\definecolor{kHidden}{HTML}{999999}"
+    << "\\definecolor{kMomentum}{HTML}{6A1B9A}\n"
     << "\\path[use as bounding box] (0,0) rectangle " << pt(L.width, 0) << ";\n";
   for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
     const auto& P = L.places[pi];
@@ -432,7 +461,7 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
   return o.str();
 }
 
-At state_values(const model::Model& m, const exmap& solved, const exmap& params, int state) {
+At state_values(const model::Model& m, const exmap& solved, const exmap& params, int state, const At* otherwise) {
   const model::State& S = m.states.at(static_cast<std::size_t>(state));
   At at;
   at.values = params;
@@ -452,6 +481,7 @@ At state_values(const model::Model& m, const exmap& solved, const exmap& params,
   for (auto& c : m.coords) {
     auto& [q, qd] = S.sym.at(c.name);
     double v = value_of(q);
+    if (std::isnan(v) && otherwise) v = otherwise->values.count(c.q) ? otherwise->operator()(c.q) : v;
     if (std::isnan(v))
       throw SceneError(S.pos, "state '" + S.name + "' does not fix " + c.name + ", so it cannot be drawn",
                        "give " + c.name + " at that state, or draw another state with --state");
@@ -538,18 +568,22 @@ Figure scene_at(const model::Model& m, const exmap& solved, const exmap& params,
   return drawing(m, at, glyph_for(m, at));
 }
 
-Sheet states_at(const model::Model& m, const exmap& solved, const exmap& params, const std::vector<int>& states) {
-  std::vector<At> ats;
+Sheet states_at(const model::Model& m, const exmap& solved, const exmap& params, const std::vector<int>& states,
+                std::vector<std::string>* left_out) {
+  std::vector<std::pair<int, At>> ats;
   double g = 0;
   for (int st : states) {
-    ats.push_back(state_values(m, solved, params, st));
-    g = std::max(g, glyph_for(m, ats.back()));
+    try {
+      ats.push_back({st, state_values(m, solved, params, st)});
+    } catch (const SceneError& e) {
+      if (!left_out) throw;
+      left_out->push_back(e.problem());
+      continue;
+    }
+    g = std::max(g, glyph_for(m, ats.back().second));
   }
   Sheet sheet;
-  for (std::size_t i = 0; i < states.size(); ++i) {
-    const std::string& name = m.states.at(static_cast<std::size_t>(states[i])).name;
-    sheet.add(drawing(m, ats[i], g), "state " + name);
-  }
+  for (auto& [st, at] : ats) sheet.add(drawing(m, at, g), "state " + m.states.at(static_cast<std::size_t>(st)).name);
   return sheet;
 }
 

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "figures.hpp"
 #include "kinergy/effects/contact.hpp"
 #include "kinergy/emit/sections.hpp"
 #include "kinergy/model/inertia.hpp"
@@ -127,6 +128,11 @@ private:
   void section(const std::string& t) { d_.blocks.push_back({Block::Kind::Section, t, {}, {}, {}, {}}); }
   void subsection(const std::string& t) { d_.blocks.push_back({Block::Kind::Subsection, t, {}, {}, {}, {}}); }
   void para(Spans sp) { d_.blocks.push_back({Block::Kind::Paragraph, "", std::move(sp), {}, {}, {}}); }
+  void figure(draw::Sheet sheet, const std::string& caption) {
+    Block b{Block::Kind::Figure, caption, {}, {}, {}, {}};
+    b.sheet = std::make_shared<const draw::Sheet>(std::move(sheet));
+    d_.blocks.push_back(std::move(b));
+  }
   void rows(std::vector<Row> r) {
     if (!r.empty()) d_.blocks.push_back({Block::Kind::Equations, "", {}, std::move(r), {}, {}});
   }
@@ -395,6 +401,13 @@ private:
       sp.push_back(W("."));
       para(sp);
     }
+    // the scene at each state, from its model with the solved values
+    std::vector<std::string> left_out;
+    std::vector<draw::Sheet> sheets = state_sheets(s_, left_out);
+    for (std::size_t i = 0; i < sheets.size(); ++i)
+      figure(std::move(sheets[i]), "The scene at its states, drawn from the model with the solved values" +
+                                       std::string(sheets.size() > 1 ? " (" + std::to_string(i + 1) + " of " + std::to_string(sheets.size()) + ")" : "") + ".");
+    for (auto& why : left_out) para({W("Not drawn: " + why + ".")});
   }
 
   // --- energy ---------------------------------------------------------------------------------
@@ -514,6 +527,9 @@ private:
             W(mb.conserved ? " along a direction in which no effect has an impulse" : ""),
             W(mb.components.size() > 1 ? ". Component by component:" : ".")});
     }
+    if (auto sheet = momentum_diagram(s_, a, a.bodies, mb.shown, &d_.names))
+      figure(std::move(*sheet), "Impulse-momentum diagram of " + bodies + ": the momenta at " + S1 + ", plus the impulses from " + S1 +
+                                    " to " + S2 + ", equal the momenta at " + S2 + ".");
     for (auto& c : mb.components) {
       std::string base_tex, base_text, comp;
       if (angular) {
@@ -613,6 +629,15 @@ private:
     intro.push_back(W(". Pins and constraints carry workless impulsive reactions; gravity, springs, couples and "
                       "forces are not impulsive."));
     para(intro);
+    // each body the impact moves: momenta before + impulses on it = momenta after
+    for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
+      bool struck = false;
+      for (auto& sh : ib.shown) struck = struck || sh.push.body == static_cast<int>(b);
+      if (!struck) continue;
+      if (auto sheet = momentum_diagram(s_, a, {static_cast<int>(b)}, ib.shown, &d_.names))
+        figure(std::move(*sheet), "Impulse-momentum diagram of " + m_.bodies[b].name + " in the impact: its momenta before (" + SB +
+                                      "), plus the impulses on it, equal its momenta after (" + SA + ").");
+    }
     if (!ib.momentum.empty()) {
       para({W("Impulse and momentum along each coordinate q (its generalized momentum changes by the generalized "
               "impulse), "),

@@ -420,6 +420,7 @@ std::string latex(const Derivation& d) {
      << "\\usepackage[a4paper,margin=25mm]{geometry}\n"
      << "\\usepackage{amsmath,amssymb}\n"
      << "\\usepackage{booktabs}\n"
+     << "\\usepackage{tikz}\n"
      << "\\allowdisplaybreaks\n"
      << "\\setlength{\\parindent}{0pt}\n"
      << "\\setlength{\\parskip}{0.7ex plus 0.3ex}\n"
@@ -452,6 +453,12 @@ std::string latex(const Derivation& d) {
       case Block::Kind::Table:
         os << "\n";
         table(os, b, d);
+        break;
+      case Block::Kind::Figure:
+        // drawn in place (not floated), the caption under it
+        os << "\n\\begin{center}\n"
+           << b.sheet->tikz(b.sheet->size() > 1 ? 15.5 : 10.5, 0, b.sheet->size() > 1 ? 560 : 520)
+           << "\\\\[0.5ex]\n{\\small\\itshape " << tex_text(b.title) << "}\n\\end{center}\n";
         break;
     }
   }

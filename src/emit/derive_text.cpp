@@ -230,6 +230,8 @@ std::string text(const Derivation& d) {
       case Block::Kind::Table:
         table(os, b, d);
         break;
+      case Block::Kind::Figure:
+        break;  // drawings are in the LaTeX (and `kinergy draw`)
     }
   }
   return os.str();

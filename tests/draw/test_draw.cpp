@@ -8,6 +8,8 @@
 
 #include "../support/helpers.hpp"
 #include "kinergy/draw/figure.hpp"
+#include "../../src/emit/figures.hpp"
+#include "kinergy/emit/derive.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/simulate/check.hpp"
 
@@ -77,7 +79,7 @@ TEST_CASE("every derivation drawn at each state: the drawn points are the model'
   CHECK(drawn >= 100);
 }
 
-TEST_CASE("kinergy draw: SVG on standard output or to a file; what is refused", "[draw][cli]") {
+TEST_CASE("kinergy draw: SVG on standard output or to a file, and what is refused", "[draw][cli]") {
   int st = 0;
   std::string out = kt::run_cli("draw derivations/energy/sliding_rod.yaml --state 2", st);
   CHECK(st == 0);
@@ -90,7 +92,7 @@ TEST_CASE("kinergy draw: SVG on standard output or to a file; what is refused", 
   std::filesystem::create_directories(dir);
   out = kt::run_cli("draw derivations/energy/sliding_rod.yaml -o " + (dir / "rod.gif").string(), st);
   CHECK(st != 0);
-  CHECK(out.find("is not .svg, .pdf or .png") != std::string::npos);
+  CHECK(out.find("is not .svg, .pdf, .png or .tex") != std::string::npos);
   kt::run_cli("draw derivations/energy/sliding_rod.yaml -o " + (dir / "rod.svg").string(), st);
   CHECK(st == 0);
   CHECK(kt::read_file(dir / "rod.svg").rfind("<svg", 0) == 0);
@@ -104,4 +106,151 @@ TEST_CASE("kinergy draw: SVG on standard output or to a file; what is refused", 
     const std::string bytes = kt::read_file(file);
     CHECK(bytes.substr(1, 3) == (std::string(ext) == "png" ? "PNG" : "PDF"));
   }
+}
+
+TEST_CASE("kinergy draw --state all: the states side by side at one scale, each panel's points the model's", "[draw][cli]") {
+  kinergy::Solution s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/sliding_rod.yaml");
+  const auto& m = s.model;
+  REQUIRE(m.states.size() >= 2);
+  const auto params = kinergy::simulate::simulation_values(s);
+  std::vector<int> all;
+  for (std::size_t i = 0; i < m.states.size(); ++i) all.push_back(static_cast<int>(i));
+  const kinergy::draw::Sheet sheet = kinergy::draw::states_at(m, s.branch.sol, params, all);
+  REQUIRE(sheet.size() == m.states.size());
+  const std::string svg = sheet.svg();
+  // one world group per panel, one scale for all (the same matrix scale)
+  std::regex group("<g data-world=\"metres\" data-panel=\"([0-9]+)\" transform=\"matrix\\(([^ ]+) 0 0 ([^ ]+) ");
+  std::vector<std::string> scales;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), group); it != std::sregex_iterator(); ++it) scales.push_back((*it)[2]);
+  REQUIRE(scales.size() == m.states.size());
+  for (auto& sc : scales) CHECK(sc == scales[0]);
+  // each panel holds the marked points of the scene at its own state
+  for (std::size_t i = 0; i < m.states.size(); ++i) {
+    const std::string one = kinergy::draw::scene_at(m, s.branch.sol, params, static_cast<int>(i)).svg();
+    auto single = read_back(one);
+    const std::size_t a = svg.find("data-panel=\"" + std::to_string(i) + "\"");
+    const std::size_t b = svg.find("</g>", a);
+    auto panel = read_back(svg.substr(a, b - a));
+    REQUIRE(panel.points.size() == single.points.size());
+    for (auto& [name, p] : single.points) {
+      CHECK(std::fabs(panel.points[name].first - p.first) < 1e-4);
+      CHECK(std::fabs(panel.points[name].second - p.second) < 1e-4);
+    }
+  }
+  int st = 0;
+  std::string out = kt::run_cli("draw derivations/energy/sliding_rod.yaml --state all", st);
+  CHECK(st == 0);
+  CHECK(out == svg);
+  // a state that does not fix a coordinate is left out, and the user told which and why
+  out = kt::run_cli("draw derivations/impact/pendulum_strikes_block.yaml --state all", st);
+  CHECK(st == 0);
+  CHECK(out.find("left out of the drawing: state '3' does not fix x, so it cannot be drawn") != std::string::npos);
+  CHECK(out.find("data-panel=\"2\"") != std::string::npos);
+  CHECK(out.find("data-panel=\"3\"") == std::string::npos);
+}
+
+TEST_CASE("kinergy draw -o FILE.tex: a TikZ picture that pdflatex compiles", "[draw][cli][latex]") {
+  const auto dir = std::filesystem::temp_directory_path() / "kinergy-draw-tex";
+  std::filesystem::create_directories(dir);
+  int st = 0;
+  std::string out = kt::run_cli("draw derivations/momentum/gears_time_tooth_force.yaml --state all -o " + (dir / "g.tex").string(), st);
+  INFO(out);
+  REQUIRE(st == 0);
+  const std::string pic = kt::read_file(dir / "g.tex");
+  CHECK(pic.rfind("\\begin{tikzpicture}", 0) == 0);
+  CHECK(pic.find("\\end{tikzpicture}") != std::string::npos);
+  if (!kinergy::emit::have_pdflatex()) return;
+  auto run = kinergy::emit::run_pdflatex("\\documentclass{article}\\usepackage{tikz}\\begin{document}\n" + pic + "\\end{document}\n", "");
+  INFO(run.error);
+  CHECK(run.ok);
+}
+
+TEST_CASE("every derivation's LaTeX draws its states, and each momentum analysis and impact its impulse-momentum diagram",
+          "[draw][derive]") {
+  int diagrams = 0;
+  for (const auto& file : kt::scene_files("derivations")) {
+    INFO(file);
+    kinergy::Solution s = kinergy::solve_file(file);
+    const std::string tex = kinergy::emit::latex(kinergy::emit::derive(s, kinergy::scene::load_file(file)));
+    CHECK(tex.find("The scene at its states") != std::string::npos);
+    std::size_t want = 0;
+    for (auto& a : s.model.analyses) want += a.kind == "energy" ? 0 : 1;
+    std::size_t got = 0;
+    for (std::size_t i = tex.find("Impulse-momentum diagram of"); i != std::string::npos; i = tex.find("Impulse-momentum diagram of", i + 1)) ++got;
+    CHECK(got >= want);
+    diagrams += static_cast<int>(got);
+  }
+  CHECK(diagrams >= 40);
+}
+
+namespace {
+
+// the force arrows of a panel by the label at their head: label → (dx, dy)
+std::map<std::string, std::pair<double, double>> arrows_of(const kinergy::draw::Figure& f) {
+  std::map<std::string, std::pair<double, double>> out;
+  for (auto& sh : f.shapes()) {
+    if (sh.kind != kinergy::draw::Figure::Shape::Arrow) continue;
+    for (auto& l : f.labels())
+      if (std::fabs(l.x - sh.pts[1].first) < 1e-12 && std::fabs(l.y - sh.pts[1].second) < 1e-12)
+        out[l.text] = {sh.pts[1].first - sh.pts[0].first, sh.pts[1].second - sh.pts[0].second};
+  }
+  return out;
+}
+
+// the sense of each curved arrow of a panel (counterclockwise +1, clockwise −1) by its label
+std::map<std::string, int> turns_of(const kinergy::draw::Figure& f) {
+  std::map<std::string, int> out;
+  for (auto& sh : f.shapes()) {
+    if (sh.kind != kinergy::draw::Figure::Shape::Arc) continue;
+    const auto& p = sh.pts;
+    // the turn from the first chord to the last step tells the sense
+    const double ax = p[p.size() - 2].first - p[0].first, ay = p[p.size() - 2].second - p[0].second;
+    const double bx = p.back().first - p[p.size() - 2].first, by = p.back().second - p[p.size() - 2].second;
+    for (auto& l : f.labels())
+      if (std::fabs(l.x - p.back().first) < 1e-9 && std::fabs(l.y - p.back().second) < 1e-9) out[l.text] = ax * by - ay * bx > 0 ? 1 : -1;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the impact diagram of a sphere striking a pivoted bar: each arrow points the way the problem says", "[draw][derive]") {
+  // by hand (the scene's description): the sphere moving right strikes the bar below the pin; the bar
+  // swings counterclockwise after (ω = 3.31 rad/s), the sphere rebounds (v = −0.517 m/s), the pin's
+  // impulse on the bar is +0.552 N s along x; the contact impulse pushes the bar right, the sphere left
+  kinergy::Solution s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/impact/sphere_hits_pivoted_bar.yaml");
+  const auto& m = s.model;
+  const kinergy::model::Analysis* impact = nullptr;
+  for (auto& a : m.analyses)
+    if (a.instant) impact = &a;
+  REQUIRE(impact);
+  REQUIRE(s.impacts.size() == 1);
+  const int bar = m.body_index("bar"), sphere = m.body_index("sphere");
+  auto bar_d = kinergy::emit::momentum_diagram(s, *impact, {bar}, s.impacts[0].shown, nullptr);
+  auto sphere_d = kinergy::emit::momentum_diagram(s, *impact, {sphere}, s.impacts[0].shown, nullptr);
+  REQUIRE(bar_d);
+  REQUIRE(sphere_d);
+  REQUIRE(bar_d->size() == 3);
+  // before: the bar at rest (no momentum drawn), the sphere moving right
+  CHECK(arrows_of(bar_d->panel(0)).empty());
+  auto sp0 = arrows_of(sphere_d->panel(0));
+  REQUIRE(sp0.count("m v\u0304"));
+  CHECK(sp0["m v\u0304"].first > 0);
+  // impulses: on the bar the pin's and the contact's, both along +x; on the sphere the contact's along −x
+  auto bi = arrows_of(bar_d->panel(1));
+  REQUIRE(bi.count("pin"));
+  CHECK(bi["pin"].first > 0);
+  CHECK(std::fabs(bi["pin"].second) < 1e-9 * std::fabs(bi["pin"].first));
+  REQUIRE(bi.size() == 2);
+  for (auto& [name, d] : bi) CHECK(d.first > 0);
+  auto si = arrows_of(sphere_d->panel(1));
+  REQUIRE(si.size() == 1);
+  CHECK(si.begin()->second.first < 0);
+  // after: the bar turns counterclockwise, the sphere moves left
+  auto bt = turns_of(bar_d->panel(2));
+  REQUIRE(bt.count("I\u0304 \u03c9"));
+  CHECK(bt["I\u0304 \u03c9"] == 1);
+  auto sp2 = arrows_of(sphere_d->panel(2));
+  REQUIRE(sp2.count("m v\u0304"));
+  CHECK(sp2["m v\u0304"].first < 0);
 }

@@ -71,7 +71,7 @@ TEST_CASE("a track is written with one shape, a point and a direction or a centr
                       Catch::Contains("a track holds a point of a body, but 'O' is a fixed point"));
 }
 
-TEST_CASE("a circular track's impulse has no fixed components; its moment about the centre is none", "[effects][track][errors]") {
+TEST_CASE("a circular track's impulse has no fixed components, and its moment about the centre is none", "[effects][track][errors]") {
   // a bead on a smooth horizontal ring of radius R about O, at speed v0 at (R, 0): the ring's
   // force is radial, so about O: m R v0 = m R v at (0, R), where x_dot = -v0
   const std::string ring = R"Y(title: bead on a ring

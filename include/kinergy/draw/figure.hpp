@@ -21,7 +21,7 @@ struct At {
 };
 
 /// What a stroke is for: its colour and weight follow.
-enum class Ink { Body, Thin, Support, Force, Spring, Track, Hidden };
+enum class Ink { Body, Thin, Support, Force, Spring, Track, Hidden, Momentum };
 
 class Figure {
 public:
@@ -97,6 +97,7 @@ public:
   /// as for svg(width, max_height), at width_cm / width centimetres a pixel.
   std::string tikz(double width_cm, int width = 0, int max_height = 100000) const;
   std::size_t size() const { return panels_.size(); }
+  const Figure& panel(std::size_t i) const { return panels_.at(i).figure; }
 
 private:
   struct Panel {
@@ -107,8 +108,10 @@ private:
 };
 
 /// The values of a state for drawing: its coordinates and rates (given, or solved in `solved`),
-/// its time, and the parameters. @throws SceneError when the state does not fix a coordinate.
-At state_values(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int state);
+/// its time, and the parameters. A coordinate the state does not fix takes its value in
+/// `otherwise` (a diagram drawn at the positions of the other state) when that is given.
+/// @throws SceneError when the state does not fix a coordinate (and `otherwise` is null).
+At state_values(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int state, const At* otherwise = nullptr);
 
 /// Body b by its inertia shape at `at`: a bar, a disk with its reference line, a plate, a
 /// block; its mass centre and (with `points`) its named points marked and labelled.
@@ -123,8 +126,10 @@ double glyph_for(const model::Model& m, const At& at);
 Figure scene_at(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int state);
 
 /// The scene at each of `states` side by side, at one scale and with one glyph size, each titled
-/// "state NAME". @throws SceneError when a state does not fix a coordinate.
-Sheet states_at(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, const std::vector<int>& states);
+/// "state NAME". A state that does not fix a coordinate is left out, and why is added to
+/// `left_out`; without `left_out` it throws that SceneError.
+Sheet states_at(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, const std::vector<int>& states,
+                std::vector<std::string>* left_out = nullptr);
 
 /// Write the drawing to `path`: .svg as it is, .pdf or .png converted by rsvg-convert (Debian
 /// librsvg2-bin), .tex as a TikZ picture to \input in a document that loads tikz.

@@ -3,11 +3,13 @@
 /// Built once from a Solution (derive), then written as plain Unicode text for terminals
 /// (text) or as a standalone LaTeX document (latex; pdf runs pdflatex on it).
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <ginac/ginac.h>
 
+#include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/emit.hpp"
 #include "kinergy/emit/latex.hpp"
 #include "kinergy/problem.hpp"
@@ -57,13 +59,14 @@ struct Row {
 };
 
 struct Block {
-  enum class Kind { Section, Subsection, Paragraph, Equations, Table };
+  enum class Kind { Section, Subsection, Paragraph, Equations, Table, Figure };
   Kind kind = Kind::Paragraph;
   std::string title;                ///< Section, Subsection
   Spans spans;                      ///< Paragraph
   std::vector<Row> rows;            ///< Equations
   std::vector<std::string> header;  ///< Table: column titles
   std::vector<std::vector<Spans>> cells;  ///< Table: rows of cells
+  std::shared_ptr<const draw::Sheet> sheet;  ///< Figure: the drawing (its caption is `title`); the LaTeX only
 };
 
 struct Derivation {

@@ -1,0 +1,185 @@
+// The figures of a worked solution: the scene at its states, and impulse–momentum diagrams.
+#include "figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/model/model.hpp"
+#include "kinergy/model/simplify.hpp"
+
+namespace kinergy::emit {
+
+using namespace GiNaC;
+
+std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string>& left_out) {
+  const model::Model& m = s.model;
+  const exmap values = parameter_values(s);
+  std::vector<draw::Sheet> out;
+  for (std::size_t first = 0; first < m.states.size(); first += 3) {
+    std::vector<int> row;
+    for (std::size_t i = first; i < std::min(first + 3, m.states.size()); ++i) row.push_back(static_cast<int>(i));
+    draw::Sheet sheet = draw::states_at(m, s.branch.sol, values, row, &left_out);
+    if (sheet.size() > 0) out.push_back(std::move(sheet));
+  }
+  return out;
+}
+
+namespace {
+
+// What the diagram needs to put numbers on its arrows' directions.
+struct Diagram {
+  const Solution& s;
+  const model::Model& m;
+  const model::Analysis& a;
+  const std::vector<int>& bodies;
+  const TexSymbols* names;
+  exmap params;
+  draw::At at1, at2;
+  double g = 0, len = 0;  // glyph, and the length every arrow is drawn with (directions only)
+
+  bool in_set(int b) const { return b < 0 || std::find(bodies.begin(), bodies.end(), b) != bodies.end(); }
+
+  // the value of an expression of state symbols: given and solved values put in, then the parameters
+  double solved(const ex& e) const {
+    ex v = e;
+    for (int pass = 0; pass < 6; ++pass) {
+      ex w = v.subs(m.states[static_cast<std::size_t>(a.from)].given).subs(m.states[static_cast<std::size_t>(a.to)].given).subs(s.branch.sol);
+      if (w.is_equal(v)) break;
+      v = w;
+    }
+    draw::At p;
+    p.values = params;
+    return p(v);
+  }
+
+  // an arrow of the diagram's length from (x, y) along (dx, dy), labelled; false when it has no direction
+  bool arrow(draw::Figure& f, double x, double y, double dx, double dy, draw::Ink ink, const std::string& text, const std::string& tex) const {
+    const double d = std::hypot(dx, dy);
+    if (!(d > 0) || !std::isfinite(d) || !std::isfinite(x) || !std::isfinite(y)) return false;
+    const double ex_ = x + len * dx / d, ey = y + len * dy / d;
+    f.arrow(x, y, ex_, ey, ink);
+    f.label(ex_, ey, text, tex);
+    return true;
+  }
+
+  // a curved arrow round (x, y) in the sense of w (counterclockwise when positive), labelled
+  void turning(draw::Figure& f, double x, double y, double w, draw::Ink ink, const std::string& text, const std::string& tex) const {
+    if (!(std::fabs(w) > 0) || !std::isfinite(w) || !std::isfinite(x) || !std::isfinite(y)) return;
+    const double r = 2.2 * g, pi = 3.14159265358979323846;
+    const double a0 = w > 0 ? -pi / 4 : pi, a1 = w > 0 ? pi : -pi / 4;
+    f.arc_arrow(x, y, r, a0, a1, ink);
+    f.label(x + r * std::cos(a1), y + r * std::sin(a1), text, tex);
+  }
+
+  void about_point(draw::Figure& f, const draw::At& at) const {
+    if (a.about.text.empty() || m.body_index(a.about.text) >= 0) return;
+    auto [x, y] = at.point(m.position(a.about));
+    if (std::isfinite(x) && std::isfinite(y)) {
+      f.mark(x, y, a.about.text, a.about.body < 0);
+      f.label(x, y, a.about.text);
+    }
+  }
+
+  // momenta at a state: m v̄ at each mass centre, Ī ω round it
+  draw::Figure momenta(const draw::At& at) const {
+    draw::Figure f;
+    f.set_glyph(g);
+    for (int b : bodies) {
+      draw::body(m, at, b, f, false);
+      const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+      const double x = at(B.x), y = at(B.y);
+      arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, "m v\u0304", "m\\bar{v}");
+      if (at(B.inertia) > 0) turning(f, x, y, at(m.omega(b)), draw::Ink::Momentum, "I\u0304 \u03c9", "\\bar{I}\\omega");
+    }
+    about_point(f, at);
+    return f;
+  }
+
+  // the impulses on the bodies over the analysis, drawn on them at its first state
+  draw::Figure impulses(const std::vector<principles::Shown>& shown) const {
+    draw::Figure f;
+    f.set_glyph(g);
+    for (int b : bodies) draw::body(m, at1, b, f, false);
+    for (auto& [effect, p] : shown) {
+      if (!in_set(p.body)) continue;
+      const double x = at1(p.arm_x), y = at1(p.arm_y);
+      const std::string word = "\\mathrm{" + tex_text(effect) + "}";
+      if (p.unknown) {
+        // an unknown impulse made of unknowns (R = Σ u ∂R/∂u): one arrow along each ∂R/∂u, named by u
+        std::vector<symbol> us;
+        ex restx = p.Rx, resty = p.Ry;
+        for (const ex& u : a.unknowns)
+          if (is_a<symbol>(u) && (p.Rx.has(u) || p.Ry.has(u))) {
+            us.push_back(ex_to<symbol>(u));
+            restx -= u * p.Rx.diff(us.back());
+            resty -= u * p.Ry.diff(us.back());
+          }
+        const bool made_of_unknowns = !us.empty() && expand(restx).is_zero() && expand(resty).is_zero();
+        if (made_of_unknowns)
+          for (const symbol& u : us) arrow(f, x, y, at1(p.Rx.diff(u)), at1(p.Ry.diff(u)), draw::Ink::Force, model::text(u), latex(u, names));
+        // a known impulse (given, or a pin's: the momentum change less the others): along its solved value
+        else arrow(f, x, y, solved(p.Rx), solved(p.Ry), draw::Ink::Force, effect, word);
+        continue;
+      }
+      if (!p.M.is_zero()) {
+        // a couple: round the mass centre of the body it turns
+        int b = -1;
+        if (int ei = m.effect_index(effect); ei >= 0)
+          for (int x2 : m.effects[static_cast<std::size_t>(ei)].bodies_acted(m))
+            if (in_set(x2)) b = x2;
+        if (b >= 0) {
+          const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+          double Mv = at1(p.M);
+          if (!(std::fabs(Mv) > 0)) Mv = at2(p.M);
+          turning(f, at1(B.x), at1(B.y), Mv, draw::Ink::Force, (p.M.has(m.t) ? "\u222b" + effect + " dt" : effect + " \u0394t"),
+                  p.M.has(m.t) ? "\\int " + word + "\\,dt" : word + "\\,\\Delta t");
+        }
+      }
+      if (p.Fx.is_zero() && p.Fy.is_zero()) continue;
+      // a force: along its direction at the first state (at the second when it is zero there)
+      const bool varies = p.Fx.has(m.t) || p.Fy.has(m.t);
+      const std::string text = varies ? "\u222b" + effect + " dt" : effect + " \u0394t";
+      const std::string tex = varies ? "\\int " + word + "\\,dt" : word + "\\,\\Delta t";
+      if (!arrow(f, x, y, at1(p.Fx), at1(p.Fy), draw::Ink::Force, text, tex))
+        arrow(f, at2(p.arm_x), at2(p.arm_y), at2(p.Fx), at2(p.Fy), draw::Ink::Force, text, tex);
+    }
+    about_point(f, at1);
+    return f;
+  }
+};
+
+}  // namespace
+
+std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Analysis& a, const std::vector<int>& bodies,
+                                            const std::vector<principles::Shown>& shown, const TexSymbols* names) {
+  const model::Model& m = s.model;
+  Diagram d{s, m, a, bodies, names, parameter_values(s), {}, {}};
+  // each state at its own positions; a coordinate one of them does not fix (an angle the problem
+  // never needs) at the other's
+  std::optional<draw::At> a1, a2;
+  try {
+    a1 = draw::state_values(m, s.branch.sol, d.params, a.from);
+  } catch (const SceneError&) {
+  }
+  try {
+    a2 = draw::state_values(m, s.branch.sol, d.params, a.to, a1 ? &*a1 : nullptr);
+    if (!a1) a1 = draw::state_values(m, s.branch.sol, d.params, a.from, &*a2);
+  } catch (const SceneError&) {
+    return std::nullopt;
+  }
+  d.at1 = *a1;
+  d.at2 = *a2;
+  d.g = std::max(draw::glyph_for(m, d.at1), draw::glyph_for(m, d.at2));
+  d.len = 5 * d.g;
+  const std::string S1 = m.states[static_cast<std::size_t>(a.from)].name, S2 = m.states[static_cast<std::size_t>(a.to)].name;
+  draw::Sheet sheet;
+  sheet.add(d.momenta(d.at1), "momenta at " + S1);
+  sheet.then("+", "+");
+  sheet.add(d.impulses(shown), a.instant ? "impulses in the impact" : "impulses from " + S1 + " to " + S2);
+  sheet.then("=", "=");
+  sheet.add(d.momenta(d.at2), "momenta at " + S2);
+  return sheet;
+}
+
+}  // namespace kinergy::emit

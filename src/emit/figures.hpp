@@ -1,0 +1,26 @@
+// The figures of a worked solution: the scene at its states, and the impulse–momentum diagram of
+// each momentum analysis and each impact (momenta before + impulses = momenta after).
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinergy/draw/figure.hpp"
+#include "kinergy/emit/latex.hpp"
+#include "kinergy/principles/momentum.hpp"
+#include "kinergy/problem.hpp"
+
+namespace kinergy::emit {
+
+/// The scene at each of its states, at most three to a sheet; `left_out` gets the states that do
+/// not fix every coordinate.
+std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string>& left_out);
+
+/// The chapter's three panels for analysis `a` over the bodies `bodies`: the momenta at its first
+/// state (m v̄ at each mass centre, Ī ω round it), the impulses `shown` that act on them (each
+/// effect's at its point, named; an unknown reaction by its unknowns), the momenta at its second
+/// state. `names`: TeX names of symbols that need them. None when a state cannot be drawn.
+std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Analysis& a, const std::vector<int>& bodies,
+                                          const std::vector<principles::Shown>& shown, const TexSymbols* names);
+
+}  // namespace kinergy::emit
