@@ -37,10 +37,22 @@ bool have_pdflatex() {
   return false;
 }
 
+std::string pdflatex_error(const std::string& log, int rc) {
+  // a missing package names its Debian package
+  if (log.find("`tikz.sty' not found") != std::string::npos)
+    return "pdflatex cannot find TikZ (tikz.sty), which draws the figures: install Debian's texlive-pictures (bash .ci/setup --deps)";
+  // the first error of the log: "! Undefined control sequence." and the line after it
+  auto p = log.find("\n! ");
+  std::string first = p == std::string::npos ? "exit status " + std::to_string(rc) : log.substr(p + 1, 300);
+  for (char& c : first)
+    if (c == '\n') c = ' ';
+  return "pdflatex failed: " + first;
+}
+
 PdfRun run_pdflatex(const std::string& tex, const std::string& pdf_path) {
   PdfRun r;
   if (!have_pdflatex()) {
-    r.error = "pdflatex is not installed (Debian: apt-get install texlive-latex-base texlive-latex-recommended)";
+    r.error = "pdflatex is not installed (Debian: apt-get install texlive-latex-base texlive-latex-recommended texlive-pictures)";
     return r;
   }
   std::string templ = (fs::temp_directory_path() / "kinergy-tex-XXXXXX").string();
@@ -63,12 +75,7 @@ PdfRun run_pdflatex(const std::string& tex, const std::string& pdf_path) {
   if (!r.ran) {
     r.error = "pdflatex could not be started";
   } else if (!r.ok) {
-    // the first error of the log: "! Undefined control sequence." and the line after it
-    auto p = r.log.find("\n! ");
-    std::string first = p == std::string::npos ? "exit status " + std::to_string(rc) : r.log.substr(p + 1, 300);
-    for (char& c : first)
-      if (c == '\n') c = ' ';
-    r.error = "pdflatex failed: " + first;
+    r.error = pdflatex_error(r.log, rc);
   } else if (!pdf_path.empty()) {
     std::error_code ec;
     fs::copy_file(dir / "derivation.pdf", pdf_path, fs::copy_options::overwrite_existing, ec);

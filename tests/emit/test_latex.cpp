@@ -185,3 +185,12 @@ TEST_CASE("pdflatex errors are reported, and kinergy derive --pdf writes a PDF",
   CHECK(head == "%PDF");
   fs::remove(pdf);
 }
+
+TEST_CASE("a pdflatex run without TikZ says which Debian package draws the figures", "[emit][pdflatex]") {
+  // the log pdflatex writes when a package is missing (TeX Live 2022), and one with another error
+  const std::string missing = "(./derivation.tex\n! LaTeX Error: File `tikz.sty' not found.\n\nType X to quit or <RETURN> to proceed,\n";
+  CHECK(kinergy::emit::pdflatex_error(missing, 1) ==
+        "pdflatex cannot find TikZ (tikz.sty), which draws the figures: install Debian's texlive-pictures (bash .ci/setup --deps)");
+  CHECK(kinergy::emit::pdflatex_error("x\n! Undefined control sequence.\nl.3 \\nosuch", 1) == "pdflatex failed: ! Undefined control sequence. l.3 \\nosuch");
+  CHECK(kinergy::emit::pdflatex_error("no error line", 7) == "pdflatex failed: exit status 7");
+}

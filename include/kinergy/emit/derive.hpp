@@ -101,6 +101,10 @@ struct PdfRun {
   std::string error;   ///< what went wrong, in one line (empty when ok)
 };
 
+/// What went wrong in a failed pdflatex run, in one line, from its log (a missing package named by
+/// the Debian package that has it).
+std::string pdflatex_error(const std::string& log, int exit_status);
+
 /// Is pdflatex on the PATH?
 bool have_pdflatex();
 
