@@ -136,6 +136,10 @@ int main(int argc, char** argv) {
   auto* draw = app.add_subcommand("draw", "draw the scene at a state from its model: bodies, points, supports, springs, forces");
   draw->add_option("SCENE", scene, "scene file (YAML)")->required();
   draw->add_option("--state", draw_state, "the state to draw (default: the first; 'all': every state side by side)");
+  int draw_figure = 0;
+  draw->add_option("--figure", draw_figure, "figure N of the worked solution (kinergy derive --pdf numbers them): the scene at its states, "
+                                            "an impulse-momentum diagram")
+      ->check(CLI::Range(1, 1000000));
   draw->add_option("-o,--output", draw_out, "FILE.svg, FILE.pdf, FILE.png or FILE.tex (a TikZ picture) (default: SVG on standard output)");
 
   double until = 0, tol = 1e-10, step = 0;
@@ -224,6 +228,23 @@ int main(int argc, char** argv) {
       const kinergy::model::Model& m = in.model();
       const auto& sol = in.sol;
       if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to draw", "add a state with every coordinate");
+      if (draw_figure > 0) {
+        // the derivation's own figures, numbered as in its LaTeX
+        if (!sol) throw kinergy::SceneError({scene, 1, 1}, "the scene has no analyses, so its worked solution has no figures", "draw it with --state");
+        if (!draw_state.empty()) throw kinergy::InputError("--figure and --state cannot be used together", "leave out one of them");
+        const auto d = kinergy::emit::derive(*sol, kinergy::scene::load_file(scene));
+        std::vector<const kinergy::emit::Block*> figs;
+        for (auto& b : d.blocks)
+          if (b.sheet) figs.push_back(&b);
+        if (draw_figure > static_cast<int>(figs.size()))
+          throw kinergy::InputError("the worked solution of '" + scene + "' has " + std::to_string(figs.size()) + (figs.size() == 1 ? " figure" : " figures") + ", not " +
+                                        std::to_string(draw_figure),
+                                    "give --figure from 1 to " + std::to_string(figs.size()));
+        const auto& sheet = *figs[static_cast<std::size_t>(draw_figure - 1)]->sheet;
+        if (draw_out.empty()) std::cout << sheet.svg();
+        else kinergy::draw::write(sheet, draw_out);
+        return 0;
+      }
       std::vector<int> states{0};
       if (draw_state == "all") {
         states.clear();

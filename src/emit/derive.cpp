@@ -122,6 +122,7 @@ private:
   Derivation d_;
   exmap given_;
   std::vector<std::string> tag_of_;  ///< tag of each equation of s_.equations where first shown
+  int figures_ = 0;
 
   // --- blocks -----------------------------------------------------------------------------
 
@@ -129,7 +130,9 @@ private:
   void subsection(const std::string& t) { d_.blocks.push_back({Block::Kind::Subsection, t, {}, {}, {}, {}}); }
   void para(Spans sp) { d_.blocks.push_back({Block::Kind::Paragraph, "", std::move(sp), {}, {}, {}}); }
   void figure(draw::Sheet sheet, const std::string& caption) {
-    Block b{Block::Kind::Figure, caption, {}, {}, {}, {}};
+    // numbered in order, as `kinergy draw --figure N` finds them
+    ++figures_;
+    Block b{Block::Kind::Figure, "Figure " + std::to_string(figures_) + ": " + caption, {}, {}, {}, {}};
     b.sheet = std::make_shared<const draw::Sheet>(std::move(sheet));
     d_.blocks.push_back(std::move(b));
   }

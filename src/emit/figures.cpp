@@ -117,7 +117,11 @@ struct Diagram {
           }
         const bool made_of_unknowns = !us.empty() && expand(restx).is_zero() && expand(resty).is_zero();
         if (made_of_unknowns)
-          for (const symbol& u : us) arrow(f, x, y, at1(p.Rx.diff(u)), at1(p.Ry.diff(u)), draw::Ink::Force, model::text(u), latex(u, names));
+          for (const symbol& u : us) {
+            // named as written, without the states an impulse is bound to ("J_hit[before,after]")
+            const std::string name = model::text(u);
+            arrow(f, x, y, at1(p.Rx.diff(u)), at1(p.Ry.diff(u)), draw::Ink::Force, name.substr(0, name.find('[')), latex(u, names));
+          }
         // a known impulse (given, or a pin's: the momentum change less the others): along its solved value
         else arrow(f, x, y, solved(p.Rx), solved(p.Ry), draw::Ink::Force, effect, word);
         continue;

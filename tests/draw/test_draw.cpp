@@ -254,3 +254,29 @@ TEST_CASE("the impact diagram of a sphere striking a pivoted bar: each arrow poi
   REQUIRE(sp2.count("m v\u0304"));
   CHECK(sp2["m v\u0304"].first < 0);
 }
+
+TEST_CASE("kinergy draw --figure N: a figure of the worked solution, as the LaTeX numbers it, and what is refused", "[draw][cli]") {
+  int st = 0;
+  const std::string scene = "derivations/impact/sphere_hits_pivoted_bar.yaml";
+  // the states, then a diagram for each body the impact strikes (bar, sphere)
+  std::string out = kt::run_cli("derive " + scene + " --latex -", st);
+  REQUIRE(st == 0);
+  CHECK(out.find("Figure 1: The scene at its states") != std::string::npos);
+  CHECK(out.find("Figure 2: Impulse-momentum diagram of bar in the impact") != std::string::npos);
+  CHECK(out.find("Figure 3: Impulse-momentum diagram of sphere in the impact") != std::string::npos);
+  CHECK(out.find("Figure 4:") == std::string::npos);
+  out = kt::run_cli("draw " + scene + " --figure 2", st);
+  CHECK(st == 0);
+  CHECK(out.find("data-panel=\"2\"") != std::string::npos);
+  CHECK(out.find(">momenta at before</text>") != std::string::npos);
+  CHECK(out.find(">J_hit</text>") != std::string::npos);
+  out = kt::run_cli("draw " + scene + " --figure 4", st);
+  CHECK(st != 0);
+  CHECK(out.find("has 3 figures, not 4 \u2014 give --figure from 1 to 3") != std::string::npos);
+  out = kt::run_cli("draw " + scene + " --figure 1 --state before", st);
+  CHECK(st != 0);
+  CHECK(out.find("--figure and --state cannot be used together") != std::string::npos);
+  out = kt::run_cli("draw tests/data/simulate/huge_couple.yaml --figure 1", st);
+  CHECK(st != 0);
+  CHECK(out.find("the scene has no analyses, so its worked solution has no figures") != std::string::npos);
+}
