@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/draw/animation.hpp"
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/emit/emit.hpp"
@@ -154,6 +155,10 @@ int main(int argc, char** argv) {
   simulate->add_option("--method", method, "dopri5 (default), rkf78, bs (Bulirsch-Stoer), symplectic (fixed step, separable energy), rk4 (fixed step)");
   simulate->add_option("--step", step, "fixed step of symplectic and rk4 in s (default: span/10000)")
       ->check(finite_in(0, 1e300, true, "a positive step in s"));
+  std::string animate_out;
+  simulate->add_option("--animate", animate_out, "draw the motion into FILE.svg (plays by itself), FILE.html (play/pause, a time slider, "
+                                                 "the impacts marked) or FILE.gif (gnuplot), at the samples of --samples/--dt")
+      ->check(writable_file());
   simulate->add_option("--csv", csv_out, "write t, q, q_dot, T, V, E per step to FILE")->check(writable_file());
   simulate->add_option("--plot", plot_out, "draw coordinates and energy against time into FILE.svg or FILE.png (gnuplot)")
       ->check(writable_file());
@@ -274,6 +279,11 @@ int main(int argc, char** argv) {
       Loaded in(scene);
       const kinergy::model::Model& m = in.model();
       const auto& sol = in.sol;
+      if (!animate_out.empty()) {
+        auto ext = std::filesystem::path(animate_out).extension();
+        if (ext != ".svg" && ext != ".html" && ext != ".gif")
+          throw kinergy::InputError("the animation '" + animate_out + "' is not .svg, .html or .gif", "name it FILE.svg, FILE.html or FILE.gif");
+      }
       if (!plot_out.empty()) {
         auto ext = std::filesystem::path(plot_out).extension();
         if (ext != ".svg" && ext != ".png")
@@ -338,7 +348,7 @@ int main(int argc, char** argv) {
           shown = true;
         };
       // what --csv and --plot draw: regular samples (dense output), or the accepted steps
-      if (!csv_out.empty() || !plot_out.empty()) o.sample_dt = sample_dt > 0 ? sample_dt : samples > 0 ? (until - s0.t) / samples : 0;
+      if (!csv_out.empty() || !plot_out.empty() || !animate_out.empty()) o.sample_dt = sample_dt > 0 ? sample_dt : samples > 0 ? (until - s0.t) / samples : 0;
       // a given impulse acts at the state an impact analysis starts from (or, without
       // analyses, at the start): not again from a state after it
       bool impulses = m.analyses.empty();
@@ -361,6 +371,18 @@ int main(int argc, char** argv) {
         if (!out) throw kinergy::InputError("cannot write the CSV file '" + csv_out + "'", "check the free space and the file's permissions");
       }
       if (!plot_out.empty()) sim::plot(m, r, plot_out);
+      if (!animate_out.empty()) {
+        // the same samples, each drawn; every impact marked at its instant
+        kinergy::draw::Motion motion;
+        motion.title = m.title;
+        for (auto& smp : r.samples) motion.frames.push_back({smp.t, smp.q, smp.qd});
+        for (auto& im : r.impacts) {
+          std::string at;
+          for (auto& c : im.contacts) at += (at.empty() ? "" : ", ") + c;
+          motion.moments.push_back({im.t, "impact at " + at});
+        }
+        kinergy::draw::write_animation(m, sol ? sim::simulation_values(*sol) : m.parameter_values(), motion, animate_out);
+      }
       return 0;
     });
   }

@@ -15,12 +15,13 @@
 #include "kinergy/common/process.hpp"
 #include "kinergy/model/inertia.hpp"
 #include "kinergy/model/model.hpp"
+#include "page.hpp"
 
 namespace kinergy::draw {
 
 using namespace GiNaC;
 
-namespace {
+namespace detail {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -44,11 +45,6 @@ std::string escape(const std::string& s) {
   return o;
 }
 
-struct Pen {
-  const char* colour;
-  double width;  // pixels
-  bool dashed;
-};
 
 Pen pen(Ink i) {
   switch (i) {
@@ -64,7 +60,9 @@ Pen pen(Ink i) {
   return {"#000000", 1.0, false};
 }
 
-}  // namespace
+}  // namespace detail
+
+using namespace detail;
 
 double At::operator()(const ex& e) const {
   try {
@@ -145,34 +143,10 @@ void Sheet::then(std::string text, std::string tex) {
   panels_.back().after_tex = std::move(tex);
 }
 
-namespace {
+namespace detail {
 
-// A sheet laid out on the page (pixels, y down): one scale for every panel, each panel's world
-// mapped by X = tx + s x, Y = ty − s y; labels placed off each other.
-struct Layout {
-  int page = 0;               // the width asked for (pixels)
-  int width = 0, height = 0;  // the page's size: narrower than asked when the height bounds the scale
-  double scale = 1;
-  struct Place {
-    double tx, ty, centre;  // transform, and the panel's middle on the page (x)
-  };
-  std::vector<Place> places;
-  struct Box {
-    double x0, y0, x1, y1;
-  };
-  struct Placed {
-    Box box;
-    const Figure::Label* label;
-  };
-  std::vector<Placed> labels;
-  double mid = 0, title_y = 0;
-  std::vector<double> between_x;  // where the words after panel i go
-};
 
-constexpr double kPad = 48, kGap = 120, kTitle = 26;
-constexpr double kFont = 13, kCharWidth = 7.2;  // label font size and the width of a character (pixels)
-
-Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height) {
+Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height, const Figure::Bounds* fixed) {
   Layout L;
   const std::size_t n = panels.size();
   if (width <= 0) width = n <= 1 ? 640 : static_cast<int>(std::min<std::size_t>(1200, 400 * n));
@@ -182,7 +156,7 @@ Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels,
   std::vector<Figure::Bounds> bs;
   double sum_w = 0, max_h = 0;
   for (auto& p : panels) {
-    Figure::Bounds b = p.first->bounds(true);
+    Figure::Bounds b = fixed ? *fixed : p.first->bounds(true);
     if (b.empty()) b = {-1, -1, 1, 1};
     double w = std::max(b.x1 - b.x0, 1e-9), h = std::max(b.y1 - b.y0, 1e-9);
     // a degenerate extent (all on one line): give it the other's size
@@ -283,17 +257,12 @@ std::string tex_escape(const std::string& s) {
   return o;
 }
 
-}  // namespace
+}  // namespace detail
 
-std::string Sheet::svg(int width, int max_height) const {
-  std::vector<std::pair<const Figure*, std::size_t>> ps;
-  for (auto& p : panels_) ps.push_back({&p.figure, p.title.size()});
-  const Layout L = lay_out(ps, width, max_height);
-  const double scale = L.scale;
-  std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << L.width << "\" height=\"" << L.height << "\" viewBox=\"0 0 " << L.width
-    << " " << L.height << "\">\n";
-  o << "<rect x=\"0\" y=\"0\" width=\"" << L.width << "\" height=\"" << L.height << "\" fill=\"white\"/>\n";
+namespace detail {
+
+// One figure's world group: metres, y up, mapped to the page by P; strokes keep their page width.
+void svg_world(std::ostringstream& o, const Figure& f, const Layout::Place& P, double scale, const std::string& attrs) {
   auto stroke = [&](Ink ink, bool filled) {
     Pen p = pen(ink);
     // widths in page pixels, written in metres (the group's scale makes them pixels again)
@@ -302,52 +271,68 @@ std::string Sheet::svg(int width, int max_height) const {
     if (p.dashed) s += " stroke-dasharray=\"" + n(6 / scale) + " " + n(4 / scale) + "\"";
     return s;
   };
-  for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
-    const auto& P = L.places[pi];
-    // the world group: metres, y up; strokes keep their page width
-    o << "<g data-world=\"metres\"" << (panels_.size() > 1 ? " data-panel=\"" + std::to_string(pi) + "\"" : "") << " transform=\"matrix("
-      << n(scale) << " 0 0 " << n(-scale) << " " << n(P.tx) << " " << n(P.ty) << ")\">\n";
-    auto head = [&](double xa, double ya, double xb, double yb, Ink ink) {
-      // the head drawn on the page, written back in world coordinates
-      auto h = head_at(P.tx + scale * xa, P.ty - scale * ya, P.tx + scale * xb, P.ty - scale * yb);
-      if (h.empty()) return;
-      o << "<polygon points=\"";
-      for (std::size_t i = 0; i < h.size(); ++i) o << (i ? " " : "") << n((h[i].first - P.tx) / scale) << "," << n((P.ty - h[i].second) / scale);
-      o << "\"" << stroke(ink, true) << "/>\n";
-    };
-    for (auto& s : panels_[pi].figure.shapes()) {
-      switch (s.kind) {
-        case Figure::Shape::Line:
-        case Figure::Shape::Arrow:
-          o << "<line x1=\"" << n(s.pts[0].first) << "\" y1=\"" << n(s.pts[0].second) << "\" x2=\"" << n(s.pts[1].first) << "\" y2=\""
-            << n(s.pts[1].second) << "\"" << stroke(s.ink, false) << "/>\n";
-          if (s.kind == Figure::Shape::Arrow) head(s.pts[0].first, s.pts[0].second, s.pts[1].first, s.pts[1].second, s.ink);
-          break;
-        case Figure::Shape::Circle:
-          o << "<circle cx=\"" << n(s.pts[0].first) << "\" cy=\"" << n(s.pts[0].second) << "\" r=\"" << n(s.r) << "\""
-            << stroke(s.ink, s.filled) << (s.filled ? " fill-opacity=\"0.15\"" : "") << "/>\n";
-          break;
-        case Figure::Shape::Polygon:
-        case Figure::Shape::Polyline:
-        case Figure::Shape::Arc: {
-          o << (s.kind == Figure::Shape::Polygon ? "<polygon" : "<polyline") << " points=\"";
-          for (std::size_t i = 0; i < s.pts.size(); ++i) o << (i ? " " : "") << n(s.pts[i].first) << "," << n(s.pts[i].second);
-          o << "\"" << stroke(s.ink, s.filled) << (s.filled ? " fill-opacity=\"0.15\"" : "") << "/>\n";
-          if (s.kind == Figure::Shape::Arc && s.pts.size() >= 2)
-            head(s.pts[s.pts.size() - 2].first, s.pts[s.pts.size() - 2].second, s.pts.back().first, s.pts.back().second, s.ink);
-          break;
-        }
-        case Figure::Shape::Mark:
-          o << "<circle data-name=\"" << escape(s.id) << "\" cx=\"" << n(s.pts[0].first) << "\" cy=\"" << n(s.pts[0].second) << "\" r=\""
-            << n(3.2 / scale) << "\" fill=\"" << (s.filled ? "#333333" : "white") << "\" stroke=\"" << pen(s.ink).colour
-            << "\" stroke-width=\"" << n(1.2 / scale) << "\"/>\n";
-          break;
+  o << "<g data-world=\"metres\"" << attrs << " transform=\"matrix(" << n(scale) << " 0 0 " << n(-scale) << " " << n(P.tx) << " " << n(P.ty)
+    << ")\">\n";
+  auto head = [&](double xa, double ya, double xb, double yb, Ink ink) {
+    // the head drawn on the page, written back in world coordinates
+    auto h = head_at(P.tx + scale * xa, P.ty - scale * ya, P.tx + scale * xb, P.ty - scale * yb);
+    if (h.empty()) return;
+    o << "<polygon points=\"";
+    for (std::size_t i = 0; i < h.size(); ++i) o << (i ? " " : "") << n((h[i].first - P.tx) / scale) << "," << n((P.ty - h[i].second) / scale);
+    o << "\"" << stroke(ink, true) << "/>\n";
+  };
+  for (auto& s : f.shapes()) {
+    switch (s.kind) {
+      case Figure::Shape::Line:
+      case Figure::Shape::Arrow:
+        o << "<line x1=\"" << n(s.pts[0].first) << "\" y1=\"" << n(s.pts[0].second) << "\" x2=\"" << n(s.pts[1].first) << "\" y2=\""
+          << n(s.pts[1].second) << "\"" << stroke(s.ink, false) << "/>\n";
+        if (s.kind == Figure::Shape::Arrow) head(s.pts[0].first, s.pts[0].second, s.pts[1].first, s.pts[1].second, s.ink);
+        break;
+      case Figure::Shape::Circle:
+        o << "<circle cx=\"" << n(s.pts[0].first) << "\" cy=\"" << n(s.pts[0].second) << "\" r=\"" << n(s.r) << "\""
+          << stroke(s.ink, s.filled) << (s.filled ? " fill-opacity=\"0.15\"" : "") << "/>\n";
+        break;
+      case Figure::Shape::Polygon:
+      case Figure::Shape::Polyline:
+      case Figure::Shape::Arc: {
+        o << (s.kind == Figure::Shape::Polygon ? "<polygon" : "<polyline") << " points=\"";
+        for (std::size_t i = 0; i < s.pts.size(); ++i) o << (i ? " " : "") << n(s.pts[i].first) << "," << n(s.pts[i].second);
+        o << "\"" << stroke(s.ink, s.filled) << (s.filled ? " fill-opacity=\"0.15\"" : "") << "/>\n";
+        if (s.kind == Figure::Shape::Arc && s.pts.size() >= 2)
+          head(s.pts[s.pts.size() - 2].first, s.pts[s.pts.size() - 2].second, s.pts.back().first, s.pts.back().second, s.ink);
+        break;
       }
+      case Figure::Shape::Mark:
+        o << "<circle data-name=\"" << escape(s.id) << "\" cx=\"" << n(s.pts[0].first) << "\" cy=\"" << n(s.pts[0].second) << "\" r=\""
+          << n(3.2 / scale) << "\" fill=\"" << (s.filled ? "#333333" : "white") << "\" stroke=\"" << pen(s.ink).colour
+          << "\" stroke-width=\"" << n(1.2 / scale) << "\"/>\n";
+        break;
     }
-    o << "</g>\n";
   }
-  o << "<g font-family=\"DejaVu Sans, sans-serif\" font-size=\"" << kFont << "\" fill=\"#222222\">\n";
+  o << "</g>\n";
+}
+
+void svg_labels(std::ostringstream& o, const Layout& L) {
   for (auto& pl : L.labels) o << "<text x=\"" << n(pl.box.x0 + 1) << "\" y=\"" << n(pl.box.y1 - 3) << "\">" << escape(pl.label->text) << "</text>\n";
+}
+
+extern const char* const kLabelFont = "font-family=\"DejaVu Sans, sans-serif\" font-size=\"13\" fill=\"#222222\"";
+
+}  // namespace detail
+
+std::string Sheet::svg(int width, int max_height) const {
+  std::vector<std::pair<const Figure*, std::size_t>> ps;
+  for (auto& p : panels_) ps.push_back({&p.figure, p.title.size()});
+  const Layout L = lay_out(ps, width, max_height);
+  std::ostringstream o;
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << L.width << "\" height=\"" << L.height << "\" viewBox=\"0 0 " << L.width
+    << " " << L.height << "\">\n";
+  o << "<rect x=\"0\" y=\"0\" width=\"" << L.width << "\" height=\"" << L.height << "\" fill=\"white\"/>\n";
+  for (std::size_t pi = 0; pi < panels_.size(); ++pi)
+    svg_world(o, panels_[pi].figure, L.places[pi], L.scale, panels_.size() > 1 ? " data-panel=\"" + std::to_string(pi) + "\"" : "");
+  o << "<g " << kLabelFont << ">\n";
+  svg_labels(o, L);
   for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
     const auto& p = panels_[pi];
     if (!p.title.empty())
@@ -537,7 +522,7 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
   }
 }
 
-namespace {
+namespace detail {
 
 // the scene drawn with glyphs of size g: bodies, fixed points, effects
 Figure drawing(const model::Model& m, const At& at, double g) {
@@ -552,7 +537,7 @@ Figure drawing(const model::Model& m, const At& at, double g) {
   return f;
 }
 
-}  // namespace
+}  // namespace detail
 
 double glyph_for(const model::Model& m, const At& at) {
   // glyphs (marks, arrows, ground) sized from the extent of a first drawing

@@ -1,6 +1,9 @@
 // A contact: two parties (body points, bodies, fixed points or the ground) that may strike along
 // a normal n̂ (from the first into the second) with restitution e, smooth or rough.
 #include "kinergy/effects/contact.hpp"
+
+#include <cmath>
+
 #include "kinergy/draw/figure.hpp"
 
 #include "common.hpp"
@@ -35,9 +38,15 @@ ex Contact::impulse_size(const Model& m, int ai, const ex&, const ex&) const {
 // the contact: its surface (a line across n̂ through the first party's point) and n̂ as a short
 // arrow from there into the second party
 void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
-  const PointRef& p = a.ground || a.body < 0 ? b : a;
-  auto [x, y] = at.point(m.position(p));
-  const double ux = at(nx), uy = at(ny), g = f.glyph();
+  // the surface is the plane through party a perpendicular to n̂ (the simulator's gap is measured
+  // from it; the ground's plane passes through the origin): drawn where party b's point projects
+  // onto it, r = r_b − ((r_b − r_a)·n̂) n̂, the normal from there
+  auto [xa, ya] = at.point(m.position(a));
+  auto [xb, yb] = at.point(m.position(b));
+  const double len = std::hypot(at(nx), at(ny));
+  const double ux = at(nx) / len, uy = at(ny) / len, g = f.glyph();
+  const double gap = (xb - xa) * ux + (yb - ya) * uy;
+  const double x = xb - gap * ux, y = yb - gap * uy;
   f.line(x - uy * g * 3, y + ux * g * 3, x + uy * g * 3, y - ux * g * 3, draw::Ink::Track);
   f.arrow(x, y, x + ux * g * 2, y + uy * g * 2, draw::Ink::Thin);
   f.label(x + ux * g * 2, y + uy * g * 2, name + " n");

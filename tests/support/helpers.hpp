@@ -242,12 +242,11 @@ inline std::string shell_quoted(const std::string& s) {
   return o + "'";
 }
 
-/// Standard output and error of `kinergy ARGS` run in the source directory; exit status in `status`.
-inline std::string run_cli(const std::string& args, int& status) {
-  std::string cmd = "cd " + shell_quoted(KINERGY_SOURCE_DIR) + " && " + shell_quoted(KINERGY_CLI) + " " + args + " 2>&1";
+/// Standard output of a shell command; its exit status in `status` (when given).
+inline std::string run_command(const std::string& cmd, int* status = nullptr) {
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) {
-    status = -1;
+    if (status) *status = -1;
     return "";
   }
   std::string out;
@@ -255,8 +254,20 @@ inline std::string run_cli(const std::string& args, int& status) {
   std::size_t n;
   while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
   int st = pclose(p);
-  status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  if (status) *status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return out;
+}
+
+/// Standard output and error of `kinergy ARGS` run in the source directory; exit status in `status`.
+inline std::string run_cli(const std::string& args, int& status) {
+  return run_command("cd " + shell_quoted(KINERGY_SOURCE_DIR) + " && " + shell_quoted(KINERGY_CLI) + " " + args + " 2>&1", &status);
+}
+
+/// Debian's headless browser for the pages' tests: its path, or "" when it is not installed.
+inline std::string chromium() {
+  std::string path = run_command("command -v chromium 2>/dev/null");
+  while (!path.empty() && (path.back() == '\n' || path.back() == ' ')) path.pop_back();
+  return path;
 }
 
 }  // namespace kt

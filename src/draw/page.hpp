@@ -1,0 +1,69 @@
+// The page a drawing is laid out on, shared by the figures (figure.cpp) and the animations
+// (animation.cpp): the layout, the SVG writer of one figure's world, the scene's drawing.
+#pragma once
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kinergy/draw/figure.hpp"
+
+namespace kinergy::draw::detail {
+
+/// Numbers in the SVG: six significant digits, the same text on every machine.
+std::string n(double v);
+/// Text for XML.
+std::string escape(const std::string& s);
+/// Text for TeX's text mode.
+std::string tex_escape(const std::string& s);
+
+struct Pen {
+  const char* colour;
+  double width;  // pixels
+  bool dashed;
+};
+Pen pen(Ink i);
+
+// A sheet laid out on the page (pixels, y down): one scale for every panel, each panel's world
+// mapped by X = tx + s x, Y = ty − s y; labels placed off each other.
+struct Layout {
+  int page = 0;               // the width asked for (pixels)
+  int width = 0, height = 0;  // the page's size: narrower than asked when the height bounds the scale
+  double scale = 1;
+  struct Place {
+    double tx, ty, centre;  // transform, and the panel's middle on the page (x)
+  };
+  std::vector<Place> places;
+  struct Box {
+    double x0, y0, x1, y1;
+  };
+  struct Placed {
+    Box box;
+    const Figure::Label* label;
+  };
+  std::vector<Placed> labels;
+  double mid = 0, title_y = 0;
+  std::vector<double> between_x;  // where the words after panel i go
+};
+
+constexpr double kPad = 48, kGap = 120, kTitle = 26;
+constexpr double kFont = 13, kCharWidth = 7.2;  // label font size and the width of a character (pixels)
+
+/// Lay out figures side by side (each with its title's length, 0: none) at one scale, at most
+/// `width` × `max_height` pixels; with `fixed`, every panel spans those world bounds (the frames
+/// of an animation share the box round the whole motion).
+Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height,
+               const Figure::Bounds* fixed = nullptr);
+
+/// An arrowhead at page point b, pointing from page point a (page pixels).
+std::vector<std::pair<double, double>> head_at(double xa, double ya, double xb, double yb);
+
+/// A figure's world group (attributes `attrs` on it) and the placed labels of a layout.
+void svg_world(std::ostringstream& o, const Figure& f, const Layout::Place& P, double scale, const std::string& attrs);
+void svg_labels(std::ostringstream& o, const Layout& L);
+extern const char* const kLabelFont;
+
+/// The scene drawn at `at` with glyphs of size g: bodies, fixed points, effects.
+Figure drawing(const model::Model& m, const At& at, double g);
+
+}  // namespace kinergy::draw::detail
