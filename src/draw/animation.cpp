@@ -126,31 +126,26 @@ std::string animation_svg(const model::Model& m, const exmap& params, const Moti
   return frames_svg(motion, draw_frames(m, params, motion), true);
 }
 
-std::string animation_html(const model::Model& m, const exmap& params, const Motion& motion) {
+std::string animation_fragment(const model::Model& m, const exmap& params, const Motion& motion, const std::string& id) {
   const Drawn d = draw_frames(m, params, motion);
   std::ostringstream o;
-  o << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << escape(motion.title) << "</title>\n"
-    << "<style>body{font-family:'DejaVu Sans',sans-serif;margin:1.5em;color:#222}#stage svg{border:1px solid #ccc;max-width:100%;height:auto}"
-       "#controls{margin:.6em 0;display:flex;gap:.8em;align-items:center}#slider{flex:1;max-width:560px}"
-       "#moments{color:#b8231f}</style>\n</head>\n<body>\n"
-    << "<h1 style=\"font-size:1.3em\">" << escape(motion.title) << "</h1>\n<div id=\"stage\">\n"
-    << frames_svg(motion, d, false) << "</div>\n"
-    << "<div id=\"controls\"><button id=\"play\" type=\"button\">Pause</button>"
-    << "<input id=\"slider\" type=\"range\" min=\"0\" max=\"" << d.figs.size() - 1 << "\" value=\"0\" step=\"1\" list=\"marks\">"
-    << "<span id=\"time\">t = " << seconds(d.t0) << " s</span></div>\n<datalist id=\"marks\">";
+  o << "<div class=\"kinergy-animation\" id=\"" << escape(id) << "\">\n<div class=\"stage\">\n" << frames_svg(motion, d, false) << "</div>\n"
+    << "<div class=\"controls\"><button class=\"play\" type=\"button\">Pause</button>"
+    << "<input class=\"slider\" type=\"range\" min=\"0\" max=\"" << d.figs.size() - 1 << "\" value=\"0\" step=\"1\" list=\"" << escape(id)
+    << "-marks\"><span class=\"time\">t = " << seconds(d.t0) << " s</span></div>\n<datalist id=\"" << escape(id) << "-marks\">";
   // each moment marked on the slider at its frame (the first frame at or after it)
   for (auto& mo : motion.moments) {
     std::size_t k = 0;
     while (k + 1 < motion.frames.size() && motion.frames[k].t < mo.t) ++k;
     o << "<option value=\"" << k << "\"></option>";
   }
-  o << "</datalist>\n<ul id=\"moments\">";
+  o << "</datalist>\n<ul class=\"moments\">";
   for (auto& mo : motion.moments) o << "<li>t = " << seconds(mo.t) << " s: " << escape(mo.what) << "</li>";
-  o << "</ul>\n<script>\n(function () {\n  const times = [";
+  o << "</ul>\n<script>\n(function () {\n  const root = document.getElementById('" << escape(id) << "');\n  const times = [";
   for (std::size_t i = 0; i < motion.frames.size(); ++i) o << (i ? "," : "") << n(motion.frames[i].t);
   o << "];\n"
-       "  const frames = document.querySelectorAll('#stage g[data-frame]');\n"
-       "  const slider = document.getElementById('slider'), play = document.getElementById('play'), label = document.getElementById('time');\n"
+       "  const frames = root.querySelectorAll('.stage g[data-frame]');\n"
+       "  const slider = root.querySelector('.slider'), play = root.querySelector('.play'), label = root.querySelector('.time');\n"
        "  let cur = 0, playing = true, start = null;\n"
        "  function show(i) {\n"
        "    frames[cur].setAttribute('display', 'none');\n"
@@ -176,12 +171,28 @@ std::string animation_html(const model::Model& m, const exmap& params, const Mot
        "    }\n"
        "    requestAnimationFrame(tick);\n"
        "  }\n"
+       "  function pause() { playing = false; play.textContent = 'Play'; }\n"
        "  play.addEventListener('click', function () { playing = !playing; start = null; play.textContent = playing ? 'Pause' : 'Play'; });\n"
-       "  slider.addEventListener('input', function () { playing = false; play.textContent = 'Play'; show(Number(slider.value)); });\n"
-       "  window.kinergyShow = function (i) { playing = false; play.textContent = 'Play'; show(i); };\n"
-       "  window.kinergyTimes = times;\n"
+       "  slider.addEventListener('input', function () { pause(); show(Number(slider.value)); });\n"
+       "  window.kinergyAnimations = window.kinergyAnimations || {};\n"
+       "  window.kinergyAnimations[root.id] = { show: function (i) { pause(); show(i); }, times: times };\n"
        "  requestAnimationFrame(tick);\n"
-       "})();\n</script>\n</body>\n</html>\n";
+       "})();\n</script>\n</div>\n";
+  return o.str();
+}
+
+const char* kAnimationStyle =
+    ".kinergy-animation .stage svg{border:1px solid #ccc;max-width:100%;height:auto}"
+    ".kinergy-animation .controls{margin:.6em 0;display:flex;gap:.8em;align-items:center}"
+    ".kinergy-animation .slider{flex:1;max-width:560px}.kinergy-animation .moments{color:#b8231f}";
+
+std::string animation_html(const model::Model& m, const exmap& params, const Motion& motion) {
+  std::ostringstream o;
+  o << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << escape(motion.title) << "</title>\n"
+    << "<style>body{font-family:'DejaVu Sans',sans-serif;margin:1.5em;color:#222}" << kAnimationStyle << "</style>\n</head>\n<body>\n"
+    << "<h1 style=\"font-size:1.3em\">" << escape(motion.title) << "</h1>\n"
+    << animation_fragment(m, params, motion, "animation")
+    << "<script>window.kinergyShow = function (i) { window.kinergyAnimations.animation.show(i); };</script>\n</body>\n</html>\n";
   return o.str();
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "kinergy/emit/derive.hpp"
+#include "derive_tex.hpp"
 
 namespace kinergy::emit {
 
@@ -16,6 +17,8 @@ namespace {
 constexpr double kLine = 33.0;
 /// A left side wider than this goes into the right column with the rest.
 constexpr double kLeft = 9.0;
+
+}  // namespace
 
 std::string math_tex(const Math& m, const Derivation& d) {
   if (m.fixed()) return m.tex;
@@ -31,6 +34,8 @@ std::string math_tex(const Math& m, const Derivation& d) {
   if (m.has_rhs) s += " = " + latex(m.rhs, &d.names);
   return s;
 }
+
+namespace {
 
 std::string spans_tex(const Spans& spans, const Derivation& d) {
   std::string s;
@@ -339,7 +344,9 @@ std::vector<std::string> chain(const std::vector<Math>& sides, const Derivation&
   return lines;
 }
 
-void equations(std::ostringstream& os, const Block& b, const Derivation& d) {
+}  // namespace
+
+double left_column(const Block& b, const Derivation& d) {
   // the left column is as wide as the widest short left side
   double left = 0;
   for (auto& r : b.rows) {
@@ -351,41 +358,53 @@ void equations(std::ostringstream& os, const Block& b, const Derivation& d) {
     consider(r.sides);
     for (auto& a : r.also) consider(a);
   }
+  return left;
+}
+
+std::vector<std::string> row_lines(const Row& r, const Derivation& d, double left) {
+  std::vector<std::string> lines;
+  // short equations side by side: x = …, \qquad y = …
+  bool beside = !r.also.empty();
+  std::string joined_left;
+  if (beside) {
+    std::vector<std::vector<Math>> all{r.sides};
+    for (auto& a : r.also) all.push_back(a);
+    double total = 0;
+    std::string right;
+    for (std::size_t i = 0; i < all.size() && beside; ++i) {
+      if (all[i].size() != 2) beside = false;
+      std::string l = math_tex(all[i][0], d), rr = math_tex(all[i][1], d);
+      if (i == 0) {
+        joined_left = l;
+        right = "= " + rr;
+        total += tex_width(l) + tex_width(right);
+      } else {
+        right += ", \\qquad " + l + " = " + rr;
+        total += 3 + tex_width(l) + tex_width(rr) + 1.3;
+      }
+    }
+    if (beside && total <= kLine && tex_width(joined_left) <= kLeft) lines.push_back(joined_left + " &" + right);
+    else beside = false;
+  }
+  if (!beside) {
+    auto more = chain(r.sides, d, left);
+    lines.insert(lines.end(), more.begin(), more.end());
+    for (auto& a : r.also) {
+      auto m = chain(a, d, left);
+      lines.insert(lines.end(), m.begin(), m.end());
+    }
+  }
+  return lines;
+}
+
+namespace {
+
+void equations(std::ostringstream& os, const Block& b, const Derivation& d) {
+  const double left = left_column(b, d);
   os << "\\begin{align}\n";
   for (std::size_t ri = 0; ri < b.rows.size(); ++ri) {
     const Row& r = b.rows[ri];
-    std::vector<std::string> lines;
-    // short equations side by side: x = …, \qquad y = …
-    bool beside = !r.also.empty();
-    std::string joined_left, joined_right;
-    if (beside) {
-      std::vector<std::vector<Math>> all{r.sides};
-      for (auto& a : r.also) all.push_back(a);
-      double total = 0;
-      std::string right;
-      for (std::size_t i = 0; i < all.size() && beside; ++i) {
-        if (all[i].size() != 2) beside = false;
-        std::string l = math_tex(all[i][0], d), rr = math_tex(all[i][1], d);
-        if (i == 0) {
-          joined_left = l;
-          right = "= " + rr;
-          total += tex_width(l) + tex_width(right);
-        } else {
-          right += ", \\qquad " + l + " = " + rr;
-          total += 3 + tex_width(l) + tex_width(rr) + 1.3;
-        }
-      }
-      if (beside && total <= kLine && tex_width(joined_left) <= kLeft) lines.push_back(joined_left + " &" + right);
-      else beside = false;
-    }
-    if (!beside) {
-      auto more = chain(r.sides, d, left);
-      lines.insert(lines.end(), more.begin(), more.end());
-      for (auto& a : r.also) {
-        auto m = chain(a, d, left);
-        lines.insert(lines.end(), m.begin(), m.end());
-      }
-    }
+    const std::vector<std::string> lines = row_lines(r, d, left);
     for (std::size_t k = 0; k < lines.size(); ++k) {
       os << "  " << lines[k];
       if (k + 1 < lines.size()) {

@@ -112,10 +112,10 @@ TEST_CASE("the animation page in headless Chromium: the ball drawn lower at a la
   while (b.motion.frames[later].t < 0.3 - 1e-9) ++later;
   const std::string probe =
       "<script>window.addEventListener('load', function () {\n"
-      "  function y() { const c = document.querySelector('#stage g[data-frame][display=\"inline\"] circle[data-name=\"ball.G\"]');\n"
+      "  function y() { const c = document.querySelector('.stage g[data-frame][display=\"inline\"] circle[data-name=\"ball.G\"]');\n"
       "    const r = c.getBoundingClientRect(); return r.top + r.height / 2; }\n"
       "  kinergyShow(0); const y0 = y(); kinergyShow(" + std::to_string(later) + "); const y1 = y();\n"
-      "  const svg = document.querySelector('#stage svg').getBoundingClientRect();\n"
+      "  const svg = document.querySelector('.stage svg').getBoundingClientRect();\n"
       "  document.body.setAttribute('data-probe', y0 + ' ' + y1 + ' ' + svg.height);\n"
       "});</script>\n";
   html.insert(html.rfind("</body>"), probe);

@@ -40,6 +40,11 @@ std::string animation_svg(const model::Model& m, const GiNaC::exmap& params, con
 /// it and listed under it. Its script shows frame i on `kinergyShow(i)` (for tests).
 std::string animation_html(const model::Model& m, const GiNaC::exmap& params, const Motion& motion);
 
+/// The page's player alone, to set in another page (a worked solution): a div with id `id`; its
+/// script registers `window.kinergyAnimations[id].show(i)`. Style it with `kAnimationStyle`.
+std::string animation_fragment(const model::Model& m, const GiNaC::exmap& params, const Motion& motion, const std::string& id);
+extern const char* kAnimationStyle;
+
 /// Write to `path`: .svg, .html, or .gif (at most 150 frames, drawn by gnuplot's gif terminal).
 /// @throws InputError for another extension, a missing gnuplot or a failed write.
 void write_animation(const model::Model& m, const GiNaC::exmap& params, const Motion& motion, const std::string& path);
