@@ -123,6 +123,10 @@ int main(int argc, char** argv) {
   derive->add_option("SCENE", scene, "scene file (YAML)")->required();
   derive->add_option("--latex", tex_out, "write a standalone LaTeX document to FILE ('-': standard output)");
   derive->add_option("--pdf", pdf_out, "write a PDF (runs pdflatex in a temporary directory)");
+  std::string html_out;
+  derive->add_option("--html", html_out, "write one self-contained HTML page: the mathematics typeset by KaTeX, the figures, "
+                                         "and the motion of each analysis that can be simulated, animated")
+      ->check(writable_file());
   derive->add_option("--digits", derive_digits, "significant digits of the numbers (default 4)")->check(CLI::Range(1, 1000));
   derive->add_flag("--no-checks", no_checks, "leave out the checks of the scene's 'expect' claims");
 
@@ -201,9 +205,24 @@ int main(int argc, char** argv) {
       o.digits = derive_digits;
       o.checks = !no_checks;
       kinergy::emit::Derivation d = kinergy::emit::derive(s, def, o);
-      if (tex_out.empty() && pdf_out.empty()) {
+      if (tex_out.empty() && pdf_out.empty() && html_out.empty()) {
         std::cout << kinergy::emit::text(d);
         return 0;
+      }
+      if (!html_out.empty()) {
+        // the page, with a player for the motion of each analysis that can be simulated
+        std::vector<std::string> players;
+        const auto values = kinergy::simulate::simulation_values(s);
+        const auto motions = kinergy::simulate::motions(s, 200);
+        for (std::size_t i = 0; i < motions.size(); ++i)
+          players.push_back("<h3>" + motions[i].title + "</h3>\n" +
+                            kinergy::draw::animation_fragment(s.model, values, motions[i], "motion-" + std::to_string(i + 1)));
+        const std::string page = kinergy::emit::html(d, players);
+        std::ofstream out(html_out, std::ios::binary);
+        out << page;
+        out.close();
+        if (!out) throw kinergy::InputError("cannot write the page '" + html_out + "'", "check the directory and its permissions");
+        if (tex_out.empty() && pdf_out.empty()) return 0;
       }
       std::string tex = kinergy::emit::latex(d);
       if (tex_out == "-") {
@@ -373,15 +392,7 @@ int main(int argc, char** argv) {
       if (!plot_out.empty()) sim::plot(m, r, plot_out);
       if (!animate_out.empty()) {
         // the same samples, each drawn; every impact marked at its instant
-        kinergy::draw::Motion motion;
-        motion.title = m.title;
-        for (auto& smp : r.samples) motion.frames.push_back({smp.t, smp.q, smp.qd});
-        for (auto& im : r.impacts) {
-          std::string at;
-          for (auto& c : im.contacts) at += (at.empty() ? "" : ", ") + c;
-          motion.moments.push_back({im.t, "impact at " + at});
-        }
-        kinergy::draw::write_animation(m, sol ? sim::simulation_values(*sol) : m.parameter_values(), motion, animate_out);
+        kinergy::draw::write_animation(m, sol ? sim::simulation_values(*sol) : m.parameter_values(), sim::motion_of(r, m.title), animate_out);
       }
       return 0;
     });

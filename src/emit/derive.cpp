@@ -126,18 +126,18 @@ private:
 
   // --- blocks -----------------------------------------------------------------------------
 
-  void section(const std::string& t) { d_.blocks.push_back({Block::Kind::Section, t, {}, {}, {}, {}}); }
-  void subsection(const std::string& t) { d_.blocks.push_back({Block::Kind::Subsection, t, {}, {}, {}, {}}); }
-  void para(Spans sp) { d_.blocks.push_back({Block::Kind::Paragraph, "", std::move(sp), {}, {}, {}}); }
+  void section(const std::string& t) { d_.blocks.push_back({Block::Kind::Section, t, {}, {}, {}, {}, nullptr}); }
+  void subsection(const std::string& t) { d_.blocks.push_back({Block::Kind::Subsection, t, {}, {}, {}, {}, nullptr}); }
+  void para(Spans sp) { d_.blocks.push_back({Block::Kind::Paragraph, "", std::move(sp), {}, {}, {}, nullptr}); }
   void figure(draw::Sheet sheet, const std::string& caption) {
     // numbered in order, as `kinergy draw --figure N` finds them
     ++figures_;
-    Block b{Block::Kind::Figure, "Figure " + std::to_string(figures_) + ": " + caption, {}, {}, {}, {}};
+    Block b{Block::Kind::Figure, "Figure " + std::to_string(figures_) + ": " + caption, {}, {}, {}, {}, nullptr};
     b.sheet = std::make_shared<const draw::Sheet>(std::move(sheet));
     d_.blocks.push_back(std::move(b));
   }
   void rows(std::vector<Row> r) {
-    if (!r.empty()) d_.blocks.push_back({Block::Kind::Equations, "", {}, std::move(r), {}, {}});
+    if (!r.empty()) d_.blocks.push_back({Block::Kind::Equations, "", {}, std::move(r), {}, {}, nullptr});
   }
 
   static Span W(const std::string& s) { return Span::w(s); }
@@ -243,7 +243,7 @@ private:
 
   void given() {
     section("Given");
-    Block t{Block::Kind::Table, "", {}, {}, {"Symbol", "Value", "Unit"}, {}};
+    Block t{Block::Kind::Table, "", {}, {}, {"Symbol", "Value", "Unit"}, {}, nullptr};
     for (auto& pd : def_.parameters) {
       const model::Parameter* p = m_.parameter(pd.name);
       if (!p) continue;

@@ -244,6 +244,41 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
   return c;
 }
 
+draw::Motion motion_of(const Run& r, const std::string& title) {
+  draw::Motion mo;
+  mo.title = title;
+  for (auto& x : r.samples) mo.frames.push_back({x.t, x.q, x.qd});
+  for (auto& im : r.impacts) {
+    std::string at;
+    for (auto& name : im.contacts) at += (at.empty() ? "" : ", ") + name;
+    mo.moments.push_back({im.t, "impact at " + at});
+  }
+  return mo;
+}
+
+std::vector<draw::Motion> motions(const Solution& s, int samples) {
+  std::vector<draw::Motion> out;
+  for (auto& leg : legs(s)) {
+    if (!leg.why_not.empty()) continue;
+    const model::Analysis& a = s.model.analyses[static_cast<std::size_t>(leg.analysis)];
+    // a first run finds where the leg ends; the second samples it at regular times
+    Options o;
+    o.native = false;  // the tape: no compiler run for a page
+    o.record = false;
+    const LegCheck first = check_leg(s, leg, o, 1);
+    const double span = first.run.end.t - leg.start.t;
+    if (!(span > 0) || !std::isfinite(span)) continue;
+    o.record = true;
+    o.sample_dt = span / std::max(samples, 1);
+    const LegCheck c = check_leg(s, leg, o, 1);
+    draw::Motion mo = motion_of(c.run, "Analysis " + std::to_string(leg.analysis + 1) + " (" + a.kind + "), from state " +
+                                           s.model.states[static_cast<std::size_t>(leg.from)].name + " until state " +
+                                           s.model.states[static_cast<std::size_t>(leg.to)].name + " (" + leg.target + "), simulated");
+    if (!mo.frames.empty()) out.push_back(std::move(mo));
+  }
+  return out;
+}
+
 namespace {
 
 // an effect acts after state `st` when it is switched on at or before it and not off by then

@@ -92,6 +92,16 @@ std::string text(const Derivation& d);
 /// A standalone LaTeX document (article, amsmath); every equation tagged and labelled.
 std::string latex(const Derivation& d);
 
+struct HtmlOptions {
+  std::string katex_dir = "/usr/share/javascript/katex";  ///< Debian's libjs-katex (katex.min.js, .css, fonts/)
+};
+
+/// One self-contained HTML page: the derivation's text, its mathematics typeset by KaTeX in the
+/// browser (script, style and fonts inlined from `katex_dir`), its figures as inline SVG, and
+/// `animations` (players from draw::animation_fragment) in a last section.
+/// @throws InputError when KaTeX is not installed.
+std::string html(const Derivation& d, const std::vector<std::string>& animations, const HtmlOptions& o = {});
+
 /// What pdflatex did with a document.
 struct PdfRun {
   bool ran = false;    ///< pdflatex was found and started

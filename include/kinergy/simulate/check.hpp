@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "kinergy/draw/animation.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/simulate/simulate.hpp"
 
@@ -42,6 +43,14 @@ struct LegCheck {
 /// Run a leg and compare its end with the closed-form state; passes when every known value
 /// agrees within `tolerance` relative to its scale.
 LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double tolerance);
+
+/// A run as a motion to draw: its samples as frames, its impacts as moments ("impact at floor").
+draw::Motion motion_of(const Run& r, const std::string& title);
+
+/// The motion of each analysis that can be simulated (each leg), from its first state until its
+/// second is reached, at `samples` regular times and every impact: the animations of a worked
+/// solution. Analyses without duration (impacts) and legs that cannot run are left out.
+std::vector<draw::Motion> motions(const Solution& s, int samples);
 
 /// A run from state `start` (at s0) to time `until` that follows the effects switched on and off
 /// at states (`on: S`, `off: S`): it runs with the effects acting after the start state until the
