@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Write docs/gallery.md: every worked problem in derivations/ with the closed forms kinergy
-# derives for it (as `kinergy solve` prints them), a drawing of the scene at its first state
+# derives for it (as `kinergy solve` prints them), a drawing of the scene at its states
 # (`kinergy draw`, into docs/gallery/) and links to its approved step-by-step derivation. Run it after a change that alters a closed form, and commit the result:
 #   bash tests/emit/make_gallery.sh [BUILD_DIR]      (BUILD_DIR defaults to build)
 set -euo pipefail
@@ -36,10 +36,10 @@ trap 'rm -f "$tmp"' EXIT
       echo
       echo "[\`$f\`](../$f) · derivation: [text](../$base.approved.txt) · [LaTeX](../$base.approved.tex)"
       echo
-      # the scene at its first state, drawn from the model (kinergy draw)
+      # the scene at its states side by side, drawn from the model (kinergy draw --state all)
       pic="docs/gallery/$(basename "$base").svg"
-      if "$kinergy" draw "$f" -o "$pic" 2>/dev/null; then
-        echo "![the scene at its first state](gallery/$(basename "$base").svg)"
+      if "$kinergy" draw "$f" --state all -o "$pic" 2>/dev/null; then
+        echo "![the scene at its states](gallery/$(basename "$base").svg)"
         echo
       fi
       echo '```'
