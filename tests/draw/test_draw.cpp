@@ -280,3 +280,20 @@ TEST_CASE("kinergy draw --figure N: a figure of the worked solution, as the LaTe
   CHECK(st != 0);
   CHECK(out.find("the scene has no analyses, so its worked solution has no figures") != std::string::npos);
 }
+
+TEST_CASE("the docs' wrong geometry: it solves, and its picture puts the spring's end C to the right of O", "[draw][docs]") {
+  // docs/pictures.md: bar_spring with C written [b, 0] instead of [0, b]. By hand: B goes from
+  // (−L, 0) to (0, −L); the spring from length L + b = 2.5 m to sqrt(L² + b²) = 1.8028 m, so
+  // ½ (m L²/3) ω² = m g L/2 + ½ k (2.5 − 1)² − ½ k (1.8028 − 1)², ω = 5.3088 rad/s (3.3252 as meant)
+  const std::string file = std::string(KINERGY_SOURCE_DIR) + "/docs/examples/bar_spring_wrong_point.yaml";
+  kinergy::Solution s = kinergy::solve_file(file);
+  const double m = 10, L = 1.5, k = 40, L0 = 1, b = 1, g = 9.81;
+  const double s1 = L + b, s2 = std::sqrt(L * L + b * b);
+  const double w = std::sqrt((m * g * L / 2 + k * (s1 - L0) * (s1 - L0) / 2 - k * (s2 - L0) * (s2 - L0) / 2) * 2 / (m * L * L / 3));
+  REQUIRE(kt::result(s, "omega2").si);
+  CHECK(std::fabs(kt::result(s, "omega2").si->to_double() - w) < 1e-9 * w);
+  auto back = read_back(kinergy::draw::scene_at(s.model, s.branch.sol, kinergy::simulate::simulation_values(s), 0).svg());
+  REQUIRE(back.points.count("C"));
+  CHECK(std::fabs(back.points["C"].first - b) < 1e-9);
+  CHECK(std::fabs(back.points["C"].second) < 1e-9);
+}
