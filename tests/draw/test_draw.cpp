@@ -297,3 +297,31 @@ TEST_CASE("the docs' wrong geometry: it solves, and its picture puts the spring'
   CHECK(std::fabs(back.points["C"].first - b) < 1e-9);
   CHECK(std::fabs(back.points["C"].second) < 1e-9);
 }
+
+TEST_CASE("every derivation drawn as SVG, PDF, PNG and TikZ, each state side by side", "[draw][formats]") {
+  const auto dir = std::filesystem::temp_directory_path() / "kinergy-draw-formats";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  int drawn = 0;
+  for (const auto& file : kt::scene_files("derivations")) {
+    INFO(file);
+    kinergy::Solution s = kinergy::solve_file(file);
+    std::vector<int> all;
+    for (std::size_t i = 0; i < s.model.states.size(); ++i) all.push_back(static_cast<int>(i));
+    std::vector<std::string> left_out;
+    const auto sheet = kinergy::draw::states_at(s.model, s.branch.sol, kinergy::simulate::simulation_values(s), all, &left_out);
+    REQUIRE(sheet.size() >= 1);
+    CHECK(sheet.size() + left_out.size() == s.model.states.size());
+    const std::string stem = (dir / std::filesystem::path(file).stem()).string();
+    for (const char* ext : {".svg", ".pdf", ".png", ".tex"}) {
+      kinergy::draw::write(sheet, stem + ext);
+      const std::string bytes = kt::read_file(stem + ext);
+      if (std::string(ext) == ".svg") CHECK(bytes.rfind("<svg", 0) == 0);
+      if (std::string(ext) == ".pdf") CHECK(bytes.rfind("%PDF", 0) == 0);
+      if (std::string(ext) == ".png") CHECK(bytes.substr(1, 3) == "PNG");
+      if (std::string(ext) == ".tex") CHECK(bytes.rfind("\\begin{tikzpicture}", 0) == 0);
+    }
+    ++drawn;
+  }
+  CHECK(drawn >= 60);
+}

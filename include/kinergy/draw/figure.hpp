@@ -92,10 +92,10 @@ public:
   /// An SVG document at most `width` pixels wide and `max_height` high; each panel's world in its
   /// own group (data-world="metres", data-panel="i") whose transform maps metres to pixels.
   /// (`width` 0: 640 for one panel, more for several.)
-  std::string svg(int width = 0, int max_height = 100000) const;
+  std::string svg(int width = 0, int max_height = 1600) const;
   /// The same drawing as a TikZ picture `width_cm` wide (at most), for pdflatex: the page laid out
   /// as for svg(width, max_height), at width_cm / width centimetres a pixel.
-  std::string tikz(double width_cm, int width = 0, int max_height = 100000) const;
+  std::string tikz(double width_cm, int width = 0, int max_height = 1600) const;
   std::size_t size() const { return panels_.size(); }
   const Figure& panel(std::size_t i) const { return panels_.at(i).figure; }
 
