@@ -224,7 +224,7 @@ std::string gnuplot_script(const Motion& motion, const Drawn& d, const std::stri
     << "set output '" << out << "'\n"
     << "unset border\nunset tics\nunset key\nset margins 0,0,0,0\n"
     << "set xrange [" << n(x0) << ":" << n(x1) << "]\nset yrange [" << n(y0) << ":" << n(y1) << "]\n";
-  const Ink inks[] = {Ink::Body, Ink::Thin, Ink::Support, Ink::Force, Ink::Spring, Ink::Track, Ink::Hidden, Ink::Momentum};
+  const Ink inks[] = {Ink::Body, Ink::Thin, Ink::Support, Ink::Force, Ink::Spring, Ink::Track, Ink::Hidden, Ink::Momentum, Ink::Dimension, Ink::Sense};
   for (std::size_t i : pick) {
     const Figure& f = d.figs[i];
     o << "unset label\n";

@@ -15,6 +15,7 @@
 #include "kinergy/common/process.hpp"
 #include "kinergy/model/inertia.hpp"
 #include "kinergy/model/model.hpp"
+#include "kinergy/model/simplify.hpp"
 #include "page.hpp"
 
 namespace kinergy::draw {
@@ -56,6 +57,8 @@ Pen pen(Ink i) {
     case Ink::Track: return {"#777777", 1.2, true};
     case Ink::Hidden: return {"#999999", 1.0, true};
     case Ink::Momentum: return {"#6a1b9a", 2.2, false};
+    case Ink::Dimension: return {"#777777", 0.8, false};
+    case Ink::Sense: return {"#0b7a75", 1.4, false};
   }
   return {"#000000", 1.0, false};
 }
@@ -110,6 +113,17 @@ void Figure::ground(double x, double y) {
 }
 
 void Figure::label(double x, double y, const std::string& text, const std::string& tex) { labels_.push_back({x, y, text, tex}); }
+
+void Figure::dimension(double x1, double y1, double x2, double y2, const std::string& text) {
+  // offset to the right of 1 → 2 by two glyphs, with a tick at each end and the size in the middle
+  const double d = std::hypot(x2 - x1, y2 - y1), g = glyph();
+  if (!(d > 0) || !std::isfinite(d) || text.empty()) return;
+  const double nx = (y2 - y1) / d, ny = -(x2 - x1) / d, o = 2 * g, t = 0.6 * g;
+  line(x1 + nx * o, y1 + ny * o, x2 + nx * o, y2 + ny * o, Ink::Dimension);
+  line(x1 + nx * (o - t), y1 + ny * (o - t), x1 + nx * (o + t), y1 + ny * (o + t), Ink::Dimension);
+  line(x2 + nx * (o - t), y2 + ny * (o - t), x2 + nx * (o + t), y2 + ny * (o + t), Ink::Dimension);
+  label((x1 + x2) / 2 + nx * o, (y1 + y2) / 2 + ny * o, text);
+}
 
 double Figure::glyph() const { return glyph_; }
 
@@ -367,6 +381,8 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
       case Ink::Track: return "kTrack";
       case Ink::Hidden: return "kHidden";
       case Ink::Momentum: return "kMomentum";
+      case Ink::Dimension: return "kTrack";
+      case Ink::Sense: return "kSense";
     }
     return "black";
   };
@@ -383,7 +399,7 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
   o << "\\begin{tikzpicture}\n"
     << "\\definecolor{kBody}{HTML}{1F3B73}\\definecolor{kSupport}{HTML}{333333}\\definecolor{kForce}{HTML}{B8231F}"
     << "\\definecolor{kSpring}{HTML}{2A7D2E}\\definecolor{kTrack}{HTML}{777777}\\definecolor{kHidden}{HTML}{999999}"
-    << "\\definecolor{kMomentum}{HTML}{6A1B9A}\n"
+    << "\\definecolor{kMomentum}{HTML}{6A1B9A}\\definecolor{kSense}{HTML}{0B7A75}\n"
     << "\\path[use as bounding box] (0,0) rectangle " << pt(L.width, 0) << ";\n";
   for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
     const auto& P = L.places[pi];
@@ -515,6 +531,33 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
   f.mark(gx, gy, b.name + ".G");
   f.label(gx, gy, b.name);
   if (!points) return;
+  // the given dimensions: a rod's length and a plate's sides beside them, a radius on its line
+  auto size_text = [&](std::size_t i) { return i < b.sizes.size() ? model::text(b.sizes[i]) : std::string(); };
+  switch (shape.outline) {
+    case model::Outline::Bar: {
+      auto [x1, y1] = world(-a / 2, 0);
+      auto [x2, y2] = world(a / 2, 0);
+      f.dimension(x1, y1, x2, y2, size_text(0));
+      break;
+    }
+    case model::Outline::Round:
+    case model::Outline::Gyration: {
+      auto [x2, y2] = world(a / 2, 0);
+      f.label(x2, y2, size_text(0));
+      break;
+    }
+    case model::Outline::Rect: {
+      const double bb = b.sizes.size() > 1 ? at(b.sizes[1]) : a;
+      auto [x1, y1] = world(-a / 2, -bb / 2);
+      auto [x2, y2] = world(a / 2, -bb / 2);
+      auto [x3, y3] = world(a / 2, bb / 2);
+      f.dimension(x1, y1, x2, y2, size_text(0));
+      if (b.sizes.size() > 1) f.dimension(x2, y2, x3, y3, size_text(1));
+      break;
+    }
+    case model::Outline::Dot:
+      break;
+  }
   for (auto& [pn, lp] : b.points) {
     auto [px, py] = world(at(lp.first), at(lp.second));
     f.mark(px, py, b.name + "." + pn);
@@ -534,6 +577,28 @@ Figure drawing(const model::Model& m, const At& at, double g) {
     f.label(at(p.first), at(p.second), pn);
   }
   for (auto& e : m.effects) e.draw(m, at, f);
+  // the positive sense of each coordinate, on the first body it moves: an arrow at the mass
+  // centre along ∂r̄/∂q, or a curved arrow round it when q only turns the body (∂φ/∂q)
+  for (auto& c : m.coords) {
+    for (auto& b : m.bodies) {
+      const double dx = at(b.x.diff(c.q)), dy = at(b.y.diff(c.q)), dphi = at(b.angle.diff(c.q));
+      const double gx = at(b.x), gy = at(b.y);
+      if (!std::isfinite(gx) || !std::isfinite(gy)) continue;
+      const double d = std::hypot(dx, dy);
+      if (std::isfinite(d) && d > 1e-12) {
+        const double ex = gx + 3 * g * dx / d, ey = gy + 3 * g * dy / d;
+        f.arrow(gx, gy, ex, ey, Ink::Sense);
+        f.label(ex, ey, "+" + c.name);
+        break;
+      }
+      if (std::isfinite(dphi) && std::fabs(dphi) > 1e-12) {
+        const double a0 = dphi > 0 ? 0.6 : 2.6, a1 = dphi > 0 ? 2.6 : 0.6, r = 1.8 * g;
+        f.arc_arrow(gx, gy, r, a0, a1, Ink::Sense);
+        f.label(gx + r * std::cos(a1), gy + r * std::sin(a1), "+" + c.name);
+        break;
+      }
+    }
+  }
   return f;
 }
 

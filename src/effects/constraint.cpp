@@ -11,6 +11,7 @@
 // (a part of the force along which neither point moves relative to the other does no work and
 // cannot be told from the equations: it is taken as zero, a support takes it). The relation is
 // held by such a force only when D_i·f = ∂c/∂q_i for every i: checked, naming the parties.
+#include <cmath>
 #include <optional>
 
 #include "common.hpp"
@@ -28,6 +29,15 @@ public:
 
   // the relation: a dashed link between its parties' places (a mesh, a cord), named
   void draw(const Model& m, const At& at, Figure& f) const override {
+    // a party that is a body's material point at a place (a mesh's pitch point, a rolling contact):
+    // the circle round that body's centre through it — a gear's pitch circle, a wheel's rolling circle
+    for (const PointRef* p : {&a, &b}) {
+      if (p->body < 0 || !p->world_place) continue;
+      const model::Body& B = m.bodies[static_cast<std::size_t>(p->body)];
+      auto [px, py] = at.point(m.position(*p));
+      const double gx = at(B.x), gy = at(B.y), r = std::hypot(px - gx, py - gy);
+      if (std::isfinite(r) && r > 0) f.circle(gx, gy, r, Ink::Track);
+    }
     if (auto p = joined(m, at, a, b)) {
       const auto [x1, y1, x2, y2] = *p;
       f.line(x1, y1, x2, y2, Ink::Hidden);

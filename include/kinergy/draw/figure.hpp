@@ -21,7 +21,7 @@ struct At {
 };
 
 /// What a stroke is for: its colour and weight follow.
-enum class Ink { Body, Thin, Support, Force, Spring, Track, Hidden, Momentum };
+enum class Ink { Body, Thin, Support, Force, Spring, Track, Hidden, Momentum, Dimension, Sense };
 
 class Figure {
 public:
@@ -56,6 +56,9 @@ public:
   /// Hatched ground under a fixed support at (x, y).
   void ground(double x, double y);
   void label(double x, double y, const std::string& text, const std::string& tex = "");
+  /// A dimension: the size `text` of the segment 1 → 2, on a thin line beside it (to its right)
+  /// with a tick at each end.
+  void dimension(double x1, double y1, double x2, double y2, const std::string& text);
 
   /// A length that reads as "small" in this figure (for glyphs whose size the scene does not set).
   double glyph() const;
