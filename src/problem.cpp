@@ -382,7 +382,6 @@ private:
   /// refined by bisection to 45 digits), the second derivative there (< 0 at a maximum, > 0 at a
   /// minimum), and the ends; the best of them. Numbers: the result is marked "no closed form".
   /// 10^−n
-  static numeric tenth(int n) { return ex_to<numeric>(pow(numeric(10), -n)); }
 
   void extreme(const model::Find& f, Result& r) const {
     const auto& x = *f.extreme;
@@ -415,7 +414,7 @@ private:
         // refine the sign change in [prev_p, pi]: dF/dp = 0
         auto r = d->is_zero() ? std::optional<numeric>(pi)
                               : numerics::bracketed_root([&](const numeric& c) { return value_at(dF, c); }, prev_p, pi, *prev, *d,
-                                                         tenth(digits), tenth(digits), digits + 10);
+                                                         numerics::tenth(digits), numerics::tenth(digits), digits + 10);
         if (!r) continue;
         numeric root = *r;
         auto v = value_at(F, root);
@@ -464,7 +463,7 @@ private:
     if (!place) return;
     ex at_place = model::factored(model::root_simplify(model::tidy(F.subs(p == *place)), [this](const ex& y) { return m.fixed_sign(y); }));
     auto pv = numerics::evaluate(*place, env, digits), fv = numerics::evaluate(at_place, env, digits);
-    const numeric close = tenth(30);
+    const numeric close = numerics::tenth(30);
     if (!pv || !fv || abs(*pv - best->p) > close * (abs(best->p) + 1) || abs(*fv - best->F) > close * (abs(best->F) + 1)) return;
     r.closed = x.location ? *place : at_place;
     r.closed_form = true;
@@ -488,7 +487,7 @@ private:
       if (it == b.sol.end() || b.numeric_only.count(p)) continue;
       ex c = model::tidy(model::root_simplify(model::tidy(it->second), [this](const ex& y) { return m.fixed_sign(y); }).eval());
       auto v = numerics::evaluate(c, env, 45);
-      if (v && abs(*v - p_star) <= tenth(30) * (abs(p_star) + 1)) return c;
+      if (v && abs(*v - p_star) <= numerics::tenth(30) * (abs(p_star) + 1)) return c;
     }
     return std::nullopt;
   }
@@ -584,7 +583,7 @@ private:
       auto f = [&](const numeric& s) { return K_at(dK, s, p); };
       auto d0 = f(s0), d1 = f(s1);
       if (!d0 || !d1) return std::nullopt;
-      return numerics::bracketed_root(f, s0, s1, *d0, *d1, tenth(digits), tenth(digits), digits + 10);
+      return numerics::bracketed_root(f, s0, s1, *d0, *d1, numerics::tenth(digits), numerics::tenth(digits), digits + 10);
     };
     const int n = 400;
     const bool at_end = !x.along || bind->i == 0 || bind->i == n;
@@ -609,7 +608,7 @@ private:
     if (!ha || !hb || !ha->is_negative() || hb->is_negative())
       throw SceneError(x.pos, "the " + what + " value of '" + x.p_name + "' for which state '" + S + "' is reached could not be isolated" + path,
                        "give 'over' a narrower range of the path, or check the states");
-    auto root = numerics::bracketed_root(h, a, b, *ha, *hb, tenth(digits), 0, digits + 10);
+    auto root = numerics::bracketed_root(h, a, b, *ha, *hb, numerics::tenth(digits), 0, digits + 10);
     if (!root)
       throw SceneError(x.pos, "the " + what + " value of '" + x.p_name + "' for which state '" + S + "' is reached could not be isolated" + path,
                        "give 'over' a narrower range of the path, or check the states");
@@ -629,8 +628,8 @@ private:
           ex cand = unit * k / den;
           auto c = numerics::evaluate(cand, env, digits);
           auto d = c ? K_at(dK, *c, p_star) : std::nullopt;
-          if (d && abs(*c - s_bind) < ex_to<numeric>(pow(numeric(10), -30)) * (abs(s_bind) + 1) &&
-              abs(*d) < scale * ex_to<numeric>(pow(numeric(10), -40)))
+          if (d && abs(*c - s_bind) < numerics::tenth(30) * (abs(s_bind) + 1) &&
+              abs(*d) < scale * numerics::tenth(40))
             exact_s = cand;
         }
     }
@@ -655,7 +654,7 @@ private:
         for (auto& c : roots) {
           ex t = model::factored(model::root_simplify(model::tidy(c), [this](const ex& y) { return m.fixed_sign(y); }));
           auto v = numerics::evaluate(t, env, digits);
-          if (v && v->is_real() && abs(*v - p_star) <= abs(p_star) * ex_to<numeric>(pow(numeric(10), -30))) {
+          if (v && v->is_real() && abs(*v - p_star) <= abs(p_star) * numerics::tenth(30)) {
             closed = t;
             break;
           }

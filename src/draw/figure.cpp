@@ -7,11 +7,13 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include <unistd.h>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/common/markup.hpp"
 #include "kinergy/common/process.hpp"
 #include "kinergy/model/inertia.hpp"
 #include "kinergy/model/model.hpp"
@@ -34,17 +36,7 @@ std::string n(double v) {
   return os.str();
 }
 
-std::string escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else if (c == '"') o += "&quot;";
-    else o += c;
-  }
-  return o;
-}
+std::string escape(const std::string& s) { return xml_escape(s); }
 
 
 Pen pen(Ink i) {
@@ -568,15 +560,17 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
 namespace detail {
 
 // the scene drawn with glyphs of size g: bodies, fixed points, effects
-Figure drawing(const model::Model& m, const At& at, double g) {
+Figure drawing(const model::Model& m, const At& at, double g, const std::vector<int>* bodies, const std::vector<std::string>* effects) {
   Figure f;
   f.set_glyph(g);
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) body(m, at, static_cast<int>(b), f);
+  for (std::size_t b = 0; b < m.bodies.size(); ++b)
+    if (!bodies || std::find(bodies->begin(), bodies->end(), static_cast<int>(b)) != bodies->end()) body(m, at, static_cast<int>(b), f);
   for (auto& [pn, p] : m.fixed_points) {
     f.mark(at(p.first), at(p.second), pn, true);
     f.label(at(p.first), at(p.second), pn);
   }
-  for (auto& e : m.effects) e.draw(m, at, f);
+  for (auto& e : m.effects)
+    if (!effects || std::find(effects->begin(), effects->end(), e.name) != effects->end()) e.draw(m, at, f);
   // the positive sense of each coordinate, on the first body it moves: an arrow at the mass
   // centre along ∂r̄/∂q, or a curved arrow round it when q only turns the body (∂φ/∂q)
   for (auto& c : m.coords) {
@@ -634,6 +628,23 @@ Sheet states_at(const model::Model& m, const exmap& solved, const exmap& params,
   }
   Sheet sheet;
   for (auto& [st, at] : ats) sheet.add(drawing(m, at, g), "state " + m.states.at(static_cast<std::size_t>(st)).name);
+  return sheet;
+}
+
+Sheet positions_with(const model::Model& m, const exmap& solved, const exmap& params, int from, int to, const std::vector<int>& bodies,
+                     const std::vector<std::string>& effects) {
+  // each state at its own positions; a coordinate one does not fix at the other's
+  std::optional<At> a1, a2;
+  try {
+    a1 = state_values(m, solved, params, from);
+  } catch (const SceneError&) {
+  }
+  a2 = state_values(m, solved, params, to, a1 ? &*a1 : nullptr);
+  if (!a1) a1 = state_values(m, solved, params, from, &*a2);
+  const double g = std::max(glyph_for(m, *a1), glyph_for(m, *a2));
+  Sheet sheet;
+  sheet.add(drawing(m, *a1, g, &bodies, &effects), "state " + m.states.at(static_cast<std::size_t>(from)).name);
+  sheet.add(drawing(m, *a2, g, &bodies, &effects), "state " + m.states.at(static_cast<std::size_t>(to)).name);
   return sheet;
 }
 

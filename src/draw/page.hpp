@@ -63,7 +63,9 @@ void svg_world(std::ostringstream& o, const Figure& f, const Layout::Place& P, d
 void svg_labels(std::ostringstream& o, const Layout& L);
 extern const char* const kLabelFont;
 
-/// The scene drawn at `at` with glyphs of size g: bodies, fixed points, effects.
-Figure drawing(const model::Model& m, const At& at, double g);
+/// The scene drawn at `at` with glyphs of size g: bodies, fixed points, effects, the coordinates'
+/// senses. With `bodies` / `effects`, only those bodies (by index) and effects (by name).
+Figure drawing(const model::Model& m, const At& at, double g, const std::vector<int>* bodies = nullptr,
+               const std::vector<std::string>* effects = nullptr);
 
 }  // namespace kinergy::draw::detail

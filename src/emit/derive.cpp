@@ -423,6 +423,16 @@ private:
     auto V = [&](const std::string& S) { return Math::notation(tex_at("V", S), text_at("V", S)); };
     std::string U_tex = "U_{" + tex_interval_sub(S1, S2) + "}", U_text = "U" + text_interval_sub(S1, S2);
 
+    // the positions at the two states with the effects that do work between them
+    try {
+      std::string names;
+      for (std::size_t i = 0; i < b.working.size(); ++i)
+        names += (i ? (i + 1 == b.working.size() ? " and " : ", ") : "") + b.working[i];
+      figure(draw::positions_with(m_, s_.branch.sol, parameter_values(s_), a.from, a.to, a.bodies, b.working),
+             "Positions at " + S1 + " and " + S2 + (names.empty() ? ", with no effect doing work" : ", with the effects that do work: " + names) + ".");
+    } catch (const SceneError&) {
+      // a state neither fixes: the states' figure says which
+    }
     // which effects store energy (those whose V the balance holds)
     const std::vector<std::string>& potentials = b.stored;
     Spans intro;

@@ -7,6 +7,7 @@
 
 #include "derive_tex.hpp"
 #include "kinergy/common/error.hpp"
+#include "kinergy/common/markup.hpp"
 #include "kinergy/draw/animation.hpp"
 #include "kinergy/emit/derive.hpp"
 
@@ -16,17 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string escape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else if (c == '"') o += "&quot;";
-    else o += c;
-  }
-  return o;
-}
+std::string escape(const std::string& s) { return xml_escape(s); }
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

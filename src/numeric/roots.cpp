@@ -4,6 +4,8 @@ namespace kinergy::numerics {
 
 using GiNaC::numeric;
 
+numeric tenth(int n) { return GiNaC::ex_to<numeric>(GiNaC::pow(numeric(10), -n)); }
+
 std::optional<numeric> bracketed_root(const Scalar& f, numeric a, numeric b, numeric fa, numeric fb, const numeric& rtol,
                                       const numeric& atol, int digits, int max_steps) {
   if (fa.is_zero()) return a;

@@ -71,6 +71,7 @@ EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& 
       w.how += " from state " + m.states[s1].name + " to " + m.states[s2].name + " (where it acts)";
       U += w.U;
       b.works.push_back(w);
+      b.working.push_back(e.name);
       continue;
     }
     std::size_t inside = 0, acted = 0;
@@ -87,7 +88,10 @@ EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& 
     } else if (m.conservative(e)) {
       ex Ve = e.potential(m);
       V += Ve;
-      if (!Ve.is_zero()) b.stored.push_back(e.name == e.kind ? e.name : e.name + " (" + e.kind + ")");
+      if (!Ve.is_zero()) {
+        b.stored.push_back(e.name == e.kind ? e.name : e.name + " (" + e.kind + ")");
+        b.working.push_back(e.name);
+      }
       continue;
     } else {
       w = work(m, e, a.from, a.to, k);
@@ -95,6 +99,7 @@ EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& 
     if (w.U.is_zero()) continue;
     U += w.U;
     b.works.push_back(w);
+    b.working.push_back(e.name);
   }
   b.at_from = {m.bind(T, a.from), m.bind(V, a.from)};
   b.at_to = {m.bind(T, a.to), m.bind(V, a.to)};

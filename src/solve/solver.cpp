@@ -349,7 +349,7 @@ private:
                                 const numeric& fb) const {
     const int digits = kWork + 10;
     return numerics::bracketed_root([&](const numeric& x) { return residual_at(r, u, x, digits); }, a, b, fa, fb,
-                                    ex_to<numeric>(pow(numeric(10), -kWork)), ex_to<numeric>(pow(numeric(10), -300)), digits);
+                                    numerics::tenth(kWork), numerics::tenth(300), digits);
   }
 
   // No closed form: find the sign changes of the residual around a reference and refine.

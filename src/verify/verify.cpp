@@ -6,6 +6,7 @@
 #include "kinergy/emit/emit.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/roots.hpp"
 
 namespace kinergy::verify {
 
@@ -62,7 +63,7 @@ Check form_check(const Solution& s, const Result& r, const model::Expect& x) {
     ++points;
     numeric scale = std::max(abs(*d), abs(*cl));
     numeric rel = scale.is_zero() ? numeric(0) : abs(*d - *cl) / scale;
-    if (tries == 1) equal_at_scene = rel <= GiNaC::pow(numeric(10), numeric(-(kDigits - 10)));
+    if (tries == 1) equal_at_scene = rel <= numerics::tenth(kDigits - 10);
     if (rel > worst) {
       worst = rel;
       std::ostringstream os;
@@ -77,7 +78,7 @@ Check form_check(const Solution& s, const Result& r, const model::Expect& x) {
     }
     if (!r.closed_form) break;  // a numeric root holds at the scene's values only
   }
-  numeric tol = GiNaC::pow(numeric(10), numeric(-(kDigits - 10)));
+  numeric tol = numerics::tenth(kDigits - 10);
   if (points == 0) {
     c.detail = "FAILS: no admissible point to compare at";
     return c;
@@ -109,7 +110,7 @@ std::optional<numeric> newton(const ex& r, const symbol& u, numeric x, const exm
     if (d->is_zero()) return std::nullopt;
     numeric step = *f / *d;
     x = ex_to<numeric>((x - step).evalf());
-    if (abs(step) <= abs(x) * GiNaC::pow(numeric(10), numeric(-(digits - 5)))) return x;
+    if (abs(step) <= abs(x) * numerics::tenth(digits - 5)) return x;
   }
   return std::nullopt;
 }

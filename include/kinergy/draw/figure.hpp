@@ -134,6 +134,12 @@ Figure scene_at(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::
 Sheet states_at(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, const std::vector<int>& states,
                 std::vector<std::string>* left_out = nullptr);
 
+/// The bodies `bodies` at states `from` and `to` side by side, with only the effects named in
+/// `effects` (those that do work over an energy analysis). A coordinate one state does not fix
+/// takes the other's value. @throws SceneError when neither fixes it.
+Sheet positions_with(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int from, int to,
+                     const std::vector<int>& bodies, const std::vector<std::string>& effects);
+
 /// Write the drawing to `path`: .svg as it is, .pdf or .png converted by rsvg-convert (Debian
 /// librsvg2-bin), .tex as a TikZ picture to \input in a document that loads tikz.
 /// @throws InputError for another extension, a missing converter or a failed write.

@@ -10,6 +10,9 @@ namespace kinergy::numerics {
 /// f at x; nothing where f has no real value.
 using Scalar = std::function<std::optional<GiNaC::numeric>(const GiNaC::numeric&)>;
 
+/// 10^−n exactly: a tolerance of n decimal digits.
+GiNaC::numeric tenth(int n);
+
 /// A root of f in the bracket [a, b] (f(a), f(b) of opposite signs, or one of them zero):
 /// regula falsi with the Illinois modification (the end kept twice has its value halved), a
 /// bisection step every eighth step and wherever the secant leaves the bracket, until

@@ -69,6 +69,7 @@ struct EnergyBalance {
   EnergyTerms at_from, at_to;
   std::vector<Work> works;
   std::vector<std::string> stored;  ///< the effects whose potential V holds ("name (kind)")
+  std::vector<std::string> working;  ///< the names of the effects that do work (by V or by U), for a figure
   Equation equation;
   bool conservative = true;  ///< no non-conservative effect did work
 };
