@@ -258,9 +258,39 @@ draw::Motion motion_of(const Run& r, const std::string& title) {
 
 std::vector<draw::Motion> motions(const Solution& s, int samples) {
   std::vector<draw::Motion> out;
-  for (auto& leg : legs(s)) {
+  const model::Model& m = s.model;
+  for (Leg leg : legs(s)) {
     if (!leg.why_not.empty()) continue;
-    const model::Analysis& a = s.model.analyses[static_cast<std::size_t>(leg.analysis)];
+    const model::Analysis& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
+    if (a.instant) {
+      // an impact has no duration: its motion shown is what follows it, for as long as the
+      // fastest body takes to cover the scene's size (L/v: its bodies' sizes and the distances
+      // between their centres; their speeds just after, v̄ and ω times the size), at most 5 s
+      exmap at = simulation_values(s);
+      for (std::size_t i = 0; i < m.coords.size(); ++i) {
+        at[m.coords[i].q] = leg.start.q[i];
+        at[m.coords[i].qd] = std::isnan(leg.expect.qd[i]) ? leg.start.qd[i] : leg.expect.qd[i];
+      }
+      at[m.t] = leg.start.t;
+      auto number = [&](const ex& e) {
+        ex v = e.subs(at).evalf();
+        return is_a<numeric>(v) && ex_to<numeric>(v).is_real() ? ex_to<numeric>(v).to_double() : 0.0;
+      };
+      double L = 0, v = 0;
+      for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+        double size = 0;
+        for (auto& z : m.bodies[b].sizes) size = std::max(size, std::fabs(number(z)));
+        L = std::max(L, size);
+        v = std::max({v, std::hypot(number(m.rate(m.bodies[b].x)), number(m.rate(m.bodies[b].y))), std::fabs(number(m.omega(static_cast<int>(b)))) * size});
+        for (std::size_t c = 0; c < b; ++c)
+          L = std::max(L, std::hypot(number(m.bodies[b].x) - number(m.bodies[c].x), number(m.bodies[b].y) - number(m.bodies[c].y)));
+      }
+      if (!(L > 0) || !(v > 0) || !std::isfinite(L / v)) continue;
+      leg.stop = Stop{};
+      leg.stop.until = leg.start.t + std::min(L / v, 5.0);
+      leg.stop.impulses = true;
+      leg.target = "t = " + num(leg.stop.until) + " s, after the impact";
+    }
     // a first run finds where the leg ends; the second samples it at regular times
     Options o;
     o.native = false;  // the tape: no compiler run for a page
@@ -272,8 +302,10 @@ std::vector<draw::Motion> motions(const Solution& s, int samples) {
     o.sample_dt = span / std::max(samples, 1);
     const LegCheck c = check_leg(s, leg, o, 1);
     draw::Motion mo = motion_of(c.run, "Analysis " + std::to_string(leg.analysis + 1) + " (" + a.kind + "), from state " +
-                                           s.model.states[static_cast<std::size_t>(leg.from)].name + " until state " +
-                                           s.model.states[static_cast<std::size_t>(leg.to)].name + " (" + leg.target + "), simulated");
+                                           m.states[static_cast<std::size_t>(leg.from)].name +
+                                           (a.instant ? " through the impact until " + leg.target
+                                                      : " until state " + m.states[static_cast<std::size_t>(leg.to)].name + " (" + leg.target + ")") +
+                                           ", simulated");
     if (!mo.frames.empty()) out.push_back(std::move(mo));
   }
   return out;
