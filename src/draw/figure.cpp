@@ -2,6 +2,7 @@
 #include "kinergy/draw/figure.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -152,6 +153,24 @@ void Sheet::then(std::string text, std::string tex) {
 namespace detail {
 
 
+// Does the segment (x0, y0)–(x1, y1) pass through the box? (Liang–Barsky clipping.)
+bool crosses(const std::array<double, 4>& seg, const Layout::Box& b) {
+  double t0 = 0, t1 = 1;
+  const double dx = seg[2] - seg[0], dy = seg[3] - seg[1];
+  const double p[4] = {-dx, dx, -dy, dy}, q[4] = {seg[0] - b.x0, b.x1 - seg[0], seg[1] - b.y0, b.y1 - seg[1]};
+  for (int k = 0; k < 4; ++k) {
+    if (p[k] == 0) {
+      if (q[k] < 0) return false;
+      continue;
+    }
+    const double r = q[k] / p[k];
+    if (p[k] < 0) t0 = std::max(t0, r);
+    else t1 = std::min(t1, r);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
 Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height, const Figure::Bounds* fixed) {
   Layout L;
   const std::size_t n = panels.size();
@@ -214,25 +233,46 @@ Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels,
     L.between_x.push_back(left + w + kGap / 2);
     left += w + kGap;
   }
-  // labels on the page, kept off each other and on the page: the first free place round the anchor
+  // labels on the page, kept off each other and on the page, and off the strokes of bodies and
+  // arrows where a place round the anchor allows: the first place free of all three, else the
+  // first free of labels and the page's edge
   std::vector<Layout::Box> taken;
   for (std::size_t i = 0; i < n; ++i) {
     const auto& P = L.places[i];
+    // the page segments of the panel's bodies and arrows
+    std::vector<std::array<double, 4>> strokes;
+    for (auto& sh : panels[i].first->shapes()) {
+      if (sh.ink != Ink::Body && sh.ink != Ink::Force && sh.ink != Ink::Momentum && sh.ink != Ink::Sense) continue;
+      if (sh.kind == Figure::Shape::Circle || sh.kind == Figure::Shape::Mark) continue;
+      for (std::size_t k = 0; k + 1 < sh.pts.size(); ++k)
+        strokes.push_back({P.tx + L.scale * sh.pts[k].first, P.ty - L.scale * sh.pts[k].second, P.tx + L.scale * sh.pts[k + 1].first,
+                           P.ty - L.scale * sh.pts[k + 1].second});
+      if (sh.kind == Figure::Shape::Polygon && sh.pts.size() > 2)
+        strokes.push_back({P.tx + L.scale * sh.pts.back().first, P.ty - L.scale * sh.pts.back().second, P.tx + L.scale * sh.pts[0].first,
+                           P.ty - L.scale * sh.pts[0].second});
+    }
     for (auto& l : panels[i].first->labels()) {
       const double bw = kCharWidth * static_cast<double>(l.text.size()) + 2, bh = 15;
       const double ax = P.tx + L.scale * l.x, ay = P.ty - L.scale * l.y;
-      const std::pair<double, double> tries[] = {{8, -6}, {8, 16}, {-8 - bw, -6}, {-8 - bw, 16}, {-bw / 2, -12}, {-bw / 2, 24},
-                                                 {14, -20}, {-14 - bw, 30}, {14, 30}, {-14 - bw, -20}};
+      const std::pair<double, double> tries[] = {{8, -6},   {8, 16},    {-8 - bw, -6}, {-8 - bw, 16}, {-bw / 2, -12},    {-bw / 2, 24},
+                                                 {14, -20}, {-14 - bw, 30}, {14, 30}, {-14 - bw, -20}, {20, 6}, {-20 - bw, 6}};
       Layout::Box best{ax + 8, ay - 6 - bh, ax + 8 + bw, ay - 6};
+      bool found = false, any = false;
       for (auto& [dx, dy] : tries) {
         Layout::Box b{ax + dx, ay + dy - bh + 3, ax + dx + bw, ay + dy + 3};
         bool clash = b.x0 < 0 || b.x1 > L.width || b.y0 < 0 || b.y1 > L.height;
         for (auto& t : taken) clash = clash || (b.x0 < t.x1 && t.x0 < b.x1 && b.y0 < t.y1 && t.y0 < b.y1);
-        if (!clash) {
+        if (clash) continue;
+        if (!any) best = b, any = true;
+        bool crossed = false;
+        for (auto& st : strokes) crossed = crossed || crosses(st, b);
+        if (!crossed) {
           best = b;
+          found = true;
           break;
         }
       }
+      (void)found;
       taken.push_back(best);
       L.labels.push_back({best, &l});
     }
