@@ -104,8 +104,12 @@ struct Loaded {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"kinergy: plane rigid-body motion by energy and momentum, in closed form"};
+  CLI::App app{"kinergy: plane rigid-body motion by energy and momentum, in closed form", "kinergy"};
   app.require_subcommand(1);
+#ifndef KINERGY_VERSION
+#define KINERGY_VERSION "unknown"
+#endif
+  app.set_version_flag("--version", std::string("kinergy ") + KINERGY_VERSION);
   int digits = 15;
   bool as_json = false;
   std::string scene;
@@ -119,7 +123,7 @@ int main(int argc, char** argv) {
   std::string tex_out, pdf_out;
   int derive_digits = 4;
   bool no_checks = false;
-  auto* derive = app.add_subcommand("derive", "the worked solution step by step: text, or LaTeX / PDF");
+  auto* derive = app.add_subcommand("derive", "the worked solution step by step: text, LaTeX, PDF, or one HTML page");
   derive->add_option("SCENE", scene, "scene file (YAML)")->required();
   derive->add_option("--latex", tex_out, "write a standalone LaTeX document to FILE ('-': standard output)");
   derive->add_option("--pdf", pdf_out, "write a PDF (runs pdflatex in a temporary directory)");

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# `cmake --install` into a fresh prefix, then use what it installed as others would: the CLI
+# (--version), a CMake project (find_package(kinergy), tests/consumer), a plain compile with
+# pkg-config, the man page and the bash completion.
+#   bash tests/install/test_install.sh BUILD_DIR
+# Expected value by hand (the scene's description): the sliding rod's omega2 = 3.50 rad/s.
+set -euo pipefail
+src="$(cd "$(dirname "$0")/../.." && pwd)"
+build="$(cd "$1" && pwd)"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+prefix="$tmp/prefix"
+cmake --install "$build" --prefix "$prefix" >/dev/null
+fail() { echo "test_install: $*" >&2; exit 1; }
+for f in bin/kinergy include/kinergy/problem.hpp share/bash-completion/completions/kinergy; do
+  [ -e "$prefix/$f" ] || fail "not installed: $f"
+done
+config=$(find "$prefix" -name kinergyConfig.cmake | head -1)
+pc=$(find "$prefix" -name kinergy.pc | head -1)
+[ -n "$config" ] || fail "no kinergyConfig.cmake"
+[ -n "$pc" ] || fail "no kinergy.pc"
+if command -v help2man >/dev/null; then
+  [ -e "$prefix/share/man/man1/kinergy.1" ] || fail "no man page"
+  grep -q '^\.SS simulate' "$prefix/share/man/man1/kinergy.1" || fail "the man page has no section for simulate"
+  ! grep -q "$build" "$prefix/share/man/man1/kinergy.1" || fail "the man page names the build directory"
+fi
+# the CLI
+[ "$("$prefix/bin/kinergy" --version)" = "kinergy 0.1.0" ] || fail "kinergy --version: $("$prefix/bin/kinergy" --version)"
+check_omega() {  # the consumer's output: omega2 = … = 3.50… (to the scene's three figures)
+  grep -E '^omega2 = .* = 3\.50[0-9]*$' <<<"$1" >/dev/null || fail "$2 printed: $1"
+}
+# a CMake project
+cmake -S "$src/tests/consumer" -B "$tmp/consumer" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$tmp/consumer" >/dev/null
+out=$("$tmp/consumer/consumer" "$src/derivations/energy/sliding_rod.yaml")
+check_omega "$out" "the CMake consumer"
+# pkg-config
+flags=$(PKG_CONFIG_PATH="$(dirname "$pc")" pkg-config --cflags --libs kinergy)
+c++ -O1 -o "$tmp/pc_consumer" "$src/tests/consumer/main.cpp" $flags
+out=$("$tmp/pc_consumer" "$src/derivations/energy/sliding_rod.yaml")
+check_omega "$out" "the pkg-config consumer"
+# bash completion: subcommands, then a subcommand's options (read from its --help)
+completion="$prefix/share/bash-completion/completions/kinergy"
+got=$(bash -c "source '$completion'; COMP_WORDS=('$prefix/bin/kinergy' dr); COMP_CWORD=1; _kinergy; echo \"\${COMPREPLY[*]}\"")
+[ "$got" = "draw" ] || fail "completing 'kinergy dr' gave '$got'"
+got=$(bash -c "source '$completion'; COMP_WORDS=('$prefix/bin/kinergy' simulate --ani); COMP_CWORD=2; _kinergy; echo \"\${COMPREPLY[*]}\"")
+[ "$got" = "--animate" ] || fail "completing 'kinergy simulate --ani' gave '$got'"
+got=$(bash -c "source '$completion'; COMP_WORDS=('$prefix/bin/kinergy' simulate x.yaml --method s); COMP_CWORD=4; _kinergy; echo \"\${COMPREPLY[*]}\"")
+[ "$got" = "symplectic" ] || fail "completing '--method s' gave '$got'"
+echo "test_install: installed, found by CMake and pkg-config, man page and completion work"
