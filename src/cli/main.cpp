@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "kinergy/batch/batch.hpp"
 #include "kinergy/common/error.hpp"
 #include "kinergy/draw/animation.hpp"
 #include "kinergy/draw/figure.hpp"
@@ -154,6 +155,12 @@ int main(int argc, char** argv) {
   double until = 0, tol = 1e-10, step = 0;
   std::string method = "dopri5", from, csv_out, plot_out;
   bool equations = false, check = false, no_native = false;
+  std::string batch_in = "-";
+  auto* batch = app.add_subcommand("batch", "many scenes in one process: JSON Lines of requests in (a file, or '-' for standard input), "
+                                            "JSON Lines of results out; a failing request is a result too, and never stops the batch");
+  batch->add_option("REQUESTS", batch_in, "JSON Lines file of requests ({\"scene\": FILE} or {\"yaml\": TEXT}, with id, set, "
+                                          "produce, digits; see docs/batch.md), '-' for standard input (the default)");
+
   auto* simulate = app.add_subcommand("simulate", "integrate the scene's motion in time from a state, with only the effects it lists");
   simulate->add_option("SCENE", scene, "scene file (YAML)")->required();
   simulate->add_option("--until", until, "end time in s (absolute, the start state's t is the origin)")
@@ -295,6 +302,25 @@ int main(int argc, char** argv) {
       else kinergy::draw::write(sheet, draw_out);
       return 0;
     });
+  }
+  if (*batch) {
+    // progress on stderr (a terminal's line rewritten), a summary at the end; exit 1 when a request failed
+    std::ifstream file;
+    if (batch_in != "-") {
+      file.open(batch_in);
+      if (!file) {
+        std::cerr << batch_in << ": cannot read the requests \u2014 check the file's name and permissions\n";
+        return 1;
+      }
+    }
+    std::istream& in = batch_in == "-" ? std::cin : file;
+    const bool tty = isatty(2);
+    auto sum = kinergy::batch::run(in, std::cout, [&](const kinergy::batch::Summary& s) {
+      if (tty) std::cerr << "\r" << s.requests << " requests, " << s.ok << " ok, " << s.failed << " failed" << std::flush;
+    });
+    if (tty) std::cerr << "\r";
+    std::cerr << "kinergy batch: " << sum.requests << " requests, " << sum.ok << " ok, " << sum.failed << " failed\n";
+    return sum.failed ? 1 : 0;
   }
   if (*simulate) {
     return guarded(scene, [&]() -> int {

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "kinergy/common/markup.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
 namespace kinergy::emit {
@@ -47,26 +48,7 @@ std::string text(const std::vector<verify::Check>& checks, const std::string& fi
   return os.str();
 }
 
-static std::string quote(const std::string& s) {
-  std::string o = "\"";
-  for (char c : s) {
-    switch (c) {
-      case '"': o += "\\\""; break;
-      case '\\': o += "\\\\"; break;
-      case '\n': o += "\\n"; break;
-      case '\t': o += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          o += buf;
-        } else {
-          o += c;
-        }
-    }
-  }
-  return o + "\"";
-}
+static std::string quote(const std::string& s) { return json_quote(s); }
 
 std::string json(const Solution& s, const Options& o, const std::vector<verify::Check>* checks) {
   std::ostringstream os;

@@ -1,0 +1,120 @@
+// kinergy batch (issue 16, part 3): JSON Lines of requests in one process. Expected values by hand:
+// the sliding rod's omega2 = sqrt(3 g sin(theta2) / l) (its scene's description), with
+// g = 9.81 m/s², theta2 = 30°; l = 1.2 m as written, 2 m when a request sets it.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <regex>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "../support/helpers.hpp"
+#include "kinergy/batch/batch.hpp"
+
+namespace {
+
+const std::string kRod = std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/sliding_rod.yaml";
+
+double omega(double l) { return std::sqrt(3 * 9.81 * std::sin(3.14159265358979323846 / 6) / l); }
+
+double value_of(const std::string& line) {
+  std::smatch m;
+  REQUIRE(std::regex_search(line, m, std::regex("\"name\": \"omega2\", .*?\"value\": \"([-0-9.e]+)\"")));
+  return std::stod(m[1]);
+}
+
+}  // namespace
+
+TEST_CASE("batch: each request's result on its line, parameters set per request, failures on their own lines", "[batch]") {
+  std::istringstream in("{\"scene\": \"" + kRod + "\", \"id\": 7}\n"
+                        "\n"
+                        "{\"scene\": \"" + kRod + "\", \"id\": \"long\", \"set\": {\"l\": \"2 m\"}}\n"
+                        "not json {\n"
+                        "{\"scene\": \"" + kRod + "\", \"set\": {\"zz\": 1}}\n"
+                        "{\"scene\": \"" + kRod + "\", \"set\": {\"l\": \"2 kg\"}}\n"
+                        "{\"scene\": \"" + kRod + "\", \"produce\": [\"verify\", \"derive\"], \"digits\": 25}\n");
+  std::ostringstream out;
+  std::size_t calls = 0;
+  auto sum = kinergy::batch::run(in, out, [&](const kinergy::batch::Summary&) { ++calls; });
+  CHECK(sum.requests == 6);  // the blank line is no request
+  CHECK(sum.ok == 3);
+  CHECK(sum.failed == 3);
+  CHECK(calls == 6);
+  std::vector<std::string> lines;
+  std::istringstream back(out.str());
+  for (std::string l; std::getline(back, l);) lines.push_back(l);
+  REQUIRE(lines.size() == 6);
+  // results in order, numbered by their input line, ids echoed (a number as a number)
+  CHECK(lines[0].rfind("{\"line\": 1, \"id\": 7, \"ok\": true", 0) == 0);
+  CHECK(std::fabs(value_of(lines[0]) - omega(1.2)) < 1e-12);
+  CHECK(lines[1].rfind("{\"line\": 3, \"id\": \"long\", \"ok\": true", 0) == 0);
+  CHECK(std::fabs(value_of(lines[1]) - omega(2.0)) < 1e-12);
+  // failures: what and how to fix, the batch going on
+  CHECK(lines[2] == "{\"line\": 4, \"id\": null, \"ok\": false, \"error\": {\"file\": \"<batch line 4>\", \"line\": 1, \"column\": 0, "
+                    "\"message\": \"the request is not a JSON object\", \"fix\": \"write one JSON object a line: {\\\"scene\\\": \\\"FILE.yaml\\\"}\"}}");
+  CHECK(lines[3].find("\"message\": \"the scene has no parameter \\\"zz\\\"\", \"fix\": \"set one of its parameters: m, l, g, theta2\"") !=
+        std::string::npos);
+  // a value of the wrong dimension: the scene's own error, where the parameter is used
+  CHECK(lines[4].find("\"ok\": false") != std::string::npos);
+  CHECK(lines[4].find("\"file\": \"" + kRod + "\", \"line\": 19") != std::string::npos);
+  CHECK(lines[4].find("is in kg but must be in m") != std::string::npos);
+  // verify and derive in one request, at 25 digits
+  CHECK(lines[5].find("\"verified\": true") != std::string::npos);
+  CHECK(lines[5].find("\"derive\": \"") != std::string::npos);
+  CHECK(std::fabs(value_of(lines[5]) - omega(1.2)) < 1e-14);
+}
+
+TEST_CASE("batch: every way a request can be wrong is an error line", "[batch][errors]") {
+  struct Case {
+    std::string request, message;
+  };
+  const std::vector<Case> cases = {
+      {"[1, 2]", "the request is not a JSON object"},
+      {"{\"scene\": \"a.yaml\", \"yaml\": \"x\"}", "a request names a scene file or gives a scene inline, one of the two"},
+      {"{\"id\": 3}", "a request names a scene file or gives a scene inline, one of the two"},
+      {"{\"scene\": \"" + kRod + "\", \"colour\": 1}", "unknown key \\\"colour\\\""},
+      {"{\"scene\": \"" + kRod + "\", \"produce\": \"solve\"}", "\\\"produce\\\" is not a list"},
+      {"{\"scene\": \"" + kRod + "\", \"produce\": [\"pdf\"]}", "cannot produce \\\"pdf\\\""},
+      {"{\"scene\": \"" + kRod + "\", \"digits\": 0}", "\\\"digits\\\" is not a whole number from 1 to 1000"},
+      {"{\"scene\": \"" + kRod + "\", \"digits\": \"many\"}", "\\\"digits\\\" is not a whole number from 1 to 1000"},
+      {"{\"scene\": \"" + kRod + "\", \"set\": [1]}", "\\\"set\\\" is not an object"},
+      {"{\"scene\": [1]}", "\\\"scene\\\" is not a string or a number"},
+      {"{\"scene\": \"" + kRod + "\", \"id\": [1]}", "\\\"id\\\" is not a string or a number"},
+      {"{\"scene\": \"/nonexistent/x.yaml\"}", "the scene file does not exist"},
+      {"{\"scene\": \"" + kRod + "\", \"unterminated", "the request is not JSON"},
+  };
+  for (auto& c : cases) {
+    INFO(c.request);
+    const std::string line = kinergy::batch::run_line(c.request, 5);
+    CHECK(line.rfind("{\"line\": 5, ", 0) == 0);
+    CHECK(line.find("\"ok\": false") != std::string::npos);
+    CHECK(line.find("\"message\": \"" + c.message) != std::string::npos);
+  }
+}
+
+TEST_CASE("kinergy batch: standard input or a file, a summary on stderr, exit 1 when a request failed", "[batch][cli]") {
+  const auto dir = std::filesystem::temp_directory_path() / "kinergy-batch-test";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream f(dir / "requests.jsonl");
+    f << "{\"scene\": \"derivations/energy/sliding_rod.yaml\"}\n{\"scene\": \"derivations/energy/bar_spring.yaml\"}\n";
+  }
+  int st = 0;
+  std::string out = kt::run_cli("batch " + (dir / "requests.jsonl").string(), st);
+  CHECK(st == 0);
+  CHECK(out.find("kinergy batch: 2 requests, 2 ok, 0 failed") != std::string::npos);
+  out = kt::run_cli("batch < " + (dir / "requests.jsonl").string(), st);
+  CHECK(st == 0);
+  CHECK(out.find("{\"line\": 2, \"id\": null, \"ok\": true") != std::string::npos);
+  out = kt::run_cli("batch " + (dir / "none.jsonl").string(), st);
+  CHECK(st == 1);
+  CHECK(out.find("cannot read the requests") != std::string::npos);
+  {
+    std::ofstream f(dir / "bad.jsonl");
+    f << "{\"scene\": \"derivations/energy/sliding_rod.yaml\"}\n{\"scene\": \"nope.yaml\"}\n";
+  }
+  out = kt::run_cli("batch " + (dir / "bad.jsonl").string(), st);
+  CHECK(st == 1);
+  CHECK(out.find("kinergy batch: 2 requests, 1 ok, 1 failed") != std::string::npos);
+}
