@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "kinergy/batch/batch.hpp"
+#include "kinergy/batch/sweep.hpp"
 #include "kinergy/common/error.hpp"
 #include "kinergy/draw/animation.hpp"
 #include "kinergy/draw/figure.hpp"
@@ -161,6 +162,16 @@ int main(int argc, char** argv) {
   batch->add_option("REQUESTS", batch_in, "JSON Lines file of requests ({\"scene\": FILE} or {\"yaml\": TEXT}, with id, set, "
                                           "produce, digits; see docs/batch.md), '-' for standard input (the default)");
 
+  std::vector<std::string> sweep_sets;
+  std::string sweep_csv, sweep_json, sweep_plot;
+  auto* sweep = app.add_subcommand("sweep", "solve a scene over a grid of parameter values: CSV, JSON, a plot");
+  sweep->add_option("SCENE", scene, "scene file (YAML)")->required();
+  sweep->add_option("--set", sweep_sets, "NAME=LO..HI:COUNT, COUNT values from LO to HI in the unit the scene writes NAME in "
+                                         "(repeat it for a grid; the last varies fastest)")->required();
+  sweep->add_option("--csv", sweep_csv, "write the grid and each result to FILE.csv ('-': standard output, the default without --json)");
+  sweep->add_option("--json", sweep_json, "write it as JSON to FILE ('-': standard output)");
+  sweep->add_option("--plot", sweep_plot, "draw each result against the first parameter into FILE.svg or FILE.png (gnuplot)");
+
   auto* simulate = app.add_subcommand("simulate", "integrate the scene's motion in time from a state, with only the effects it lists");
   simulate->add_option("SCENE", scene, "scene file (YAML)")->required();
   simulate->add_option("--until", until, "end time in s (absolute, the start state's t is the origin)")
@@ -300,6 +311,31 @@ int main(int argc, char** argv) {
       for (auto& why : left_out) std::cerr << scene << ": left out of the drawing: " << why << "\n";
       if (draw_out.empty()) std::cout << sheet.svg();
       else kinergy::draw::write(sheet, draw_out);
+      return 0;
+    });
+  }
+  if (*sweep) {
+    return guarded(scene, [&]() -> int {
+      const kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
+      std::vector<kinergy::batch::Range> ranges;
+      for (auto& t : sweep_sets) ranges.push_back(kinergy::batch::parse_range(t, def));
+      const auto s = kinergy::batch::sweep(def, ranges);
+      auto put = [&](const std::string& path, const std::string& text) {
+        if (path == "-") {
+          std::cout << text;
+          return;
+        }
+        std::ofstream out(path, std::ios::binary);
+        out << text;
+        if (!out) throw kinergy::InputError("cannot write '" + path + "'", "check the directory and its permissions");
+      };
+      if (sweep_csv.empty() && sweep_json.empty() && sweep_plot.empty()) sweep_csv = "-";
+      if (!sweep_csv.empty()) put(sweep_csv, kinergy::batch::csv(s));
+      if (!sweep_json.empty()) put(sweep_json, kinergy::batch::json(s));
+      if (!sweep_plot.empty()) kinergy::batch::plot(s, def.title, sweep_plot);
+      std::size_t failed = 0;
+      for (auto& row : s.rows) failed += row.error.empty() ? 0 : 1;
+      std::cerr << "kinergy sweep: " << s.rows.size() << " points, " << failed << " without a solution\n";
       return 0;
     });
   }
