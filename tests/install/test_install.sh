@@ -47,4 +47,11 @@ got=$(bash -c "source '$completion'; COMP_WORDS=('$prefix/bin/kinergy' simulate 
 [ "$got" = "--animate" ] || fail "completing 'kinergy simulate --ani' gave '$got'"
 got=$(bash -c "source '$completion'; COMP_WORDS=('$prefix/bin/kinergy' simulate x.yaml --method s); COMP_CWORD=4; _kinergy; echo \"\${COMPREPLY[*]}\"")
 [ "$got" = "symplectic" ] || fail "completing '--method s' gave '$got'"
-echo "test_install: installed, found by CMake and pkg-config, man page and completion work"
+# the Python module, where it was built: importable from the prefix
+module=$(find "$prefix" -name 'kinergy.cpython-*.so' | head -1)
+if [ -e "$build/python" ]; then
+  [ -n "$module" ] || fail "the Python module is not installed"
+  got=$(PYTHONPATH="$(dirname "$module")" /usr/bin/python3 -c "import kinergy; print(float(kinergy.load('$src/derivations/energy/sliding_rod.yaml').solve()['omega2']))")
+  grep -E '^3\.50' <<<"$got" >/dev/null || fail "the installed Python module printed: $got"
+fi
+echo "test_install: installed, found by CMake and pkg-config, man page, completion and the Python module work"

@@ -1,0 +1,259 @@
+// The Python module `kinergy` (pybind11): a thin window onto the library, as the CLI is.
+//   scene = kinergy.load("derivations/energy/sliding_rod.yaml")   (or kinergy.loads(yaml_text))
+//   scene.set("l", "2 m"); solution = scene.solve()
+//   solution.results[0].closed, .latex, .value(digits=30), float(...), .sympy()
+//   solution.derive("text" | "latex" | "html"); scene.draw(state=None) -> SVG
+//   solution.simulate(until, samples=1000) -> dict of NumPy arrays
+// A bad scene raises kinergy.SceneError with file, line, column, message and fix.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <memory>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/draw/figure.hpp"
+#include "kinergy/emit/derive.hpp"
+#include "kinergy/emit/emit.hpp"
+#include "kinergy/emit/latex.hpp"
+#include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/problem.hpp"
+#include "kinergy/scene/scene.hpp"
+#include "kinergy/simulate/check.hpp"
+#include "kinergy/simulate/simulate.hpp"
+#include "kinergy/verify/verify.hpp"
+
+namespace py = pybind11;
+using namespace kinergy;
+
+namespace {
+
+struct PySolution;
+
+// A scene as written, its parameters changeable before it is solved.
+struct PyScene {
+  scene::SceneDef def;
+
+  std::map<std::string, std::string> parameters() const {
+    std::map<std::string, std::string> out;
+    for (auto& p : def.parameters) out[p.name] = p.value.s;
+    return out;
+  }
+  // a parameter's value as a scene writes it ("2 kg", "30 deg", 9.81)
+  void set(const std::string& name, const py::object& value) {
+    std::string text = py::isinstance<py::str>(value) ? value.cast<std::string>() : py::str(value).cast<std::string>();
+    std::string names;
+    for (auto& p : def.parameters) {
+      names += (names.empty() ? "" : ", ") + p.name;
+      if (p.name == name) {
+        p.value.s = text;
+        return;
+      }
+    }
+    throw InputError("the scene has no parameter '" + name + "'", "set one of its parameters: " + names);
+  }
+  std::string draw(const py::object& state) const {
+    model::Model m = model::Model::build(def);
+    int st = 0;
+    if (!state.is_none()) {
+      st = m.state_index(py::str(state).cast<std::string>());
+      if (st < 0) throw InputError("there is no state '" + py::str(state).cast<std::string>() + "'", "name a state of the scene's 'states'");
+    }
+    if (def.analyses.empty()) return draw::scene_at(m, {}, m.parameter_values(), st).svg();
+    const Solution s = solve_scene(def);
+    return draw::scene_at(s.model, s.branch.sol, parameter_values(s), st).svg();
+  }
+};
+
+struct PyResult {
+  std::shared_ptr<const Solution> s;
+  std::size_t i;
+  const Result& r() const { return s->results[i]; }
+  std::string value(int digits) const {
+    if (!r().si) throw InputError("'" + r().name + "' has no value: a parameter in it has none", "give every parameter a value");
+    auto v = r().evaluate(s->model.numeric_environment(), digits, digits <= 15);
+    if (!v) throw InputError("'" + r().name + "' could not be evaluated", "ask for fewer digits");
+    return numerics::format(v->v, digits);
+  }
+  double to_float() const { return std::stod(value(17)); }
+  // the closed form as SymPy builds it from its text, every name a symbol of its own
+  py::object sympy() const {
+    py::module_ sp = py::module_::import("sympy");
+    py::dict names;
+    for (auto it = r().closed.preorder_begin(); it != r().closed.preorder_end(); ++it)
+      if (GiNaC::is_a<GiNaC::symbol>(*it)) {
+        const std::string n = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
+        names[py::str(n)] = sp.attr("Symbol")(n);
+      }
+    return sp.attr("parse_expr")(emit::plain(r().closed), py::arg("local_dict") = names);
+  }
+};
+
+struct PySolution {
+  std::shared_ptr<const Solution> s;
+  scene::SceneDef def;
+
+  std::vector<PyResult> results() const {
+    std::vector<PyResult> out;
+    for (std::size_t i = 0; i < s->results.size(); ++i) out.push_back({s, i});
+    return out;
+  }
+  std::string derive(const std::string& format) const {
+    const emit::Derivation d = emit::derive(*s, def);
+    if (format == "text") return emit::text(d);
+    if (format == "latex") return emit::latex(d);
+    if (format == "html") return emit::html(d, {});
+    throw InputError("there is no derivation format '" + format + "'", "ask for 'text', 'latex' or 'html'");
+  }
+  bool verify() const {
+    for (auto& c : verify::verify(*s))
+      if (!c.ok()) return false;
+    return true;
+  }
+  // t, q, q̇, T, V at regular times (as `kinergy simulate --samples`), as NumPy arrays
+  py::dict simulate(double until, int samples, const py::object& start) const {
+    namespace sim = simulate;
+    const model::Model& m = s->model;
+    int from = 0;
+    if (!start.is_none()) {
+      from = m.state_index(py::str(start).cast<std::string>());
+      if (from < 0) throw InputError("there is no state '" + py::str(start).cast<std::string>() + "'", "name a state of the scene's 'states'");
+    }
+    sim::State s0 = sim::state_values(*s, from);
+    for (std::size_t i = 0; i < m.coords.size(); ++i)
+      if (std::isnan(s0.q[i]) || std::isnan(s0.qd[i]))
+        throw InputError("state '" + m.states[static_cast<std::size_t>(from)].name + "' does not fix " + m.coords[i].name,
+                         "start from another state");
+    if (!(until > s0.t) || samples < 1) throw InputError("the run must end after it starts, with one sample or more", "give until > the start's time");
+    sim::Options o;
+    o.native = false;
+    o.sample_dt = (until - s0.t) / samples;
+    bool impulses = m.analyses.empty();
+    for (auto& a : m.analyses) impulses = impulses || (a.instant && a.from == from);
+    const sim::Run r = sim::run_following(m, s->branch.sol, parameter_values(*s), from, s0, until, o, impulses);
+    py::module_ np = py::module_::import("numpy");
+    std::vector<double> t, T, V;
+    std::vector<std::vector<double>> q, qd;
+    for (auto& x : r.samples) {
+      t.push_back(x.t);
+      q.push_back(x.q);
+      qd.push_back(x.qd);
+      T.push_back(x.T);
+      V.push_back(x.V);
+    }
+    std::vector<std::string> coords;
+    for (auto& c : m.coords) coords.push_back(c.name);
+    py::dict out;
+    out["t"] = np.attr("array")(t);
+    out["q"] = np.attr("array")(q);
+    out["q_dot"] = np.attr("array")(qd);
+    out["T"] = np.attr("array")(T);
+    out["V"] = np.attr("array")(V);
+    out["coordinates"] = coords;
+    std::vector<double> impacts;
+    for (auto& im : r.impacts) impacts.push_back(im.t);
+    out["impacts"] = np.attr("array")(impacts);
+    return out;
+  }
+  // for Jupyter: the results as LaTeX and as an HTML table
+  std::string repr_latex() const {
+    std::string o = "$\\begin{aligned}";
+    for (std::size_t i = 0; i < s->results.size(); ++i) {
+      const Result& r = s->results[i];
+      o += (i ? "\\\\ " : "") + emit::tex_name(r.name) + " &= " + emit::latex(r.closed);
+      if (r.si) o += " = " + PyResult{s, i}.value(6) + (r.unit.empty() ? "" : "\\ \\mathrm{" + r.unit + "}");
+    }
+    return o + "\\end{aligned}$";
+  }
+  std::string repr_html() const {
+    std::string o = "<table><tr><th>result</th><th>closed form</th><th>value</th><th>unit</th></tr>";
+    auto esc = [](const std::string& x) {
+      std::string e;
+      for (char c : x) e += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+      return e;
+    };
+    for (std::size_t i = 0; i < s->results.size(); ++i) {
+      const Result& r = s->results[i];
+      o += "<tr><td>" + esc(r.name) + "</td><td><code>" + esc(emit::plain(r.closed)) + "</code></td><td>" +
+           (r.si ? PyResult{s, i}.value(15) : std::string()) + "</td><td>" + esc(r.unit) + "</td></tr>";
+    }
+    return o + "</table>";
+  }
+};
+
+PyScene load(const std::string& path) { return {scene::load_file(path)}; }
+PyScene loads(const std::string& text, const std::string& name) { return {scene::load_string(text, name)}; }
+PySolution solve_scene_def(const PyScene& sc) { return {std::make_shared<const Solution>(solve_scene(sc.def)), sc.def}; }
+
+}  // namespace
+
+PYBIND11_MODULE(kinergy, m) {
+  m.doc() = "kinergy: plane rigid-body motion by energy and momentum, in closed form";
+  m.attr("__version__") = KINERGY_VERSION;
+  // every bad input: kinergy.SceneError (a ValueError) with file, line, column, message and fix
+  static py::object error_type = py::reinterpret_borrow<py::object>(
+      PyErr_NewExceptionWithDoc("kinergy.SceneError", "A bad scene or request: file, line, column, message, fix.", PyExc_ValueError, nullptr));
+  m.attr("SceneError") = error_type;
+  py::register_exception_translator([](std::exception_ptr p) {
+    auto raise = [](const std::string& what, const std::string& file, int line, int col, const std::string& message, const std::string& fix) {
+      py::object e = error_type(what);
+      e.attr("file") = file;
+      e.attr("line") = line;
+      e.attr("column") = col;
+      e.attr("message") = message;
+      e.attr("fix") = fix;
+      PyErr_SetObject(error_type.ptr(), e.ptr());
+    };
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const SceneError& e) {
+      raise(e.what(), e.pos().file, e.pos().line, e.pos().col, e.problem(), e.fix());
+    } catch (const InputError& e) {
+      raise(std::string(e.what()) + " \u2014 " + e.fix(), "", 0, 0, e.what(), e.fix());
+    }
+  });
+
+  py::class_<PyResult>(m, "Result", "One result of a solved scene")
+      .def_property_readonly("name", [](const PyResult& r) { return r.r().name; })
+      .def_property_readonly("unit", [](const PyResult& r) { return r.r().unit; })
+      .def_property_readonly("closed", [](const PyResult& r) { return emit::plain(r.r().closed); }, "the closed form as text")
+      .def_property_readonly("latex", [](const PyResult& r) { return emit::latex(r.r().closed); }, "the closed form in LaTeX")
+      .def_property_readonly("closed_form", [](const PyResult& r) { return r.r().closed_form; }, "False when a numeric root was needed")
+      .def("value", &PyResult::value, py::arg("digits") = 15, "its value in its unit to `digits` significant digits (text)")
+      .def("__float__", &PyResult::to_float)
+      .def("sympy", &PyResult::sympy, "the closed form as a SymPy expression (sympy must be installed)")
+      .def("__repr__", [](const PyResult& r) { return "<kinergy.Result " + r.r().name + " = " + emit::plain(r.r().closed) + ">"; });
+
+  py::class_<PySolution>(m, "Solution", "A solved scene")
+      .def_property_readonly("results", &PySolution::results)
+      .def("__getitem__",
+           [](const PySolution& s, const std::string& name) {
+             for (auto& r : s.results())
+               if (r.r().name == name) return r;
+             throw py::key_error(name);
+           })
+      .def("derive", &PySolution::derive, py::arg("format") = "text", "the worked solution: 'text', 'latex' or 'html'")
+      .def("verify", &PySolution::verify, "True when every claim of the scene's expect holds")
+      .def("simulate", &PySolution::simulate, py::arg("until"), py::arg("samples") = 1000, py::arg("start") = py::none(),
+           "the motion from a state (the first by default) until a time, at regular samples: t, q, q_dot, T, V (NumPy)")
+      .def("_repr_latex_", &PySolution::repr_latex)
+      .def("_repr_html_", &PySolution::repr_html);
+
+  py::class_<PyScene>(m, "Scene", "A scene as written: change its parameters, solve it, draw it")
+      .def_property_readonly("title", [](const PyScene& s) { return s.def.title; })
+      .def_property_readonly("parameters", &PyScene::parameters, "name -> value as written")
+      .def("set", &PyScene::set, py::arg("name"), py::arg("value"), "give a parameter a value as a scene writes it ('2 kg')")
+      .def("solve", &solve_scene_def, "solve it: each result in closed form and its value")
+      .def("draw", &PyScene::draw, py::arg("state") = py::none(), "the scene at a state (the first by default) as SVG")
+      .def("_repr_svg_", [](const PyScene& s) -> py::object {
+        try {
+          return py::str(s.draw(py::none()));
+        } catch (const std::exception&) {
+          return py::none();
+        }
+      });
+
+  m.def("load", &load, py::arg("path"), "a scene from a YAML file");
+  m.def("loads", &loads, py::arg("text"), py::arg("name") = "<string>", "a scene from YAML text");
+}

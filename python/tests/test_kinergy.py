@@ -1,0 +1,108 @@
+"""The Python module (issue 16, part 2): load, set, solve, values, forms, derivations, drawings,
+simulations and errors, from Python. Expected values by hand: the sliding rod's
+omega2 = sqrt(3 g sin(theta2) / l) (its description), g = 9.81 m/s^2, theta2 = 30 deg, l = 1.2 m."""
+import math
+import os
+
+import pytest
+
+import kinergy
+
+ROOT = os.environ.get("KINERGY_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+ROD = os.path.join(ROOT, "derivations", "energy", "sliding_rod.yaml")
+BALL = os.path.join(ROOT, "derivations", "impact", "bouncing_ball.yaml")
+
+
+def omega(l, deg=30.0):
+    return math.sqrt(3 * 9.81 * math.sin(math.radians(deg)) / l)
+
+
+def test_load_solve_and_values():
+    scene = kinergy.load(ROD)
+    assert scene.title == "Rod sliding on a horizontal and a vertical track"
+    assert scene.parameters == {"m": "5 kg", "l": "1.2 m", "g": "9.81 m/s^2", "theta2": "30 deg"}
+    solution = scene.solve()
+    r = solution["omega2"]
+    assert r.name == "omega2" and r.unit == "rad/s" and r.closed_form
+    assert r.closed == "sqrt(3*g*sin(theta2)/l)"
+    assert r.latex == "\\sqrt{\\frac{3 g \\sin \\theta_{2}}{l}}"
+    assert abs(float(r) - omega(1.2)) < 1e-12
+    # more digits, each guaranteed: the same number, longer
+    assert r.value(30).startswith(r.value(12)[:-1])
+    assert len(r.value(30).replace(".", "")) >= 30
+    assert solution.verify()
+
+
+def test_parameters_set_as_a_scene_writes_them():
+    scene = kinergy.load(ROD)
+    scene.set("l", "2 m")
+    assert abs(float(scene.solve()["omega2"]) - omega(2.0)) < 1e-12
+    scene.set("theta2", "90 deg")
+    assert abs(float(scene.solve()["omega2"]) - omega(2.0, 90.0)) < 1e-12
+
+
+def test_a_scene_from_text():
+    text = open(ROD).read().replace("l: 1.2 m", "l: 3 m")
+    assert abs(float(kinergy.loads(text).solve().results[0]) - omega(3.0)) < 1e-12
+
+
+def test_sympy_form():
+    sympy = pytest.importorskip("sympy")
+    form = kinergy.load(ROD).solve()["omega2"].sympy()
+    g, l, t = sympy.symbols("g l theta2")
+    assert sympy.simplify(form - sympy.sqrt(3 * g * sympy.sin(t) / l)) == 0
+
+
+def test_derivation_drawing_and_notebook_views():
+    scene = kinergy.load(ROD)
+    solution = scene.solve()
+    assert "Results" in solution.derive("text")
+    assert solution.derive("latex").startswith("% Worked solution written by kinergy")
+    assert "katex" in solution.derive("html")
+    svg = scene.draw()
+    assert svg.startswith("<svg") and 'data-name="rod.G"' in svg
+    assert scene.draw(state="2") != svg
+    assert scene._repr_svg_().startswith("<svg")
+    assert "\\begin{aligned}" in solution._repr_latex_()
+    assert "<table>" in solution._repr_html_()
+    with pytest.raises(ValueError):
+        solution.derive("pdf")
+
+
+def test_simulation_as_arrays():
+    numpy = pytest.importorskip("numpy")
+    run = kinergy.load(BALL).solve().simulate(until=0.6, samples=60)
+    t, y = run["t"], run["q"][:, 0]
+    assert run["coordinates"] == ["y"]
+    assert isinstance(t, numpy.ndarray) and y.shape == t.shape
+    # the fall from rest at y0 = h + r = 1.23 m until the floor at t1 = sqrt(2 h / g)
+    t1 = math.sqrt(2 * 1.2 / 9.81)
+    fall = t <= t1
+    assert numpy.max(numpy.abs(y[fall] - (1.23 - 9.81 * t[fall] ** 2 / 2))) < 1e-8
+    assert abs(run["impacts"][0] - t1) < 1e-9
+
+
+def test_errors_carry_their_place_and_fix():
+    with pytest.raises(kinergy.SceneError) as e:
+        kinergy.loads("title: x\nbodies: 3\n", "bad.yaml")
+    assert e.value.file == "bad.yaml" and e.value.line == 2 and e.value.column > 0
+    assert e.value.message and e.value.fix
+    assert isinstance(e.value, ValueError)
+    with pytest.raises(kinergy.SceneError) as e:
+        kinergy.load("/nonexistent/scene.yaml")
+    assert e.value.message == "the scene file does not exist"
+    scene = kinergy.load(ROD)
+    with pytest.raises(kinergy.SceneError) as e:
+        scene.set("zz", 1)
+    assert e.value.message == "the scene has no parameter 'zz'"
+    assert e.value.fix == "set one of its parameters: m, l, g, theta2"
+    scene.set("l", "2 kg")
+    with pytest.raises(kinergy.SceneError) as e:
+        scene.solve()
+    assert "is in kg but must be in m" in e.value.message
+    with pytest.raises(KeyError):
+        kinergy.load(ROD).solve()["nothing"]
+
+
+def test_version():
+    assert kinergy.__version__ == "0.1.0"
