@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/common/markup.hpp"
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/emit/emit.hpp"
@@ -168,11 +169,7 @@ struct PySolution {
   }
   std::string repr_html() const {
     std::string o = "<table><tr><th>result</th><th>closed form</th><th>value</th><th>unit</th></tr>";
-    auto esc = [](const std::string& x) {
-      std::string e;
-      for (char c : x) e += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-      return e;
-    };
+    auto esc = [](const std::string& x) { return xml_escape(x); };
     for (std::size_t i = 0; i < s->results.size(); ++i) {
       const Result& r = s->results[i];
       o += "<tr><td>" + esc(r.name) + "</td><td><code>" + esc(emit::plain(r.closed)) + "</code></td><td>" +
