@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Batch throughput (issue 16): every derivation solved REPEATS times (default 3) in one
+# `kinergy batch` process, against one `kinergy solve --json` process per scene, side by side in
+# one run; and the same bank on a Dask LocalCluster of 1 and of 2 worker processes. Writes the
+# table between the bench markers of docs/batch.md.
+#   bash tests/bench/run_batch.sh [REPEATS]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+repeats="${1:-3}"
+cmake -S . -B build >/dev/null
+cmake --build build -j"$(nproc)" >/dev/null
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+for r in $(seq "$repeats"); do
+  for f in derivations/*/*.yaml; do echo "{\"scene\": \"$f\"}"; done
+done > "$tmp/requests.jsonl"
+n=$(wc -l < "$tmp/requests.jsonl")
+./build/kinergy batch "$tmp/requests.jsonl" > /dev/null 2>&1  # warm the evaluator cache
+t0=$(date +%s.%N)
+./build/kinergy batch "$tmp/requests.jsonl" > /dev/null 2>&1
+t1=$(date +%s.%N)
+for r in $(seq "$repeats"); do
+  for f in derivations/*/*.yaml; do ./build/kinergy solve --json "$f" > /dev/null; done
+done
+t2=$(date +%s.%N)
+batch=$(echo "$t1 - $t0" | bc -l)
+procs=$(echo "$t2 - $t1" | bc -l)
+rate=$(echo "$n / $batch" | bc -l)
+read -r d1 d2 tasks < <(PYTHONPATH="$PWD/build/python" /usr/bin/python3 tests/bench/batch_scaling.py "$PWD" "$repeats" 2>/dev/null)
+met=$(echo "$rate >= 100" | bc -l)
+table=$(cat <<TABLE
+<!-- bench:batch -->
+Measured $(date -u +%Y-%m-%d) on $(nproc) cores ($(uname -m)), by \`bash tests/bench/run_batch.sh $repeats\`:
+
+| what | scenes | seconds | scenes a second | target |
+| --- | --- | --- | --- | --- |
+| one \`kinergy batch\` process | $n | $(printf %.2f "$batch") | $(printf %.1f "$rate") | ≥ 100 a core: $( [ "$met" = 1 ] && echo met || echo "**not met**") |
+| one \`kinergy solve --json\` process a scene | $n | $(printf %.2f "$procs") | $(printf %.1f "$(echo "$n / $procs" | bc -l)") | — |
+| Dask LocalCluster, 1 worker process | $tasks | $(printf %.2f "$d1") | $(printf %.1f "$(echo "$tasks / $d1" | bc -l)") | — |
+| Dask LocalCluster, 2 worker processes | $tasks | $(printf %.2f "$d2") | $(printf %.1f "$(echo "$tasks / $d2" | bc -l)") | scaling 1 → 2: $(printf %.2f "$(echo "$d1 / $d2" | bc -l)")× |
+<!-- /bench:batch -->
+TABLE
+)
+python3 - "$table" <<'PY'
+import re, sys
+p = "docs/batch.md"
+s = open(p).read()
+table = sys.argv[1]
+if "<!-- bench:batch -->" in s:
+    s = re.sub(r"<!-- bench:batch -->.*?<!-- /bench:batch -->", lambda m: table, s, flags=re.S)
+else:
+    s = s.replace("## Not done yet", "## Throughput (benchmark)\n\n" + table + "\n\n## Not done yet")
+open(p, "w").write(s)
+PY
+echo "$table"
