@@ -130,9 +130,7 @@ struct PySolution {
     sim::Options o;
     o.native = false;
     o.sample_dt = (until - s0.t) / samples;
-    bool impulses = m.analyses.empty();
-    for (auto& a : m.analyses) impulses = impulses || (a.instant && a.from == from);
-    const sim::Run r = sim::run_following(m, s->branch.sol, parameter_values(*s), from, s0, until, o, impulses);
+    const sim::Run r = sim::run_following(m, s->branch.sol, parameter_values(*s), from, s0, until, o, sim::impulses_at(m, from));
     py::module_ np = py::module_::import("numpy");
     std::vector<double> t, T, V;
     std::vector<std::vector<double>> q, qd;

@@ -434,10 +434,7 @@ int main(int argc, char** argv) {
         };
       // what --csv and --plot draw: regular samples (dense output), or the accepted steps
       if (!csv_out.empty() || !plot_out.empty() || !animate_out.empty()) o.sample_dt = sample_dt > 0 ? sample_dt : samples > 0 ? (until - s0.t) / samples : 0;
-      // a given impulse acts at the state an impact analysis starts from (or, without
-      // analyses, at the start): not again from a state after it
-      bool impulses = m.analyses.empty();
-      for (auto& a : m.analyses) impulses = impulses || (a.instant && a.from == start);
+      const bool impulses = sim::impulses_at(m, start);
       auto c0 = std::chrono::steady_clock::now();
       // effects switched on or off at states are followed: the run switches them where it reaches those states
       sim::Run r = sim::run_following(m, sol ? sol->branch.sol : GiNaC::exmap{}, sol ? sim::simulation_values(*sol) : m.parameter_values(),

@@ -224,7 +224,6 @@ std::string gnuplot_script(const Motion& motion, const Drawn& d, const std::stri
     << "set output '" << out << "'\n"
     << "unset border\nunset tics\nunset key\nset margins 0,0,0,0\n"
     << "set xrange [" << n(x0) << ":" << n(x1) << "]\nset yrange [" << n(y0) << ":" << n(y1) << "]\n";
-  const Ink inks[] = {Ink::Body, Ink::Thin, Ink::Support, Ink::Force, Ink::Spring, Ink::Track, Ink::Hidden, Ink::Momentum, Ink::Dimension, Ink::Sense};
   for (std::size_t i : pick) {
     const Figure& f = d.figs[i];
     o << "unset label\n";
@@ -240,7 +239,7 @@ std::string gnuplot_script(const Motion& motion, const Drawn& d, const std::stri
     }
     // the strokes of each colour as one series of polylines (a blank line between them)
     std::vector<std::string> series, data;
-    for (Ink ink : inks) {
+    for (Ink ink : kInks) {
       std::ostringstream pts;
       for (auto& s : f.shapes()) {
         if (s.ink != ink || s.kind == Figure::Shape::Mark) continue;

@@ -404,20 +404,8 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
     return os.str();
   };
   auto pt = [&](double X, double Y) { return "(" + c(k * X) + "," + c(k * (L.height - Y)) + ")"; };
-  auto colour = [](Ink i) {
-    switch (i) {
-      case Ink::Body: case Ink::Thin: return "kBody";
-      case Ink::Support: return "kSupport";
-      case Ink::Force: return "kForce";
-      case Ink::Spring: return "kSpring";
-      case Ink::Track: return "kTrack";
-      case Ink::Hidden: return "kHidden";
-      case Ink::Momentum: return "kMomentum";
-      case Ink::Dimension: return "kTrack";
-      case Ink::Sense: return "kSense";
-    }
-    return "black";
-  };
+  // each pen's colour as a TikZ colour named by its value ("k1f3b73"), defined once from pen()
+  auto colour = [](Ink i) { return "k" + std::string(pen(i).colour + 1); };
   auto style = [&](Ink ink, bool filled) {
     Pen p = pen(ink);
     std::string s = "draw=" + std::string(colour(ink)) + ",line width=" + c(k * p.width) + "cm,line cap=round,line join=round";
@@ -429,9 +417,15 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
   const std::string font = font_pt < 7.5 ? "\\scriptsize" : font_pt < 9 ? "\\footnotesize" : "\\small";
   std::ostringstream o;
   o << "\\begin{tikzpicture}\n"
-    << "\\definecolor{kBody}{HTML}{1F3B73}\\definecolor{kSupport}{HTML}{333333}\\definecolor{kForce}{HTML}{B8231F}"
-    << "\\definecolor{kSpring}{HTML}{2A7D2E}\\definecolor{kTrack}{HTML}{777777}\\definecolor{kHidden}{HTML}{999999}"
-    << "\\definecolor{kMomentum}{HTML}{6A1B9A}\\definecolor{kSense}{HTML}{0B7A75}\n"
+    ;
+  std::vector<std::string> defined;
+  for (Ink ink : kInks) {
+    const std::string name = colour(ink);
+    if (std::find(defined.begin(), defined.end(), name) != defined.end()) continue;
+    defined.push_back(name);
+    o << "\\definecolor{" << name << "}{HTML}{" << (pen(ink).colour + 1) << "}";
+  }
+  o << "\n"
     << "\\path[use as bounding box] (0,0) rectangle " << pt(L.width, 0) << ";\n";
   for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
     const auto& P = L.places[pi];
@@ -471,7 +465,7 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
             << "cm);\n";
           break;
         case Figure::Shape::Mark:
-          o << "\\filldraw[draw=" << colour(s.ink) << ",fill=" << (s.filled ? "kSupport" : "white") << ",line width=" << c(k * 1.2)
+          o << "\\filldraw[draw=" << colour(s.ink) << ",fill=" << (s.filled ? colour(Ink::Support) : std::string("white")) << ",line width=" << c(k * 1.2)
             << "cm] " << pt(X(s.pts[0].first), Y(s.pts[0].second)) << " circle (" << c(k * 3.2) << "cm);\n";
           break;
       }

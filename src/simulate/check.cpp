@@ -256,6 +256,12 @@ draw::Motion motion_of(const Run& r, const std::string& title) {
   return mo;
 }
 
+bool impulses_at(const model::Model& m, int start) {
+  bool at = m.analyses.empty();
+  for (auto& a : m.analyses) at = at || (a.instant && a.from == start);
+  return at;
+}
+
 std::vector<draw::Motion> motions(const Solution& s, int samples) {
   std::vector<draw::Motion> out;
   const model::Model& m = s.model;
@@ -291,12 +297,12 @@ std::vector<draw::Motion> motions(const Solution& s, int samples) {
       leg.stop.impulses = true;
       leg.target = "t = " + num(leg.stop.until) + " s, after the impact";
     }
-    // a first run finds where the leg ends; the second samples it at regular times
+    // a leg that ends at a time is sampled over it at once; one that ends where a value is
+    // reached is run a first time to find where, then sampled at regular times
     Options o;
     o.native = false;  // the tape: no compiler run for a page
     o.record = false;
-    const LegCheck first = check_leg(s, leg, o, 1);
-    const double span = first.run.end.t - leg.start.t;
+    const double span = leg.stop.when ? check_leg(s, leg, o, 1).run.end.t - leg.start.t : leg.stop.until - leg.start.t;
     if (!(span > 0) || !std::isfinite(span)) continue;
     o.record = true;
     o.sample_dt = span / std::max(samples, 1);

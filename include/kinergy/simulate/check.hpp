@@ -52,6 +52,10 @@ draw::Motion motion_of(const Run& r, const std::string& title);
 /// solution. Analyses without duration (impacts) and legs that cannot run are left out.
 std::vector<draw::Motion> motions(const Solution& s, int samples);
 
+/// Does a run from state `start` begin with the scene's given impulses? They act at the state an
+/// impact analysis starts from (or, without analyses, at the start), not again from a later state.
+bool impulses_at(const model::Model& m, int start);
+
 /// A run from state `start` (at s0) to time `until` that follows the effects switched on and off
 /// at states (`on: S`, `off: S`): it runs with the effects acting after the start state until the
 /// next state where one switches is reached — found as a check's leg finds its end (the state's
