@@ -14,6 +14,7 @@
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/roots.hpp"
+#include "kinergy/numeric/ball.hpp"
 #include "kinergy/numeric/evaluator.hpp"
 
 namespace kinergy {
@@ -152,10 +153,24 @@ std::string Value::note() const {
   switch (how) {
     case How::Exact: return "exact";
     case How::Double: return "double, |error| <= " + numerics::format(numeric(bound), 2);
-    case How::Precise: return "working precision " + std::to_string(working) + " digits";
-    case How::Zero: return "zero: |value| < " + numerics::format(numeric(bound), 2);
+    case How::Precise:
+      if (proven) return "proven: ball radius " + numerics::format(numerics::round_up2((hi - lo) / 2), 2) + ", " + std::to_string(working) + " digits";
+      return "not proven: two working precisions agree, " + std::to_string(working) + " digits";
+    case How::Zero:
+      if (proven) return "sign not fixed: |value| <= " + numerics::format(numerics::round_up2(std::max(abs(lo), abs(hi))), 2) + " (proven)";
+      return "zero: |value| < " + numerics::format(numeric(bound), 2);
   }
   return "";
+}
+
+std::pair<std::string, std::string> Value::ball(int digits) const {
+  if (!proven) return {numerics::format(v, digits), ""};
+  // mid printed, then a radius that covers [lo, hi] around the printed mid (an exact value: the
+  // point itself, and the radius covers only its rounding)
+  const numeric mid = how == How::Exact ? v : (lo + hi) / 2;
+  const std::string m = numerics::format(mid, digits + 10);
+  const numeric printed = numerics::round_sig(mid, digits + 10);
+  return {m, numerics::format(numerics::round_up2((hi - lo) / 2 + abs(mid - printed)), 2)};
 }
 
 std::optional<numeric> Result::value(const exmap& env, int digits) const {
@@ -178,7 +193,7 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
       numeric lo = numerics::round_sig(v - b, digits);
       numeric hi = numerics::round_sig(v + b, digits);
       if (f->bound == 0 || lo == hi)
-        return Value{v, Value::How::Double, 0, f->bound};
+        return Value{v, Value::How::Double, 0, f->bound, false, {}, {}};
     }
   }
   std::optional<numerics::Precise> d;
@@ -188,9 +203,9 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
     throw SceneError(pos, "'" + name + "' cannot be evaluated: " + e.what(), "check the sizes of the angles in it");
   }
   if (!d) return std::nullopt;
-  if (d->exact) return Value{d->value, Value::How::Exact, 0, 0};
-  if (d->zero_bound) return Value{0, Value::How::Zero, d->working, d->bound};
-  return Value{d->value, Value::How::Precise, d->working, 0};
+  if (d->exact) return Value{d->value, Value::How::Exact, 0, 0, true, d->value, d->value};
+  if (d->zero_bound) return Value{0, Value::How::Zero, d->working, d->bound, d->proven, d->lo, d->hi};
+  return Value{d->value, Value::How::Precise, d->working, 0, d->proven, d->lo, d->hi};
 }
 
 namespace {

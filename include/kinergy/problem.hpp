@@ -20,7 +20,14 @@ struct Value {
   enum class How { Exact, Double, Precise, Zero } how = How::Exact;
   long working = 0;       ///< Precise: the working precision (decimal digits) that settled the digits
   double bound = 0;       ///< Double: |error| bound of the double; Zero: |value| bound
-  std::string note() const;  ///< "exact", "double, |error| ≤ 4.4e-16", "working precision 120 digits", …
+  /// Precise, Zero: proven by ball arithmetic; the exact value lies in [lo, hi]. Not proven: two
+  /// working precisions of CLN agreed (a form with a number found numerically in it).
+  bool proven = false;
+  GiNaC::numeric lo, hi;
+  std::string note() const;  ///< "exact", "double, |error| ≤ 4.4e-16", "proven: ball radius 2.1e-52", …
+  /// The ball as the JSON prints it: a midpoint of digits + 10 significant digits, and a radius
+  /// of two digits rounded up that covers the ball and the midpoint's rounding (empty when not proven).
+  std::pair<std::string, std::string> ball(int digits) const;
 };
 
 /// A named result of a scene.

@@ -61,7 +61,13 @@ std::string json(const Solution& s, const Options& o, const std::vector<verify::
        << (r.closed_form ? quote(plain(r.closed)) : std::string("null"))
        << ", \"value\": " << (v.empty() ? std::string("null") : quote(v)) << ", \"unit\": " << quote(r.unit)
        << ", \"dimension\": " << quote(r.dim.str())
-       << ", \"evaluation\": " << (val ? quote(val->note()) : std::string("null")) << "}";
+       << ", \"evaluation\": " << (val ? quote(val->note()) : std::string("null"));
+    // with --digits, the enclosure: the exact value lies within radius of midpoint
+    if (val && o.guaranteed) {
+      auto [mid, rad] = val->ball(o.digits);
+      os << ", \"proven\": " << (val->proven ? "true" : "false") << ", \"midpoint\": " << quote(mid) << ", \"radius\": " << (rad.empty() ? std::string("null") : quote(rad));
+    }
+    os << "}";
   }
   os << "]";
   if (checks) {

@@ -10,6 +10,7 @@
 
 #include <cln/cln.h>
 
+#include "kinergy/numeric/ball.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/stable.hpp"
 
@@ -223,14 +224,43 @@ std::optional<numeric> Evaluator::at(long working) const {
   return numeric(cln::cl_N(*r));
 }
 
-// N digits: evaluate at p and at a higher precision until both round to the same N digits.
+// N digits proven: the tape on balls from the exact inputs (ball.hpp).
 std::optional<Precise> Evaluator::digits(int n) const {
   // an exact value first: GiNaC's exact arithmetic (sin(π) = 0, √4 = 2, 2L − 3d = 0)
   try {
     ex v = e_.subs(values_);
-    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) return Precise{ex_to<numeric>(v), 0, true, false, 0};
+    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) return Precise{ex_to<numeric>(v), 0, true, false, 0, true, ex_to<numeric>(v), ex_to<numeric>(v)};
   } catch (const std::exception&) {
     return std::nullopt;  // a division by zero at the exact values
+  }
+  if (!precise_tape_) return settled(n);
+  if (!balls_) balls_ = std::make_shared<BallEvaluator>(*precise_tape_, exact_);
+  if (balls_->from_float()) return settled(n);
+  // the same limit as CLN's: 20000 digits, or 8 per digit asked
+  const long max_bits = bits_for(static_cast<int>(std::max<long>(20000, 8L * n)));
+  auto p = balls_->digits(n, max_bits);
+  if (!p) return std::nullopt;
+  const long working = static_cast<long>(static_cast<double>(p->bits) * 0.30102999566398120);
+  switch (p->kind) {
+    case Proven::Kind::Exact: return Precise{p->value, 0, true, false, 0, true, p->value, p->value};
+    // the midpoint: it rounds to the proven digits, and carries more for a caller that rounds
+    // again (an exact binary fraction; beyond 2^±4096 the proven rounding itself)
+    case Proven::Kind::Digits: return Precise{p->at.lo.is_rational() ? p->at.mid() : p->value, working, false, false, 0, true, p->at.lo, p->at.hi};
+    case Proven::Kind::Unsigned: {
+      numeric m = std::max(abs(p->at.lo), abs(p->at.hi));
+      return Precise{0, working, false, true, round_up2(m).to_double(), true, p->at.lo, p->at.hi};
+    }
+  }
+  return std::nullopt;
+}
+
+// N digits: evaluate at p and at a higher precision until both round to the same N digits.
+std::optional<Precise> Evaluator::settled(int n) const {
+  try {
+    ex v = e_.subs(values_);
+    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) return Precise{ex_to<numeric>(v), 0, true, false, 0, false, {}, {}};
+  } catch (const std::exception&) {
+    return std::nullopt;
   }
   const long limit = std::max<long>(20000, 8L * n);
   // at(w), with w raised to what the arguments need (a trigonometric function of 1e80 rad)
@@ -252,21 +282,21 @@ std::optional<Precise> Evaluator::digits(int n) const {
   long p = std::max<long>(n + 10, 20);
   auto prev = covering(p);
   if (!prev) return std::nullopt;
-  if (prev->is_rational()) return Precise{*prev, 0, true, false, 0};
+  if (prev->is_rational()) return Precise{*prev, 0, true, false, 0, false, {}, {}};
   int shrinking = 0;
   while (p < limit) {
     long q = std::min(limit, p + std::max(20L, p / 2));
     auto cur = covering(q);
     if (!cur) return std::nullopt;
-    if (!prev->is_zero() && !cur->is_zero() && round_sig(*prev, n) == round_sig(*cur, n)) return Precise{*cur, q, false, false, 0};
-    if (prev->is_zero() && cur->is_zero()) return Precise{*cur, q, false, false, 0};
+    if (!prev->is_zero() && !cur->is_zero() && round_sig(*prev, n) == round_sig(*cur, n)) return Precise{*cur, q, false, false, 0, false, {}, {}};
+    if (prev->is_zero() && cur->is_zero()) return Precise{*cur, q, false, false, 0, false, {}, {}};
     // a value that is zero in exact arithmetic comes out as noise of the working precision,
     // and the noise falls as the precision rises
     double lp = std::log10(std::fabs(prev->to_double()) + 1e-300), lc = std::log10(std::fabs(cur->to_double()) + 1e-300);
     if (cur->is_zero() || lc < lp - 0.5 * static_cast<double>(q - p)) ++shrinking;
     else shrinking = 0;
     if (shrinking >= 3 || (cur->is_zero() && shrinking >= 1))
-      return Precise{0, q, false, true, std::max(std::fabs(cur->to_double()), std::pow(10.0, -static_cast<double>(std::min(q, 300L))))};
+      return Precise{0, q, false, true, std::max(std::fabs(cur->to_double()), std::pow(10.0, -static_cast<double>(std::min(q, 300L)))), false, {}, {}};
     prev = cur;
     p = q;
   }

@@ -11,13 +11,18 @@
 using namespace GiNaC;
 namespace fs = std::filesystem;
 
-TEST_CASE("kinergy solve --digits 50 on the sliding rod: all 50 digits, and the working precision",
+TEST_CASE("kinergy solve --digits 50 on the sliding rod: all 50 digits, proven, and the ball in JSON",
           "[numeric][digits][cli]") {
   int status = 0;
   std::string out = kt::run_cli("solve derivations/energy/sliding_rod.yaml --digits 50", status);
   CHECK(status == 0);
   CHECK_THAT(out, Catch::Contains("= 3.5017852589786256052372546604589676703245542931001 rad/s"));
-  CHECK_THAT(out, Catch::Contains("(working precision "));
+  CHECK_THAT(out, Catch::Contains("(proven: ball radius "));
+  // JSON: the ball's midpoint and radius; the reference (mpmath, 60 digits: sqrt(3 g sin(theta2) / l))
+  // lies inside it
+  out = kt::run_cli("solve derivations/energy/sliding_rod.yaml --digits 50 --json", status);
+  CHECK_THAT(out, Catch::Contains("\"proven\": true, \"midpoint\": \"3.5017852589786256052372546604589676703245542931000717834081"));
+  CHECK_THAT(out, Catch::Contains("\"radius\": \""));
   // the default: 15 digits, nothing added to the line
   out = kt::run_cli("solve derivations/energy/sliding_rod.yaml", status);
   CHECK_THAT(out, Catch::Contains("= 3.50178525897863 rad/s\n"));

@@ -2,6 +2,7 @@
 /// compiled double with an error bound, CLN at a given precision, and N guaranteed digits.
 #pragma once
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,13 +13,20 @@
 
 namespace kinergy::numerics {
 
+class BallEvaluator;
+
 /// A value with N correct significant digits, and how it was obtained.
 struct Precise {
-  GiNaC::numeric value;      ///< exact rational, or a float of `working` digits
+  GiNaC::numeric value;      ///< exact rational; or the ball's midpoint (proven: it rounds to the N digits); or a float of `working` digits
   long working = 0;          ///< working precision (decimal digits) of the last evaluation; 0 when exact
   bool exact = false;        ///< the value is exact (a rational)
   bool zero_bound = false;   ///< not settled, but shrinking with precision: zero, |value| < bound
   double bound = 0;          ///< |value| bound when zero_bound
+  /// The digits (or the zero bound) are proven by ball arithmetic: the exact value lies in
+  /// [lo, hi]. Otherwise they settled between two CLN precisions (a form with a number found
+  /// numerically in it, or a function the tape does not evaluate).
+  bool proven = false;
+  GiNaC::numeric lo, hi;
 };
 
 class Evaluator {
@@ -38,11 +46,16 @@ public:
   /// @throws NeedsPrecision when `working` cannot cover an argument (a trigonometric function of a large angle).
   std::optional<GiNaC::numeric> at(long working) const;
 
-  /// `digits` correct significant digits: exact when the value is rational; else evaluated at
-  /// a working precision that grows until the rounding to `digits` stops changing.
+  /// `digits` correct significant digits: exact when the value is rational; else proven by ball
+  /// arithmetic (Arb) from the exact inputs, the precision raised until the ball fixes them.
+  /// Where balls cannot be used (a float in the form or its inputs: a number found numerically;
+  /// a function the tape has no instruction for) the working precision of CLN grows until the
+  /// rounding to `digits` stops changing, and the result says it is not proven.
   /// @returns nothing when the form is undefined at the values.
-  /// @throws std::domain_error when no working precision up to the limit covers its arguments.
+  /// @throws std::domain_error when no working precision up to the limit decides.
   std::optional<Precise> digits(int digits) const;
+  /// The same by CLN alone (two precisions that round alike): not a proof.
+  std::optional<Precise> settled(int digits) const;
 
   /// The form fast() evaluates, with its exactly computed parts written out (for reports).
   GiNaC::ex fast_form() const { return fast_form_; }
@@ -61,6 +74,7 @@ private:
   std::vector<double> fast_x_, fast_dx_;
   GiNaC::ex fast_form_;
   mutable std::map<long, std::vector<cln::cl_R>> inputs_;  ///< the inputs converted, per precision
+  mutable std::shared_ptr<BallEvaluator> balls_;  ///< the precise tape on balls (made when first asked)
 };
 
 }  // namespace kinergy::numerics

@@ -13,6 +13,10 @@
 
 namespace kinergy::numerics {
 
+namespace detail {
+struct BallRun;  ///< the tape on Arb balls (ball.cpp)
+}
+
 /// A double with a bound on its distance from the exact value of the same form at the same
 /// exact inputs: |value − exact| ≤ bound.
 struct Bounded {
@@ -95,6 +99,7 @@ private:
   mutable std::vector<double> err_;
   mutable std::vector<double> batch_reg_;
   friend class TapeBuilder;
+  friend struct detail::BallRun;
 };
 
 /// A double's exact value (every finite double is a binary fraction).

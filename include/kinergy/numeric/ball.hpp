@@ -1,0 +1,88 @@
+/// @file ball.hpp  Ball arithmetic (Arb): a closed form's tape evaluated on balls [m ± r] that are
+/// proven to hold the exact value, from the exact inputs; the precision raised until the ball
+/// fixes the digits asked. What `--digits N` prints.
+#pragma once
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "kinergy/numeric/tape.hpp"
+
+namespace kinergy::numerics {
+
+/// The exact value x lies in [lo, hi] (both exact binary fractions).
+struct Enclosure {
+  GiNaC::numeric lo, hi;
+  GiNaC::numeric mid() const { return (lo + hi) / 2; }
+  GiNaC::numeric radius() const { return (hi - lo) / 2; }
+  bool has_zero() const { return !lo.is_positive() && !hi.is_negative(); }
+};
+
+/// What one evaluation on balls of a given precision tells.
+struct BallValue {
+  enum class Status {
+    Ok,             ///< `at` holds the exact value
+    Undefined,      ///< proven undefined: √ of a negative number, a division by an exact zero, …
+    Indeterminate,  ///< this precision cannot tell (a divisor's ball holds 0, √ of a ball that holds 0 and negatives)
+  } status = Status::Indeterminate;
+  Enclosure at;
+};
+
+/// A value with N digits fixed by its enclosure, or the enclosure that could not fix them.
+struct Proven {
+  enum class Kind {
+    Exact,     ///< exact rational (GiNaC's exact arithmetic): `value` is it
+    Digits,    ///< every value in `at` rounds to the same N significant digits: `value` is that rounding
+    Unsigned,  ///< the enclosure keeps holding 0 as the precision rises: |value| ≤ max(|lo|, |hi|), sign not fixed
+  } kind = Kind::Exact;
+  GiNaC::numeric value;  ///< Exact: the value; Digits: the N-digit rounding (exact decimal)
+  Enclosure at;          ///< Digits, Unsigned: the last enclosure
+  long bits = 0;         ///< the precision (bits) of the last evaluation
+};
+
+/// A tape bound to exact input values, evaluated on balls.
+class BallEvaluator {
+public:
+  /// `inputs`: one exact value per tape input (a rational, or an exact form such as π/6 or √2,
+  /// which is evaluated on balls itself). A float among them (a number found numerically) is
+  /// taken as the exact binary fraction it is: `from_float()` then says the proof is of that
+  /// float's consequences, not of the scene's value.
+  BallEvaluator(const Tape& t, const std::vector<GiNaC::ex>& inputs);
+  ~BallEvaluator();
+  BallEvaluator(BallEvaluator&&) noexcept;
+  BallEvaluator& operator=(BallEvaluator&&) noexcept;
+
+  /// Every output at `bits` of precision (out[k] for output k).
+  std::vector<BallValue> at_all(long bits) const;
+  BallValue at(long bits) const { return at_all(bits).front(); }
+
+  /// N significant digits proven: the precision starts near what N needs and doubles until the
+  /// enclosure's ends round alike, or until `max_bits`. @returns nothing when the form is proven
+  /// undefined there. @throws std::domain_error when no precision up to max_bits decides
+  /// (an indeterminate step all the way, or digits that never settle and a ball that does not
+  /// hold zero).
+  std::optional<Proven> digits(int n, long max_bits) const;
+
+  bool from_float() const { return from_float_; }
+
+  struct Impl;
+
+private:
+  std::unique_ptr<Impl> impl_;
+  bool from_float_ = false;
+};
+
+/// An exact value (rational, π/6, √2, …) enclosed at `bits`: nothing when it is not a real number
+/// or is undefined.
+std::optional<Enclosure> enclose(const GiNaC::ex& exact, long bits);
+
+/// Bits for n decimal digits (n·log₂10), rounded up.
+long bits_for(int n);
+
+/// The smallest number of at most 2 significant digits ≥ x ≥ 0 (a radius printed so that it still
+/// bounds): 1.234e-20 → 1.3e-20.
+GiNaC::numeric round_up2(const GiNaC::numeric& x);
+
+}  // namespace kinergy::numerics
