@@ -180,6 +180,21 @@ std::optional<numeric> Result::value(const exmap& env, int digits) const {
 }
 
 std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_double) const {
+  if (!closed_form && root && !(prefer_double && digits <= 15)) {
+    // v = u / unit_factor solves r(v · unit_factor) = 0: its digits proven on balls
+    symbol v("v");
+    const ex r = root->residual.subs(root_unknown == v * unit_factor);
+    auto at = [&](const ex& x) { return numerics::evaluate(x / unit_factor, env, digits + 20); };
+    auto x0 = at(closed), lo = at(root->lo), hi = at(root->hi);
+    if (x0 && lo && hi) {
+      const long max_bits = numerics::bits_for(std::max(20000, 8 * digits));
+      if (auto p = numerics::root_digits(r, v, *x0, std::min(*lo, *hi), std::max(*lo, *hi), env, digits, max_bits)) {
+        const long working = static_cast<long>(static_cast<double>(p->bits) * 0.30102999566398120);
+        if (p->kind == numerics::Proven::Kind::Exact) return Value{p->value, Value::How::Exact, 0, 0, true, p->value, p->value};
+        return Value{p->at.lo.is_rational() ? p->at.mid() : p->value, Value::How::Precise, working, 0, true, p->at.lo, p->at.hi};
+      }
+    }
+  }
   if (!closed_form && digits > kRootDigits)
     throw SceneError(pos, "'" + name + "' has no closed form (a numeric root or a work integral taken numerically), found to " + std::to_string(kRootDigits) +
                               " significant digits; " + std::to_string(digits) + " were asked",
@@ -753,6 +768,15 @@ private:
   r.closed_form = !has_float(c);
   r.closed = model::factored(model::root_simplify(model::tidy(model::tidy_function_arguments(c)),
                                                   [this](const ex& x) { return m.fixed_sign(x); }));
+  // the unknown itself, found by a numeric root: keep how (for proving its digits)
+  try {
+    ex u = f.value.subs(given);
+    if (auto it = sol.branch.roots.find(u); it != sol.branch.roots.end()) {
+      r.root_unknown = u;
+      r.root = it->second;
+    }
+  } catch (const std::exception&) {
+  }
   if (f.extreme) extreme(f, r);
   if (f.reach) reach(f, r);
   if (f.unit) {

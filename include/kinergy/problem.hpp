@@ -44,6 +44,10 @@ struct Result {
   GiNaC::ex extreme_of;  ///< the expression made greatest or least (of the parameter)
   std::string extreme_what = "of the parameter";  ///< what extreme_of is, for the derivation
   GiNaC::ex unit_factor = 1;        ///< SI value / unit_factor = value in the display unit
+  /// A result that is an unknown found by a numeric root: the unknown, and the equation and
+  /// bracket it was found in (its digits are then proven by ball arithmetic to any number).
+  GiNaC::ex root_unknown;
+  std::optional<solve::NumericRoot> root;
   /// Value in the display unit with `digits` correct significant digits (working precision
   /// raised until stable). @returns nothing when parameters lack values.
   std::optional<GiNaC::numeric> value(const GiNaC::exmap& env, int digits) const;

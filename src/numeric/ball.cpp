@@ -282,11 +282,16 @@ struct detail::BallRun {
 };
 
 struct BallEvaluator::Impl {
-  /// Run at `bits`: the status, and the registers (the outputs among them).
-  BallValue::Status run(long bits, Balls& reg, std::vector<std::size_t>& outs) const {
+  /// Run at `bits`: the status, and the registers (the outputs among them). With `first`, input 0
+  /// is that ball instead of its exact value.
+  BallValue::Status run(long bits, Balls& reg, std::vector<std::size_t>& outs, arb_srcptr first = nullptr) const {
     const Balls* x = enclosed(bits);
     if (!x) return BallValue::Status::Undefined;
-    return detail::BallRun::run(tape, *x, bits, reg, outs);
+    if (!first) return detail::BallRun::run(tape, *x, bits, reg, outs);
+    Balls y(x->size());
+    for (std::size_t i = 0; i < x->size(); ++i) arb_set(y[i], (*x)[i]);
+    arb_set(y[0], first);
+    return detail::BallRun::run(tape, y, bits, reg, outs);
   }
   Tape tape;
   std::vector<ex> inputs;
@@ -374,6 +379,104 @@ std::optional<Proven> BallEvaluator::digits(int n, long max_bits) const {
                               ")");
     bits = std::min(max_bits, 2 * bits);
   }
+}
+
+// A root of r(u) = 0 proven: Newton's steps on the balls' midpoints find x; then the ball
+// I = [x − δ, x + δ] holds a root when r is defined (so continuous) on all of I and r(x − δ),
+// r(x + δ) have proven opposite signs (the intermediate value theorem). r′ on I away from 0
+// makes it the only root in I. The digits are those every value of I rounds to.
+std::optional<Proven> root_digits(const ex& r, const symbol& u, const numeric& x0, const numeric& lo, const numeric& hi,
+                                  const exmap& values, int n, long max_bits) {
+  // the start as the exact binary fraction a float is: it is only where Newton begins
+  const numeric start = x0.is_rational() ? x0 : numeric(cln::cl_N(cln::rational(cln::the<cln::cl_R>(x0.to_cl_N()))));
+  std::vector<ex> in{u}, vals{start};
+  for (auto& [s, v] : values)
+    if (r.has(s) && !s.is_equal(u)) {
+      in.push_back(s);
+      vals.push_back(v);
+    }
+  Tape tr, td;
+  try {
+    tr = Tape::compile(r, in);
+    td = Tape::compile(r.diff(u), in);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;  // a function the tape has no instruction for (a work integral)
+  }
+  BallEvaluator R(tr, vals), D(td, vals);
+  if (R.from_float() || D.from_float()) return std::nullopt;
+  long bits = bits_for(n) + 32;
+  arb_t x, t, I, a, b, step;
+  arb_init(x);
+  arb_init(t);
+  arb_init(I);
+  arb_init(a);
+  arb_init(b);
+  arb_init(step);
+  set_rational(x, cln::the<cln::cl_RA>(start.to_cl_N()), 4 * bits);
+  arb_get_mid_arb(x, x);
+  Balls reg_r(tr.instructions()), reg_d(td.instructions());
+  std::vector<std::size_t> outs_r, outs_d;
+  std::optional<Proven> out;
+  using St = BallValue::Status;
+  auto sign = [&](arb_srcptr at, long p) {
+    if (R.impl_->run(p, reg_r, outs_r, at) != St::Ok) return 0;
+    arb_srcptr v = reg_r[outs_r[0]];
+    return arb_is_positive(v) ? 1 : arb_is_negative(v) ? -1 : 0;
+  };
+  while (!out) {
+    // Newton: x ← x − r(x)/r′(x), on midpoints
+    for (int it = 0; it < 200; ++it) {
+      if (R.impl_->run(bits, reg_r, outs_r, x) != St::Ok || D.impl_->run(bits, reg_d, outs_d, x) != St::Ok) break;
+      arb_srcptr fr = reg_r[outs_r[0]];
+      if (arb_is_zero(fr)) {  // r(x) = 0 exactly: x is a root
+        out = Proven{Proven::Kind::Exact, 0, ends(x), bits};
+        out->value = out->at.lo;
+        break;
+      }
+      arb_get_mid_arb(t, fr);
+      arb_get_mid_arb(a, reg_d[outs_d[0]]);
+      if (arf_is_zero(arb_midref(a))) break;
+      arb_div(step, t, a, bits);
+      arb_get_mid_arb(step, step);
+      arb_sub(x, x, step, bits);
+      arb_get_mid_arb(x, x);
+      // |step| ≤ 2^(8 − bits) |x|: the midpoints' noise
+      arb_mul_2exp_si(t, x, 8 - bits);
+      arb_abs(t, t);
+      arb_abs(a, step);
+      if (arb_le(a, t) || arf_is_zero(arb_midref(step))) break;
+    }
+    if (out) break;
+    // δ = 4|step| + 2^(8 − bits)|x| + 2^−bits
+    arb_abs(a, step);
+    arb_mul_2exp_si(a, a, 2);
+    arb_abs(t, x);
+    arb_mul_2exp_si(t, t, 8 - bits);
+    arb_add(a, a, t, bits);
+    arb_one(t);
+    arb_mul_2exp_si(t, t, -bits);
+    arb_add(a, a, t, bits);
+    arb_get_ubound_arf(arb_midref(t), a, bits);
+    mag_zero(arb_radref(t));
+    arb_sub(a, x, t, bits + 16);
+    arb_get_mid_arb(a, a);
+    arb_add(b, x, t, bits + 16);
+    arb_get_mid_arb(b, b);
+    arb_union(I, a, b, bits + 16);
+    const int sa = sign(a, bits), sb = sign(b, bits);
+    if (sa != 0 && sb != 0 && sa != sb && R.impl_->run(bits, reg_r, outs_r, I) == St::Ok) {
+      Enclosure e = ends(I);
+      if (lo < hi && (e.lo < lo || e.hi > hi)) break;  // not the root of the solver's bracket
+      if (auto d = common_digits(I, n, bits)) {
+        out = Proven{Proven::Kind::Digits, *d, e, bits};
+        break;
+      }
+    }
+    if (bits >= max_bits) break;
+    bits = std::min(max_bits, 2 * bits);
+  }
+  for (arb_ptr p : {x, t, I, a, b, step}) arb_clear(p);
+  return out;
 }
 
 std::optional<Enclosure> enclose(const ex& exact, long bits) {

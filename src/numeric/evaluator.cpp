@@ -226,13 +226,18 @@ std::optional<numeric> Evaluator::at(long working) const {
 
 // N digits proven: the tape on balls from the exact inputs (ball.hpp).
 std::optional<Precise> Evaluator::digits(int n) const {
-  // an exact value first: GiNaC's exact arithmetic (sin(π) = 0, √4 = 2, 2L − 3d = 0)
-  try {
-    ex v = e_.subs(values_);
-    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) return Precise{ex_to<numeric>(v), 0, true, false, 0, true, ex_to<numeric>(v), ex_to<numeric>(v)};
-  } catch (const std::exception&) {
-    return std::nullopt;  // a division by zero at the exact values
+  // an exact value first: GiNaC's exact arithmetic (sin(π) = 0, √4 = 2, 2L − 3d = 0), once
+  if (exact_kind_ == ExactKind::Unknown) {
+    try {
+      ex v = e_.subs(values_);
+      exact_kind_ = is_a<numeric>(v) && ex_to<numeric>(v).is_rational() ? ExactKind::Rational : ExactKind::Irrational;
+      if (exact_kind_ == ExactKind::Rational) exact_rational_ = ex_to<numeric>(v);
+    } catch (const std::exception&) {
+      exact_kind_ = ExactKind::Undefined;  // a division by zero at the exact values
+    }
   }
+  if (exact_kind_ == ExactKind::Undefined) return std::nullopt;
+  if (exact_kind_ == ExactKind::Rational) return Precise{exact_rational_, 0, true, false, 0, true, exact_rational_, exact_rational_};
   if (!precise_tape_) return settled(n);
   if (!balls_) balls_ = std::make_shared<BallEvaluator>(*precise_tape_, exact_);
   if (balls_->from_float()) return settled(n);

@@ -235,8 +235,9 @@ private:
   // One branch per root. The equation solved holds there by construction and leaves the branch
   // (its residual with a float root folds to one number that no relative test can judge).
   void branch(const State& st, const Equation& solved, const ex& u, const std::vector<ex>& roots,
-              const std::string& how, bool numeric_root = false) {
-    for (auto& r : roots) {
+              const std::string& how, bool numeric_root = false, const std::vector<NumericRoot>& found = {}) {
+    for (std::size_t k = 0; k < roots.size(); ++k) {
+      const ex& r = roots[k];
       State s = st;
       for (std::size_t i = 0; i < s.eqs.size(); ++i)
         if (s.eqs[i].residual().is_equal(solved.residual())) {
@@ -245,6 +246,7 @@ private:
         }
       assign(s, u, r, how);
       if (numeric_root) s.b.numeric_only.insert(u);
+      if (k < found.size()) s.b.roots[u] = found[k];
       work_.push_back(std::move(s));
     }
   }
@@ -373,29 +375,33 @@ private:
     const int n = quadrature ? 100 : 2000;
     const int scan_digits = quadrature ? 6 : 20;  // the signs only: a quadrature at 6 digits is cheap
     std::vector<ex> roots;
+    std::vector<NumericRoot> found;  // each root's bracket, for proving its digits later
     long saved = Digits;
     Digits = kWork + 10;
-    auto keep = [&](const numeric& x) {
+    auto keep = [&](const numeric& x, const numeric& lo, const numeric& hi) {
       // a root only where the residual vanishes against the size of its terms (not a pole)
       exmap at = p_.env;
       at[u] = x;
       bool known = false;
-      if (numerically_zero(r, at, known) || !known) roots.push_back(x);
+      if (numerically_zero(r, at, known) || !known) {
+        roots.push_back(x);
+        found.push_back({r, lo, hi});
+      }
     };
     auto grid = [&](int i) { return numeric(ref) - numeric(span) + numeric(2 * span) * numeric(i, n); };
     numeric x0 = grid(0);
     auto f0 = residual_at(r, u, x0, scan_digits);
-    if (f0 && f0->is_zero()) keep(x0);
+    if (f0 && f0->is_zero()) keep(x0, x0, x0);
     for (int i = 1; i <= n && roots.size() <= 8; ++i) {
       numeric x1 = grid(i);
       auto f1 = residual_at(r, u, x1, scan_digits);
       if (f1 && f1->is_zero()) {
-        keep(x1);  // exactly on the grid
+        keep(x1, x1, x1);  // exactly on the grid
       } else if (f0 && f1 && !f0->is_zero() && (f0->is_negative() != f1->is_negative())) {
         auto a = residual_at(r, u, x0, kWork + 10), b = residual_at(r, u, x1, kWork + 10);
         if (a && b) {
           auto x = refine(r, u, x0, x1, *a, *b);
-          if (x) keep(*x);
+          if (x) keep(*x, x0, x1);
         }
       }
       x0 = x1;
@@ -406,7 +412,7 @@ private:
       throw SolveError("the " + q.label + " has no closed form for " + model::text(u) + " and no root was found near " +
                            numerics::format(numeric(ref), 6),
                        "give the unknown a range with root: {in: [lo, hi]} on the result", q.pos);
-    branch(st, q, u, roots, q.label + " (numeric root, no closed form)", true);
+    branch(st, q, u, roots, q.label + " (numeric root, no closed form)", true, found);
   }
 };
 

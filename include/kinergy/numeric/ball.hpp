@@ -70,9 +70,21 @@ public:
   struct Impl;
 
 private:
+  friend std::optional<Proven> root_digits(const GiNaC::ex&, const GiNaC::symbol&, const GiNaC::numeric&, const GiNaC::numeric&,
+                                           const GiNaC::numeric&, const GiNaC::exmap&, int, long);
   std::unique_ptr<Impl> impl_;
   bool from_float_ = false;
 };
+
+/// A root of r(u) = 0 (the other symbols of r at their exact `values`) to n proven digits,
+/// started from x0 (a number near it): Newton's method on the balls' midpoints, then a ball I
+/// around the result on which r is defined and whose ends give r proven opposite signs, so that
+/// I holds a root; the precision doubles until every value of I rounds to the same n digits. When
+/// lo < hi, I must lie in [lo, hi] (the bracket the root was found in). @returns nothing when r
+/// does not compile to a tape (a work integral in it), holds a float, or no precision up to
+/// max_bits proves the digits.
+std::optional<Proven> root_digits(const GiNaC::ex& r, const GiNaC::symbol& u, const GiNaC::numeric& x0, const GiNaC::numeric& lo,
+                                  const GiNaC::numeric& hi, const GiNaC::exmap& values, int n, long max_bits);
 
 /// An exact value (rational, π/6, √2, …) enclosed at `bits`: nothing when it is not a real number
 /// or is undefined.

@@ -47,10 +47,18 @@ struct Problem {
   std::set<ex, GiNaC::ex_is_less> stand_ins;
 };
 
+/// A numeric root: the equation residual(u) = 0 it solves, and the bracket it was found in
+/// (the residual changes sign between lo and hi, SI values).
+struct NumericRoot {
+  ex residual;  ///< in u and the parameters (their values in Problem::env)
+  GiNaC::numeric lo, hi;
+};
+
 /// One consistent solution.
 struct Branch {
   GiNaC::exmap sol;                 ///< unknown → closed form (or number when no closed form)
   std::set<ex, GiNaC::ex_is_less> numeric_only;  ///< unknowns found by a numeric root
+  std::map<ex, NumericRoot, GiNaC::ex_is_less> roots;  ///< how each of them was found
   std::vector<std::string> steps;   ///< how each unknown was found
 };
 

@@ -1,0 +1,186 @@
+// `--digits N` prints proven digits: ball arithmetic (Arb) from the exact inputs. Checked against
+// references computed without kinergy: the 100-digit claims of tests/stability (mpmath, hand
+// formulas: tests/stability/references.py), GiNaC's own evaluation of every derivation's closed
+// form at 120 digits (another code path), and mpmath for a numeric root
+// (tests/data/numeric/wound_spring_reference.py). The double path's reported error bound is
+// checked against its true error, known from the balls.
+#include <catch2/catch.hpp>
+
+#include "../support/helpers.hpp"
+#include "kinergy/numeric/ball.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/evaluator.hpp"
+#include "kinergy/numeric/roots.hpp"
+#include "kinergy/problem.hpp"
+
+namespace fs = std::filesystem;
+using namespace GiNaC;
+namespace kn = kinergy::numerics;
+
+namespace {
+
+/// x lies within the value's ball, widened by `slack` (a reference's own rounding).
+bool inside(const kinergy::Value& v, const numeric& x, const numeric& slack) {
+  return v.lo - slack <= x && x <= v.hi + slack;
+}
+
+/// Half a unit in the n-th significant digit of x: what rounding x to n digits may move it.
+numeric half_ulp(const numeric& x, int n) {
+  if (x.is_zero()) return 0;
+  const long e = static_cast<long>(std::floor(std::log10(std::fabs(x.to_double()))));
+  return pow(numeric(10), numeric(e - n + 1)) / 2;
+}
+
+}  // namespace
+
+TEST_CASE("proven: every 100-digit reference of tests/stability, and the double's bound holds its true error",
+          "[numeric][proven][stability]") {
+  int compared = 0, doubles = 0;
+  for (auto& f : kt::scene_files("tests/stability")) {
+    kinergy::Solution s = kinergy::solve_file(f);
+    auto env = s.model.numeric_environment();
+    for (auto& x : s.model.expects) {
+      if (!x.value) continue;
+      kinergy::Result r = kt::result(s, x.name);
+      r.unit_factor = x.value->unit.factor;  // in the claim's unit
+      INFO(fs::path(f).filename().string() << ": " << x.name << " = " << r.closed);
+      auto v = r.evaluate(env, 100, false);
+      REQUIRE(v);
+      CHECK(v->proven);
+      const numeric& ref = x.value->number;
+      if (ref.is_zero()) {
+        CHECK(v->how == kinergy::Value::How::Exact);
+        CHECK(v->v.is_zero());
+      } else {
+        // the 100 digits printed are the reference's, and the reference (rounded to 100 digits
+        // itself) lies in the ball
+        CHECK(kn::format(v->v, 100) == kn::format(ref, 100));
+        CHECK(inside(*v, ref, half_ulp(ref, 100)));
+      }
+      // the double: |double − exact| ≤ its bound, the exact value known to within the ball's radius
+      kn::Evaluator ev(r.closed / r.unit_factor, env);
+      if (auto d = ev.fast()) {
+        const numeric dv = kn::exact(d->value);
+        const numeric err = std::max(abs(dv - v->lo), abs(dv - v->hi));  // ≥ the true error
+        INFO("double " << d->value << " +- " << d->bound << "; error at most " << err.to_double());
+        CHECK((err.to_double() <= d->bound * (1 + 1e-12) || abs(dv - (v->lo + v->hi) / 2) <= numeric(d->bound) + (v->hi - v->lo) / 2));
+        ++doubles;
+      }
+      ++compared;
+    }
+  }
+  CHECK(compared >= 40);
+  CHECK(doubles >= 40);
+}
+
+TEST_CASE("proven: every derivation at 40 digits, inside GiNaC's 120-digit value, and the double's bound holds its true error",
+          "[numeric][proven][derivations]") {
+  int proven = 0, doubles = 0, unproven = 0;
+  for (const auto& f : kt::scene_files("derivations")) {
+    kinergy::Solution s = kinergy::solve_file(f);
+    auto env = s.model.numeric_environment();
+    for (auto& r : s.results) {
+      if (!r.si) continue;
+      INFO(fs::path(f).filename().string() << ": " << r.name << " = " << r.closed);
+      const int n = r.closed_form ? 40 : kinergy::kRootDigits;
+      auto v = r.evaluate(env, n, false);
+      REQUIRE(v);
+      if (!v->proven) {
+        // only a value with a number found numerically in it (a work integral by quadrature)
+        CHECK(!r.closed_form);
+        CHECK_THAT(v->note(), Catch::StartsWith("not proven"));
+        ++unproven;
+        continue;
+      }
+      ++proven;
+      if (!r.closed_form) continue;  // a numeric root: its reference is its own test below
+      auto ref = kn::evaluate(r.closed / r.unit_factor, env, 120);
+      REQUIRE(ref);
+      CHECK(kn::format(v->v, n) == kn::format(*ref, n));
+      CHECK(inside(*v, *ref, abs(*ref) * kn::tenth(110) + kn::tenth(300)));
+      kn::Evaluator ev(r.closed / r.unit_factor, env);
+      if (auto d = ev.fast()) {
+        const numeric dv = kn::exact(d->value);
+        const numeric err = abs(dv - *ref);
+        INFO("double " << d->value << " +- " << d->bound << "; true error " << err.to_double());
+        CHECK(err <= numeric(d->bound) + abs(*ref) * kn::tenth(100));
+        ++doubles;
+      }
+    }
+  }
+  CHECK(proven >= 100);
+  CHECK(doubles >= 100);
+  CHECK(unproven <= 2);  // the two cam couples: a work integral by quadrature
+}
+
+TEST_CASE("proven: a numeric root to 100 digits, against mpmath", "[numeric][proven][roots][cli]") {
+  // tests/data/numeric/wound_spring_reference.py (mpmath findroot at 130 digits)
+  const std::string ref =
+      "11.92637250575801691601068288980028746113727739067796439947445583912450084496527079522433628389232332";
+  int status = 0;
+  std::string out = kt::run_cli("solve tests/data/wound_spring.yaml --digits 100", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= " + ref + " rad   (no closed form: taken numerically; proven: ball radius "));
+  out = kt::run_cli("solve tests/data/wound_spring.yaml --digits 300 --json", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("\"value\": \"" + ref.substr(0, 60)));
+  CHECK_THAT(out, Catch::Contains("\"proven\": true"));
+  // a root in degrees: the unit's factor π/180 goes into the equation, not into a rounded number
+  auto s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/tests/data/wound_spring.yaml");
+  kinergy::Result r = s.results.at(0);
+  r.unit_factor = Pi / 180;
+  auto v = r.evaluate(s.model.numeric_environment(), 50, false);
+  REQUIRE(v);
+  CHECK(v->proven);
+  // 11.926372505758016916… rad × 180/π (mpmath, the same script)
+  CHECK(kn::format(v->v, 50) == "683.33080948079844959356773303339006929961599118197");
+}
+
+TEST_CASE("proven: a zero exact arithmetic does not see says its sign is not fixed, and a tiny value beside it is proven",
+          "[numeric][proven][cli]") {
+  int status = 0;
+  std::string out = kt::run_cli("solve tests/data/numeric/unsigned_zero.yaml --digits 20", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= 0 m   (sign not fixed: |value| <= "));
+  CHECK_THAT(out, Catch::Contains("= 1e-80 m   (proven: ball radius "));
+  out = kt::run_cli("solve tests/data/numeric/unsigned_zero.yaml --digits 20 --json", status);
+  CHECK_THAT(out, Catch::Contains("\"evaluation\": \"sign not fixed: |value| <= "));
+}
+
+TEST_CASE("proven: a work integral taken by quadrature is not called proven, and is refused beyond its digits",
+          "[numeric][proven][cli]") {
+  int status = 0;
+  std::string out = kt::run_cli("solve derivations/energy/wheel_cam_couple_numeric.yaml --digits 20 --json", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("\"proven\": false"));
+  CHECK_THAT(out, Catch::Contains("\"radius\": null"));
+  out = kt::run_cli("solve derivations/energy/wheel_cam_couple_angle.yaml --digits 100", status);
+  CHECK(status != 0);
+  CHECK_THAT(out, Catch::Contains("wheel_cam_couple_angle.yaml:") && Catch::Contains("--digits 35 or fewer"));
+}
+
+TEST_CASE("ball arithmetic: undefined, indeterminate and exact cases of the tape", "[numeric][proven]") {
+  symbol x("x");
+  auto proven = [&](const ex& e, const numeric& xv, int n) {
+    kn::BallEvaluator b(kn::Tape::compile(e, {x}), {xv});
+    return b.digits(n, 4000);
+  };
+  // √ of a negative number and a division by an exact zero are undefined: nothing
+  CHECK(!proven(sqrt(x - 2), 1, 10));
+  CHECK(!proven(1 / (x - 1), 1, 10));
+  CHECK(!proven(log(x - 1), 1, 10));
+  // a divisor that is zero but not exactly (1 - cos²x - sin²x): it cannot be decided
+  CHECK_THROWS_WITH(proven(1 / (1 - pow(cos(x), 2) - pow(sin(x), 2)), 1, 10), Catch::Contains("cannot be decided"));
+  // a square root of an exact zero is 0
+  auto z = proven(sqrt(x - 1), 1, 10);
+  REQUIRE(z);
+  CHECK(z->kind == kn::Proven::Kind::Exact);
+  // π to 60 digits (its digits known: 3.14159265358979323846264338327950288419716939937510582097494)
+  auto p = proven(4 * atan(x), 1, 60);
+  REQUIRE(p);
+  CHECK(kn::format(p->value, 60) == "3.14159265358979323846264338327950288419716939937510582097494");
+  CHECK(p->at.lo < p->at.hi);
+  // a radius printed rounds up
+  CHECK(kn::round_up2(numeric(1234, 100000)) == numeric(13, 1000));
+  CHECK(kn::round_up2(numeric(13, 1000)) == numeric(13, 1000));
+}
