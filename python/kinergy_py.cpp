@@ -78,6 +78,20 @@ struct PyResult {
     return numerics::format(v->v, digits);
   }
   double to_float() const { return std::stod(value(17)); }
+  // the value proven by ball arithmetic, as `kinergy solve --digits N --json` gives it
+  py::dict ball(int digits) const {
+    if (!r().si) throw InputError("'" + r().name + "' has no value: a parameter in it has none", "give every parameter a value");
+    auto v = r().evaluate(s->model.numeric_environment(), digits, false);
+    if (!v) throw InputError("'" + r().name + "' could not be evaluated", "ask for fewer digits");
+    auto [mid, rad] = v->ball(digits);
+    py::dict d;
+    d["value"] = numerics::format(v->v, digits);
+    d["proven"] = v->proven;
+    d["midpoint"] = mid;
+    d["radius"] = rad.empty() ? py::object(py::none()) : py::object(py::str(rad));
+    d["evaluation"] = v->note();
+    return d;
+  }
   // the closed form as SymPy builds it from its text, every name a symbol of its own
   py::object sympy() const {
     py::module_ sp = py::module_::import("sympy");
@@ -216,6 +230,9 @@ PYBIND11_MODULE(kinergy, m) {
       .def_property_readonly("latex", [](const PyResult& r) { return emit::latex(r.r().closed); }, "the closed form in LaTeX")
       .def_property_readonly("closed_form", [](const PyResult& r) { return r.r().closed_form; }, "False when a numeric root was needed")
       .def("value", &PyResult::value, py::arg("digits") = 15, "its value in its unit to `digits` significant digits (text)")
+      .def("ball", &PyResult::ball, py::arg("digits") = 30,
+           "its value to `digits` proven digits (ball arithmetic): a dict of value, proven, midpoint, radius (the exact "
+           "value lies within radius of midpoint; None when not proven) and evaluation")
       .def("__float__", &PyResult::to_float)
       .def("sympy", &PyResult::sympy, "the closed form as a SymPy expression (sympy must be installed)")
       .def("__repr__", [](const PyResult& r) { return "<kinergy.Result " + r.r().name + " = " + emit::plain(r.r().closed) + ">"; });

@@ -30,6 +30,14 @@ def test_load_solve_and_values():
     # more digits, each guaranteed: the same number, longer
     assert r.value(30).startswith(r.value(12)[:-1])
     assert len(r.value(30).replace(".", "")) >= 30
+    # the ball: proven, and the exact value (mpmath, 60 digits: sqrt(3*9.81*sin(pi/6)/1.2)) inside it
+    b = r.ball(40)
+    assert b["proven"] and b["evaluation"].startswith("proven: ball radius")
+    from mpmath import mp, mpf
+    mp.dps = 60
+    exact = mp.sqrt(3 * mpf("9.81") * mp.sin(mp.pi / 6) / mpf("1.2"))
+    assert abs(mpf(b["midpoint"]) - exact) <= mpf(b["radius"])
+    assert b["value"] == mp.nstr(exact, 40, strip_zeros=False)
     assert solution.verify()
 
 

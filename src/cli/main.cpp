@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
 
   auto* solve = app.add_subcommand("solve", "solve a scene: each unknown in closed form and its value");
   solve->add_option("SCENE", scene, "scene file (YAML)")->required();
-  solve->add_option("--digits", digits, "significant digits, guaranteed: CLN at a working precision raised until they settle (default: 15 from the compiled double evaluator when its error bound fixes them)")->check(CLI::Range(1, 10000));
+  solve->add_option("--digits", digits, "significant digits, proven: ball arithmetic (Arb) from the exact inputs, the precision raised until the ball fixes them; JSON adds the ball (default: 15 from the compiled double evaluator when its error bound fixes them, not proven)")->check(CLI::Range(1, 10000));
   solve->add_flag("--json", as_json, "print JSON for tools");
 
   std::string tex_out, pdf_out;

@@ -1,5 +1,7 @@
 #include "kinergy/expr/canonical.hpp"
 
+#include <unordered_map>
+
 #include <algorithm>
 #include <sstream>
 #include <vector>
@@ -47,7 +49,36 @@ Oriented orient(const ex& sum) {
 
 bool reversed(const ex& sum) { return is_a<add>(sum) && orient(sum).flip; }
 
+namespace {
+
+Key compute_key(const ex& e);
+
+struct Hash {
+  std::size_t operator()(const ex& e) const { return e.gethash(); }
+};
+struct Equal {
+  bool operator()(const ex& a, const ex& b) const { return a.is_equal(b); }
+};
+
+}  // namespace
+
+// A key is a function of the expression alone: kept, so that sorting the terms of a large sum
+// by key (and the keys of its parts inside theirs) costs each subexpression's text once, not once
+// per comparison and per level. Bounded: cleared when it holds many.
 Key key(const ex& e) {
+  if (is_a<numeric>(e) || is_a<symbol>(e)) return compute_key(e);
+  thread_local std::unordered_map<ex, Key, Hash, Equal> known;
+  auto it = known.find(e);
+  if (it != known.end()) return it->second;
+  Key k = compute_key(e);
+  if (known.size() > 50000) known.clear();
+  known.emplace(e, k);
+  return k;
+}
+
+namespace {
+
+Key compute_key(const ex& e) {
   if (is_a<numeric>(e)) {
     const numeric& n = ex_to<numeric>(e);
     if (n.is_real() && n.is_negative()) return {true, "#" + number_text(-n)};
@@ -95,5 +126,7 @@ Key key(const ex& e) {
   for (std::size_t i = 0; i < args.size(); ++i) s += (i ? "," : "") + args[i];
   return {false, s + ")"};
 }
+
+}  // namespace
 
 }  // namespace kinergy::expr

@@ -37,24 +37,33 @@ private:
   arb_ptr v_;
 };
 
-/// A CLN integer into FLINT's.
+/// A CLN integer into FLINT's, 64 bits at a time.
 void set_fmpz(fmpz_t z, const cln::cl_I& n) {
   if (cln::integer_length(n) < 62) {
     fmpz_set_si(z, cln::cl_I_to_long(n));
     return;
   }
-  std::ostringstream os;
-  cln::fprintdecimal(os, n);
-  fmpz_set_str(z, os.str().c_str(), 10);
+  const cln::cl_I a = cln::abs(n);
+  const std::size_t limbs = (cln::integer_length(a) + 63) / 64;
+  std::vector<ulong> w(limbs);
+  for (std::size_t i = 0; i < limbs; ++i) w[i] = cln::cl_I_to_UQ(cln::ldb(a, cln::cl_byte(64, 64 * i)));
+  fmpz_set_ui_array(z, w.data(), static_cast<slong>(limbs));
+  if (cln::minusp(n)) fmpz_neg(z, z);
 }
 
-/// FLINT's integer into CLN's.
+/// FLINT's integer into CLN's, 64 bits at a time.
 cln::cl_I to_cl_I(const fmpz_t z) {
   if (fmpz_fits_si(z)) return cln::cl_I(static_cast<long>(fmpz_get_si(z)));
-  char* s = fmpz_get_str(nullptr, 10, z);
-  cln::cl_I r(s);
-  flint_free(s);
-  return r;
+  fmpz_t a;
+  fmpz_init(a);
+  fmpz_abs(a, z);
+  const slong limbs = static_cast<slong>(fmpz_size(a));
+  std::vector<ulong> w(static_cast<std::size_t>(limbs));
+  fmpz_get_ui_array(w.data(), limbs, a);
+  fmpz_clear(a);
+  cln::cl_I r = 0;
+  for (slong i = limbs - 1; i >= 0; --i) r = cln::logior(cln::ash(r, 64), cln::cl_I(static_cast<unsigned long>(w[static_cast<std::size_t>(i)])));
+  return fmpz_sgn(z) < 0 ? cln::cl_I(-r) : r;
 }
 
 /// An exact rational into a ball of `bits` (exact when it fits).
@@ -78,13 +87,12 @@ void set_float(arb_t x, const cln::cl_F& f) {
   fmpq_clear(r);
 }
 
-/// m · 2^e exactly: a rational while the exponent is moderate, else a CLN float that holds it
-/// exactly (a rational of 2^400000 would make every later step slow).
+/// m · 2^e exactly, as a CLN float with as many bits as m (a rational would cost a gcd, and a
+/// rational of 2^400000 would make every later step slow).
 numeric scaled(const cln::cl_I& m, long e) {
-  if (e >= 0 && e <= 4096) return numeric(cln::cl_N(cln::ash(m, e)));
-  if (e < 0 && e >= -4096) return numeric(cln::cl_N(m / cln::ash(cln::cl_I(1), -e)));
-  const long bits = static_cast<long>(cln::integer_length(m)) + 2;
-  const cln::cl_F f = cln::cl_float(m, cln::float_format(static_cast<long>(bits * 0.30103) + 2));
+  if (cln::zerop(m)) return 0;
+  const long bits = std::max<long>(static_cast<long>(cln::integer_length(m)) + 2, 64);
+  const cln::cl_F f = cln::cl_float(m, cln::float_format(static_cast<long>(static_cast<double>(bits) * 0.30103) + 2));
   return numeric(cln::cl_N(cln::scale_float(f, e)));
 }
 
@@ -103,11 +111,11 @@ Enclosure ends(const arb_t x) {
   return {scaled(A, ex), scaled(B, ex)};
 }
 
-/// The n significant digits every value in x rounds to (half away from zero, as `round_sig`),
-/// when they are the same: ±D · 10^k with 10^(n−1) ≤ D < 10^n. Decided on balls: y = |x| ·
-/// 10^(n−1−e10) and ⌊y + ½⌋ must be one integer.
-std::optional<numeric> common_digits(const arb_t x, int n, slong prec) {
-  if (arb_contains_zero(x)) return std::nullopt;
+/// Whether every value in x rounds to the same n significant digits (half away from zero, as
+/// `round_sig`): ±D · 10^k with 10^(n−1) ≤ D < 10^n. Decided on balls: y = |x| · 10^(n−1−e10)
+/// and ⌊y + ½⌋ must be one integer.
+bool common_digits(const arb_t x, int n, slong prec) {
+  if (arb_contains_zero(x)) return false;
   // |mid| < 2^e2: log₁₀|x| is near e2 · log₁₀2
   const slong e2 = arf_abs_bound_lt_2exp_si(arb_midref(x));
   long e10 = static_cast<long>(std::floor(static_cast<double>(e2) * 0.30102999566398120));
@@ -121,7 +129,7 @@ std::optional<numeric> common_digits(const arb_t x, int n, slong prec) {
   fmpz_init(hi);
   fmpz_ui_pow_ui(lo, 10, static_cast<ulong>(n - 1));
   fmpz_ui_pow_ui(hi, 10, static_cast<ulong>(n));
-  std::optional<numeric> out;
+  bool out = false;
   for (int tries = 0; tries < 6; ++tries) {
     const long shift = n - 1 - e10;
     arb_set_ui(t, 10);
@@ -138,13 +146,7 @@ std::optional<numeric> common_digits(const arb_t x, int n, slong prec) {
     } else if (fmpz_cmp(D, lo) < 0) {
       --e10;
     } else {
-      cln::cl_I d = to_cl_I(D);
-      if (arb_is_negative(x)) d = -d;
-      // ±D · 10^(−shift)
-      const numeric p10 = shift <= 4096 && shift >= -4096
-                              ? numeric(cln::cl_N(cln::expt(cln::cl_RA(10), cln::cl_I(-shift))))
-                              : numeric(cln::cl_N(cln::expt(cln::cl_float(10, cln::float_format(n + 20)), cln::cl_I(-shift))));
-      out = numeric(cln::cl_N(d)) * p10;
+      out = true;
       break;
     }
   }
@@ -363,7 +365,10 @@ std::optional<Proven> BallEvaluator::digits(int n, long max_bits) const {
     if (v.status == BallValue::Status::Ok) {
       arb_srcptr x = reg[outs.front()];
       if (!arb_contains_zero(x)) {
-        if (auto d = common_digits(x, n, bits)) return Proven{Proven::Kind::Digits, *d, ends(x), bits};
+        if (common_digits(x, n, bits)) {
+          Enclosure e = ends(x);
+          return Proven{Proven::Kind::Digits, e.mid(), e, bits};
+        }
       } else if (arb_is_zero(x)) {
         return Proven{Proven::Kind::Exact, 0, {0, 0}, bits};  // an exact zero: the ball is the point 0
       } else if (bits >= std::min(zero_bits, max_bits)) {
@@ -467,8 +472,8 @@ std::optional<Proven> root_digits(const ex& r, const symbol& u, const numeric& x
     if (sa != 0 && sb != 0 && sa != sb && R.impl_->run(bits, reg_r, outs_r, I) == St::Ok) {
       Enclosure e = ends(I);
       if (lo < hi && (e.lo < lo || e.hi > hi)) break;  // not the root of the solver's bracket
-      if (auto d = common_digits(I, n, bits)) {
-        out = Proven{Proven::Kind::Digits, *d, e, bits};
+      if (common_digits(I, n, bits)) {
+        out = Proven{Proven::Kind::Digits, e.mid(), e, bits};
         break;
       }
     }

@@ -248,9 +248,9 @@ std::optional<Precise> Evaluator::digits(int n) const {
   const long working = static_cast<long>(static_cast<double>(p->bits) * 0.30102999566398120);
   switch (p->kind) {
     case Proven::Kind::Exact: return Precise{p->value, 0, true, false, 0, true, p->value, p->value};
-    // the midpoint: it rounds to the proven digits, and carries more for a caller that rounds
-    // again (an exact binary fraction; beyond 2^±4096 the proven rounding itself)
-    case Proven::Kind::Digits: return Precise{p->at.lo.is_rational() ? p->at.mid() : p->value, working, false, false, 0, true, p->at.lo, p->at.hi};
+    // the midpoint: it rounds to the proven digits (it lies inside the ball, whose every value
+    // rounds to them), and carries more digits for a caller that rounds again
+    case Proven::Kind::Digits: return Precise{p->at.mid(), working, false, false, 0, true, p->at.lo, p->at.hi};
     case Proven::Kind::Unsigned: {
       numeric m = std::max(abs(p->at.lo), abs(p->at.hi));
       return Precise{0, working, false, true, round_up2(m).to_double(), true, p->at.lo, p->at.hi};

@@ -1,7 +1,12 @@
 #include "kinergy/numeric/stable.hpp"
 
 #include <algorithm>
+#include <map>
 #include <optional>
+#include <set>
+#include <string>
+#include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "kinergy/expr/canonical.hpp"
@@ -144,27 +149,93 @@ std::optional<ex> pair_rewrite(const ex& ti, const ex& tj) {
   return std::nullopt;
 }
 
+/// A term without its numeric coefficient, as text: terms that a pattern pairs (A and −A cos x,
+/// A sin y and −A sin x) have equal signatures once the factor the pattern names is taken out.
+std::string signature(const ex& t) {
+  if (is_a<numeric>(t)) return "1";
+  if (!is_a<mul>(t)) return expr::key(t).text;
+  ex rest = 1;
+  for (const ex& f : t)
+    if (!is_a<numeric>(f)) rest *= f;
+  return expr::key(rest).text;
+}
+
+bool special(const ex& f) { return is_fn(f, "cos") || is_fn(f, "sin") || is_sqrt(f) || is_square(f); }
+
+/// The first pair (i, j), in the order of the exhaustive search (i, then j), that a pattern
+/// rewrites; through an index of signatures, so that a sum of T terms costs about T lookups
+/// instead of T² trials. A pattern pairs ti with tj = B·f only where ti, or ti without one of its
+/// own sin/cos/√/square factors, has the signature of B.
+/// Pairs of terms already tried without a rewrite: a rewrite replaces two terms by one and leaves
+/// the others, so each later round tries only the pairs with the new term.
+struct Failed {
+  std::set<std::pair<ex, ex>, bool (*)(const std::pair<ex, ex>&, const std::pair<ex, ex>&)> pairs{
+      [](const std::pair<ex, ex>& a, const std::pair<ex, ex>& b) {
+        int c = a.first.compare(b.first);
+        return c != 0 ? c < 0 : a.second.compare(b.second) < 0;
+      }};
+  std::optional<ex> rewrite(const ex& ti, const ex& tj) {
+    if (pairs.count({ti, tj})) return std::nullopt;
+    auto r = pair_rewrite(ti, tj);
+    if (!r) pairs.insert({ti, tj});
+    return r;
+  }
+};
+
+std::optional<std::tuple<std::size_t, std::size_t, ex>> indexed_pair(const std::vector<ex>& terms, Failed& failed) {
+  std::unordered_map<std::string, std::vector<std::size_t>> by_sig;
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    by_sig[signature(terms[i])].push_back(i);
+    for (const ex& g : factors(terms[i]))
+      if (special(g)) by_sig[signature(terms[i] / g)].push_back(i);
+  }
+  std::map<std::pair<std::size_t, std::size_t>, bool> tried;
+  std::optional<std::tuple<std::size_t, std::size_t, ex>> best;
+  for (std::size_t j = 0; j < terms.size(); ++j)
+    for (const ex& f : factors(terms[j])) {
+      if (!special(f)) continue;
+      auto it = by_sig.find(signature(terms[j] / f));
+      if (it == by_sig.end()) continue;
+      for (std::size_t i : it->second) {
+        if (i == j || tried.count({i, j})) continue;
+        tried[{i, j}] = true;
+        if (best && std::make_pair(i, j) > std::make_pair(std::get<0>(*best), std::get<1>(*best))) continue;
+        if (auto r = failed.rewrite(terms[i], terms[j])) best = std::make_tuple(i, j, *r);
+      }
+    }
+  return best;
+}
+
 ex rewrite_sum(const ex& s) {
   // the terms in the order of their keys: where several pairs could be rewritten, the same pair
   // is, in every run (GiNaC's order follows addresses)
   std::vector<ex> terms(s.begin(), s.end());
   std::stable_sort(terms.begin(), terms.end(), [](const ex& a, const ex& b) { return expr::key(a).text < expr::key(b).text; });
+  // a small sum: every pair is tried (a pattern may also match terms equal only once expanded);
+  // a large one: only the pairs whose signatures agree
+  constexpr std::size_t kExhaustive = 24;
+  Failed failed;
   bool changed = true;
   while (changed) {
     changed = false;
-    for (std::size_t i = 0; i < terms.size() && !changed; ++i)
-      for (std::size_t j = 0; j < terms.size() && !changed; ++j) {
-        if (i == j) continue;
-        if (auto r = pair_rewrite(terms[i], terms[j])) {
-          // the pair becomes one product; the other terms stay
-          std::vector<ex> rest;
-          for (std::size_t k = 0; k < terms.size(); ++k)
-            if (k != i && k != j) rest.push_back(terms[k]);
-          rest.push_back(*r);
-          terms = rest;
-          changed = terms.size() > 1;
-        }
-      }
+    std::optional<std::tuple<std::size_t, std::size_t, ex>> hit;
+    if (terms.size() > kExhaustive) {
+      hit = indexed_pair(terms, failed);
+    } else {
+      for (std::size_t i = 0; i < terms.size() && !hit; ++i)
+        for (std::size_t j = 0; j < terms.size() && !hit; ++j)
+          if (i != j)
+            if (auto r = failed.rewrite(terms[i], terms[j])) hit = std::make_tuple(i, j, *r);
+    }
+    if (!hit) break;
+    // the pair becomes one product; the other terms stay
+    auto [i, j, r] = *hit;
+    std::vector<ex> rest;
+    for (std::size_t k = 0; k < terms.size(); ++k)
+      if (k != i && k != j) rest.push_back(terms[k]);
+    rest.push_back(r);
+    terms = rest;
+    changed = terms.size() > 1;
   }
   ex out = 0;
   for (auto& t : terms) out += t;

@@ -37,7 +37,7 @@ struct Proven {
     Digits,    ///< every value in `at` rounds to the same N significant digits: `value` is that rounding
     Unsigned,  ///< the enclosure keeps holding 0 as the precision rises: |value| ≤ max(|lo|, |hi|), sign not fixed
   } kind = Kind::Exact;
-  GiNaC::numeric value;  ///< Exact: the value; Digits: the N-digit rounding (exact decimal)
+  GiNaC::numeric value;  ///< Exact: the value; Digits: the ball's midpoint (it rounds to the N digits)
   Enclosure at;          ///< Digits, Unsigned: the last enclosure
   long bits = 0;         ///< the precision (bits) of the last evaluation
 };
