@@ -24,6 +24,13 @@
 // repeats), and with --out DIR the same as DIR/derivation_time_kinergy.csv and .json.
 // --print-mass N prints the entries of M(q) for the N-link scene, one "i j entry" line each
 // (plain GiNaC text in th1..thN, m, L), for tests/bench/sympy_nlink.py to check against sympy.
+//
+// Like with like: sympy's `forcing` holds the velocity-product (centrifugal) terms, which T, V, M
+// and Q do not. So each repeat also times, on a model built anew, the full equations of motion
+// M(q) q̈ = f(q, q̇) = Q − c(q, q̇) as the simulator derives them (simulate::equations_of_motion:
+// M, the velocity products c and every effect's Q): kinergy_eom_ms = build + that. --print-eom N
+// prints M ("M i j entry") and f ("f i entry", rates th1_dot..thN_dot) for the check against
+// sympy's mass_matrix and forcing.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -40,6 +47,7 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/model.hpp"
 #include "kinergy/scene/scene.hpp"
+#include "kinergy/simulate/equations.hpp"
 
 namespace {
 
@@ -126,11 +134,12 @@ struct Row {
   int n = 0;
   double total_ms = 0, build_ms = 0, tvmq_ms = 0, parse_ms = 0, cpu_ms = 0;  ///< medians
   int repeats = 0;
+  double eom_ms = 0, eom_cpu_ms = 0;  ///< build + full equations of motion (M, c, Q), medians
 };
 
 Row time_n(int n, double min_seconds, int min_repeats) {
   const std::string text = nlink_scene(n);
-  std::vector<double> total, build, tvmq, parse, cpu;
+  std::vector<double> total, build, tvmq, parse, cpu, eom, eom_cpu;
   double spent_ms = 0;
   while (static_cast<int>(total.size()) < min_repeats || spent_ms < 1000 * min_seconds) {
     auto tp = Clock::now();
@@ -148,9 +157,21 @@ Row time_n(int n, double min_seconds, int min_repeats) {
     build.push_back(b);
     tvmq.push_back(w);
     total.push_back(b + w);
-    spent_ms += b + w;
+    // the full equations of motion, on a model of its own (nothing carried over from T, V, M, Q)
+    double c1 = cpu_ms();
+    auto t2 = Clock::now();
+    kinergy::model::Model fresh = kinergy::model::Model::build(def);
+    kinergy::simulate::Equations eq = kinergy::simulate::equations_of_motion(fresh);
+    double e = ms_since(t2);
+    eom_cpu.push_back(cpu_ms() - c1);
+    g_sink = g_sink + eq.M.rows() + eq.c.size() + eq.forces.size();
+    eom.push_back(e);
+    spent_ms += b + w + e;
   }
-  return {n, median(total), median(build), median(tvmq), median(parse), median(cpu), static_cast<int>(total.size())};
+  Row r{n, median(total), median(build), median(tvmq), median(parse), median(cpu), static_cast<int>(total.size())};
+  r.eom_ms = median(eom);
+  r.eom_cpu_ms = median(eom_cpu);
+  return r;
 }
 
 std::vector<int> parse_list(const std::string& text) {
@@ -164,7 +185,7 @@ std::vector<int> parse_list(const std::string& text) {
 
 int usage() {
   std::cerr << "usage: derivation_time [--n 1,2,4,8,16] [--min-seconds 0.2] [--min-repeats 3] "
-               "[--out DIR] [--print-mass N]\n";
+               "[--out DIR] [--print-mass N] [--print-eom N]\n";
   return 2;
 }
 
@@ -173,7 +194,7 @@ int usage() {
 int main(int argc, char** argv) {
   std::vector<int> ns{1, 2, 4, 8, 16};
   double min_seconds = 0.2;
-  int min_repeats = 3, print_mass = 0;
+  int min_repeats = 3, print_mass = 0, print_eom = 0;
   std::string out_dir;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -182,6 +203,7 @@ int main(int argc, char** argv) {
     else if (a == "--min-repeats" && i + 1 < argc) min_repeats = std::max(1, std::atoi(argv[++i]));
     else if (a == "--out" && i + 1 < argc) out_dir = argv[++i];
     else if (a == "--print-mass" && i + 1 < argc) print_mass = std::atoi(argv[++i]);
+    else if (a == "--print-eom" && i + 1 < argc) print_eom = std::atoi(argv[++i]);
     else return usage();
   }
   if (ns.empty() || std::any_of(ns.begin(), ns.end(), [](int n) { return n < 1; })) return usage();
@@ -195,32 +217,46 @@ int main(int argc, char** argv) {
       return 0;
     }
 
+    if (print_eom > 0) {
+      auto model = kinergy::model::Model::build(kinergy::scene::load_string(nlink_scene(print_eom), "<nlink>"));
+      auto eq = kinergy::simulate::equations_of_motion(model);
+      for (unsigned i = 0; i < eq.M.rows(); ++i)
+        for (unsigned j = 0; j < eq.M.cols(); ++j) std::cout << "M " << i << ' ' << j << ' ' << eq.M(i, j) << '\n';
+      // f = Σ Q − c: what stands on the right of M q̈ = f
+      for (std::size_t i = 0; i < eq.q.size(); ++i) {
+        GiNaC::ex f = -eq.c[i];
+        for (auto& ft : eq.forces) f += ft.Q[i];
+        std::cout << "f " << i << ' ' << f << '\n';
+      }
+      return 0;
+    }
+
     std::vector<Row> rows;
-    std::printf("%4s %14s %12s %16s %12s %15s %8s\n", "N", "kinergy_ms", "build_ms", "kinergy_tvmq_ms", "parse_ms",
-                "kinergy_cpu_ms", "repeats");
+    std::printf("%4s %14s %12s %16s %12s %15s %8s %14s\n", "N", "kinergy_ms", "build_ms", "kinergy_tvmq_ms", "parse_ms",
+                "kinergy_cpu_ms", "repeats", "kinergy_eom_ms");
     for (int n : ns) {
       Row r = time_n(n, min_seconds, min_repeats);
-      std::printf("%4d %14.4f %12.4f %16.4f %12.4f %15.4f %8d\n", r.n, r.total_ms, r.build_ms, r.tvmq_ms,
-                  r.parse_ms, r.cpu_ms, r.repeats);
+      std::printf("%4d %14.4f %12.4f %16.4f %12.4f %15.4f %8d %14.4f\n", r.n, r.total_ms, r.build_ms, r.tvmq_ms,
+                  r.parse_ms, r.cpu_ms, r.repeats, r.eom_ms);
       std::fflush(stdout);
       rows.push_back(r);
     }
 
     if (!out_dir.empty()) {
       std::ofstream csv(out_dir + "/derivation_time_kinergy.csv");
-      csv << "N,kinergy_ms,build_ms,kinergy_tvmq_ms,parse_ms,kinergy_cpu_ms,repeats\n";
+      csv << "N,kinergy_ms,build_ms,kinergy_tvmq_ms,parse_ms,kinergy_cpu_ms,repeats,kinergy_eom_ms,kinergy_eom_cpu_ms\n";
       std::ofstream json(out_dir + "/derivation_time_kinergy.json");
       json << "[\n";
       char line[256];
       for (std::size_t k = 0; k < rows.size(); ++k) {
         const Row& r = rows[k];
-        std::snprintf(line, sizeof line, "%d,%.6g,%.6g,%.6g,%.6g,%.6g,%d\n", r.n, r.total_ms, r.build_ms,
-                      r.tvmq_ms, r.parse_ms, r.cpu_ms, r.repeats);
+        std::snprintf(line, sizeof line, "%d,%.6g,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g\n", r.n, r.total_ms, r.build_ms,
+                      r.tvmq_ms, r.parse_ms, r.cpu_ms, r.repeats, r.eom_ms, r.eom_cpu_ms);
         csv << line;
         std::snprintf(line, sizeof line,
                       "  {\"N\": %d, \"kinergy_ms\": %.6g, \"build_ms\": %.6g, \"kinergy_tvmq_ms\": %.6g, "
-                      "\"parse_ms\": %.6g, \"kinergy_cpu_ms\": %.6g, \"repeats\": %d}%s\n",
-                      r.n, r.total_ms, r.build_ms, r.tvmq_ms, r.parse_ms, r.cpu_ms, r.repeats,
+                      "\"parse_ms\": %.6g, \"kinergy_cpu_ms\": %.6g, \"repeats\": %d, \"kinergy_eom_ms\": %.6g}%s\n",
+                      r.n, r.total_ms, r.build_ms, r.tvmq_ms, r.parse_ms, r.cpu_ms, r.repeats, r.eom_ms,
                       k + 1 < rows.size() ? "," : "");
         json << line;
       }

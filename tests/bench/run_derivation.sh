@@ -27,7 +27,7 @@ if ((quick)); then
   ns=1,2,4 out="$bench"
   kin_opts=(--min-seconds 0.05) py_opts=(--max-seconds 30 --min-seconds 0.05)
 else
-  ns=1,2,4,8,16 out=docs
+  ns=1,2,4,8,16,32 out=docs
   kin_opts=() py_opts=(--max-seconds 120)
 fi
 
@@ -81,7 +81,8 @@ def cell(n, method):
 def ratio(n, method, cpu=False):
     """(text, value): sympy time / kinergy time (wall-clock, or CPU time); a lower bound when
     sympy did not finish (its CPU time was not measured then)."""
-    k = float(kin[n]["kinergy_cpu_ms" if cpu else "kinergy_ms"])
+    # like with like: sympy's mass_matrix and forcing against kinergy's full equations of motion
+    k = float(kin[n]["kinergy_eom_cpu_ms" if cpu else "kinergy_eom_ms"])
     s = ms(n, method, "cpu_ms" if cpu else "median_ms")
     if s is not None:
         return (f"{s / k:.0f}×" if s / k >= 10 else f"{s / k:.2g}×"), s / k
@@ -100,9 +101,13 @@ md.append(f"- command: `{command}`\n")
 md.append("The system: N uniform slender rods (mass m, length L), a chain hanging from a fixed pin, "
           "pins between consecutive links, gravity; coordinates the absolute angles th1..thN of the "
           "links from the x axis.\n")
-md.append("- **kinergy**: `Model::build` from the parsed scene (the kinematics of every body), then "
-          "T, V, M(q) and Q_i = Σ_effects `generalized_force(e, i)` for every coordinate. Parsing the "
-          "scene text is not included (shown apart).")
+md.append("- **kinergy, equations of motion** (compared with sympy): `Model::build` from the parsed "
+          "scene (the kinematics of every body), then the full equations of motion M(q) q̈ = Q − c(q, q̇) "
+          "as the simulator derives them (`simulate::equations_of_motion`: M, the velocity products c, "
+          "every effect's Q) — what sympy's `mass_matrix` and `forcing` hold. Parsing the scene text is "
+          "not included (shown apart).")
+md.append("- **kinergy, T, V, M, Q**: `Model::build`, then T, V, M(q) and Q_i = Σ_effects "
+          "`generalized_force(e, i)`, without the velocity products (shown for reference).")
 md.append("- **sympy Lagrange**: the frames, points and bodies, L = T − V, `LagrangesMethod(L, q)"
           ".form_lagranges_equations()`, `mass_matrix` and `forcing`.")
 md.append("- **sympy Kane**: the frames, points and bodies with u_i = th_i', the gravity loads, "
@@ -110,15 +115,15 @@ md.append("- **sympy Kane**: the frames, points and bodies with u_i = th_i', the
 md.append("- **sympy T, V**: the frames, points and bodies, T and V only.\n")
 md.append("Each time is the median of at least 3 repeats and 0.2 s in total (kinergy: in one process, "
           "a new Model each repeat; sympy: each repeat in a fresh process with sympy's cache cleared), "
-          f"with at most {max_s} s per sympy case (N, method). Note that sympy's `forcing` also holds "
-          "the velocity-product (centrifugal) terms of the equations of motion, which kinergy does "
-          "not derive here: sympy does more work than T, V, M, Q.\n")
-md.append("| N | kinergy (ms) | of which T, V, M, Q (ms) | parse (ms) | sympy T, V (ms) | sympy Lagrange (ms) "
+          f"with at most {max_s} s per sympy case (N, method). The ratios compare like with like: "
+          "kinergy's full equations of motion (velocity products included) against sympy's "
+          "`mass_matrix` and `forcing`.\n")
+md.append("| N | kinergy equations of motion (ms) | kinergy T, V, M, Q (ms) | parse (ms) | sympy T, V (ms) | sympy Lagrange (ms) "
           "| sympy Kane (ms) | Lagrange / kinergy | Kane / kinergy |")
 md.append("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 for n in ns:
     k = kin[n]
-    md.append(f"| {n} | {fmt(float(k['kinergy_ms']))} | {fmt(float(k['kinergy_tvmq_ms']))} | "
+    md.append(f"| {n} | {fmt(float(k['kinergy_eom_ms']))} | {fmt(float(k['kinergy_ms']))} | "
               f"{fmt(float(k['parse_ms']))} | {cell(n, 'tv')} | {cell(n, 'lagrange')} | {cell(n, 'kane')} | "
               f"{ratio(n, 'lagrange')[0]} | {ratio(n, 'kane')[0]} |")
 md.append("")
@@ -138,31 +143,31 @@ for n, method, name, want in ((4, "lagrange", "LagrangesMethod", 50), (16, "kane
 md.append("")
 if check:
     agree = "agree" if check["status"] == "agree" else "**DIFFER**"
-    md.append(f"M(q) check: kinergy's mass matrix for N = 2 and sympy's (both methods) {agree}: "
-              f"{check['note']}.\n")
+    md.append(f"Check of like with like: kinergy's M(q) and f(q, q̇) = Q − c for N = 2 and sympy's "
+              f"`mass_matrix` and `forcing` (both methods) {agree}: {check['note']}.\n")
 md.append(f"![Derivation time against N](derivation_time.svg)")
 open(f"{out}/derivation_time.md", "w").write("\n".join(md) + "\n")
 
 # the figure: time against N, log-log, one series per method (a case that did not finish is left out)
 with open(f"{bench}/derivation_time.dat", "w") as dat:
-    dat.write("# N kinergy_ms lagrange_ms kane_ms\n")
+    dat.write("# N kinergy_eom_ms lagrange_ms kane_ms\n")
     for n in ns:
-        cols = [kin[n]["kinergy_ms"]] + [str(ms(n, m)) if ms(n, m) is not None else "NaN" for m in ("lagrange", "kane")]
+        cols = [kin[n]["kinergy_eom_ms"]] + [str(ms(n, m)) if ms(n, m) is not None else "NaN" for m in ("lagrange", "kane")]
         dat.write(f"{n} {' '.join(cols)}\n")
 with open(f"{bench}/derivation_time.gp", "w") as gp:
     gp.write(f"""set terminal svg size 800,520 dynamic enhanced font 'sans,11' background 'white'
 set output '{out}/derivation_time.svg'
-set title 'Derivation time of T, V, M(q), Q: N-link pendulum ({machine.split(",")[0]}, {machine.split(",")[1].strip()})' noenhanced
+set title 'Derivation time of the equations of motion M(q), f(q, q'): N-link pendulum ({machine.split(",")[0]}, {machine.split(",")[1].strip()})' noenhanced
 set logscale xy
-set xrange [0.85:19]
-set xtics (1, 2, 4, 8, 16)
+set xrange [0.85:38]
+set xtics (1, 2, 4, 8, 16, 32)
 set format y '%g'
 set grid
 set key top left
 set xlabel 'N (links)'
 set ylabel 'time (ms)'
 set datafile missing 'NaN'
-plot '{bench}/derivation_time.dat' using 1:2 with linespoints pointtype 7 title 'kinergy (Model::build + T, V, M, Q)', \\
+plot '{bench}/derivation_time.dat' using 1:2 with linespoints pointtype 7 title 'kinergy (Model::build + M, c, Q)', \\
      '' using 1:3 with linespoints pointtype 5 title 'sympy LagrangesMethod', \\
      '' using 1:4 with linespoints pointtype 9 title 'sympy KanesMethod'
 """)

@@ -144,33 +144,43 @@ def time_case(method, n, args):
 
 
 def check_mass(exe):
-    """kinergy's M(q) for N = 2 against sympy's (Lagrange and Kane) at a random configuration."""
-    out = subprocess.run([exe, "--print-mass", "2"], check=True, capture_output=True, text=True).stdout
+    """kinergy's M(q) and f(q, q') = Q - c for N = 2 against sympy's mass_matrix and forcing
+    (Lagrange and Kane) at a random configuration and rates: like with like."""
+    out = subprocess.run([exe, "--print-eom", "2"], check=True, capture_output=True, text=True).stdout
     rng = random.Random(20240606)
-    vals = {"th1": rng.uniform(-3, 3), "th2": rng.uniform(-3, 3), "m": rng.uniform(0.5, 3),
-            "L": rng.uniform(0.2, 2)}
+    vals = {"th1": rng.uniform(-3, 3), "th2": rng.uniform(-3, 3), "th1_dot": rng.uniform(-3, 3),
+            "th2_dot": rng.uniform(-3, 3), "m": rng.uniform(0.5, 3), "L": rng.uniform(0.2, 2),
+            "g": 9.81}
     names = {k: sympy.Symbol(k) for k in vals}
     K = sympy.zeros(2, 2)
+    F = sympy.zeros(2, 1)
     for line in out.splitlines():
-        i, j, entry = line.split(" ", 2)
-        K[int(i), int(j)] = sympy.sympify(entry, locals=names).subs({names[k]: v for k, v in vals.items()})
+        parts = line.split(" ")
+        if parts[0] == "M":
+            K[int(parts[1]), int(parts[2])] = sympy.sympify(" ".join(parts[3:]), locals=names).subs({names[k]: v for k, v in vals.items()})
+        else:
+            F[int(parts[1]), 0] = sympy.sympify(" ".join(parts[2:]), locals=names).subs({names[k]: v for k, v in vals.items()})
     # the same symbols as nlink() makes: sympy symbols are equal by name and assumptions
-    m, L = sympy.symbols("m L", positive=True)
+    m, L, g = sympy.symbols("m L g", positive=True)
     th1, th2 = me.dynamicsymbols("th1 th2")
-    sub = {th1: vals["th1"], th2: vals["th2"], m: vals["m"], L: vals["L"]}
+    u1, u2 = me.dynamicsymbols("u1 u2")
+    t = me.dynamicsymbols._t
+    sub = {th1.diff(t): vals["th1_dot"], th2.diff(t): vals["th2_dot"], u1: vals["th1_dot"], u2: vals["th2_dot"]}
+    sub2 = {th1: vals["th1"], th2: vals["th2"], m: vals["m"], L: vals["L"], g: vals["g"]}
     worst = 0.0
     for method in ("lagrange", "kane"):
-        M, _ = CASES[method](2)
-        Ms = M.subs(sub).evalf()
-        for i in range(2):
-            for j in range(2):
-                a, b = float(K[i, j]), float(Ms[i, j])
-                rel = abs(a - b) / max(abs(b), 1e-300)
-                worst = max(worst, rel)
-                print(f"mass check {method}: M[{i},{j}] kinergy {a:.15g} sympy {b:.15g}", file=sys.stderr)
+        M, f = CASES[method](2)
+        Ms = M.subs(sub).subs(sub2).evalf()
+        fs = f.subs(sub).subs(sub2).evalf()
+        pairs = [(f"M[{i},{j}]", float(K[i, j]), float(Ms[i, j])) for i in range(2) for j in range(2)]
+        pairs += [(f"f[{i}]", float(F[i, 0]), float(fs[i])) for i in range(2)]
+        for what, a, b in pairs:
+            rel = abs(a - b) / max(abs(b), 1e-300)
+            worst = max(worst, rel)
+            print(f"check {method}: {what} kinergy {a:.15g} sympy {b:.15g}", file=sys.stderr)
     at = ", ".join(f"{k} = {v:.6g}" for k, v in vals.items())
     ok = worst < 1e-12
-    print(f"mass check N=2 at {at}: worst relative difference {worst:.3g} "
+    print(f"M and forcing check N=2 at {at}: worst relative difference {worst:.3g} "
           f"({'agree' if ok else 'DIFFER'})", file=sys.stderr)
     return ok, at, worst
 
