@@ -213,7 +213,10 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
   }
   std::optional<numerics::Precise> d;
   try {
-    d = ev.digits(digits);
+    // the default (prefer_double) is not a proof: where the double cannot decide, two CLN
+    // precisions that agree do, as fast as the double's own fallback should be; asked for digits
+    // (--digits), ball arithmetic proves them
+    d = prefer_double ? ev.settled(digits) : ev.digits(digits);
   } catch (const std::domain_error& e) {
     throw SceneError(pos, "'" + name + "' cannot be evaluated: " + e.what(), "check the sizes of the angles in it");
   }

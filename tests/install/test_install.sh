@@ -26,6 +26,13 @@ if command -v help2man >/dev/null; then
 fi
 # the CLI
 [ "$("$prefix/bin/kinergy" --version)" = "kinergy 0.1.0" ] || fail "kinergy --version: $("$prefix/bin/kinergy" --version)"
+# proven digits: the ball arithmetic module, found beside the installed CLI (<prefix>/LIBDIR/kinergy)
+arb=$(find "$prefix" -name kinergy_arb.so | head -1)
+[ -n "$arb" ] || fail "no kinergy_arb.so installed"
+out=$(LD_DEBUG=files "$prefix/bin/kinergy" solve "$src/derivations/energy/sliding_rod.yaml" --digits 20 2>&1)
+grep -q '= 3.5017852589786256052 rad/s   (proven: ball radius' <<<"$out" || fail "--digits 20 with the installed CLI printed: $out"
+grep -q "file=$arb " <<<"$out" || grep -q "file=$(cd "$(dirname "$arb")" && pwd -P)/kinergy_arb.so " <<<"$out" ||
+  fail "the installed CLI did not load its own module $arb: $(grep -o 'file=[^ ]*kinergy_arb.so' <<<"$out")"
 check_omega() {  # the consumer's output: omega2 = … = 3.50… (to the scene's three figures)
   grep -E '^omega2 = .* = 3\.50[0-9]*$' <<<"$1" >/dev/null || fail "$2 printed: $1"
 }
@@ -53,5 +60,10 @@ if [ -e "$build/python" ]; then
   [ -n "$module" ] || fail "the Python module is not installed"
   got=$(PYTHONPATH="$(dirname "$module")" /usr/bin/python3 -c "import kinergy; print(float(kinergy.load('$src/derivations/energy/sliding_rod.yaml').solve()['omega2']))")
   grep -E '^3\.50' <<<"$got" >/dev/null || fail "the installed Python module printed: $got"
+  # its proven digits, from the module installed beside it
+  got=$(LD_DEBUG=files PYTHONPATH="$(dirname "$module")" /usr/bin/python3 -c "import kinergy; print(kinergy.load('$src/derivations/energy/sliding_rod.yaml').solve()['omega2'].ball(20))" 2>&1)
+  grep -q "'proven': True" <<<"$got" || fail "the installed Python module's ball(20): $got"
+  grep -q "file=$arb " <<<"$got" || grep -q "file=$(cd "$(dirname "$arb")" && pwd -P)/kinergy_arb.so " <<<"$got" ||
+    fail "the installed Python module did not load the module installed beside it: $(grep -o 'file=[^ ]*kinergy_arb.so' <<<"$got")"
 fi
 echo "test_install: installed, found by CMake and pkg-config, man page, completion and the Python module work"

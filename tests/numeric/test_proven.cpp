@@ -184,3 +184,22 @@ TEST_CASE("ball arithmetic: undefined, indeterminate and exact cases of the tape
   CHECK(kn::round_up2(numeric(1234, 100000)) == numeric(13, 1000));
   CHECK(kn::round_up2(numeric(13, 1000)) == numeric(13, 1000));
 }
+
+TEST_CASE("proven: without the ball arithmetic module, --digits says where it looked and what to do",
+          "[numeric][proven][cli]") {
+  // the module is loaded only when proven digits are asked for: without it the default still works
+  int status = 0;
+  const std::string env = "KINERGY_ARB_MODULE=/nonexistent/kinergy_arb.so ";
+  std::string out = kt::run_command("cd " + kt::shell_quoted(KINERGY_SOURCE_DIR) + " && " + env + kt::shell_quoted(KINERGY_CLI) +
+                                        " solve derivations/energy/rolling_disk_incline.yaml 2>&1",
+                                    &status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= 3.66345061712305 m/s"));
+  out = kt::run_command("cd " + kt::shell_quoted(KINERGY_SOURCE_DIR) + " && " + env + kt::shell_quoted(KINERGY_CLI) +
+                            " solve derivations/energy/rolling_disk_incline.yaml --digits 30 2>&1",
+                        &status);
+  CHECK(status != 0);
+  CHECK_THAT(out, Catch::Contains("the ball arithmetic module kinergy_arb.so was not found (looked for /nonexistent/kinergy_arb.so)") &&
+                      Catch::Contains("set KINERGY_ARB_MODULE to its path"));
+  CHECK_THAT(out, !Catch::Contains("terminate") && !Catch::Contains("internal error"));
+}

@@ -20,16 +20,6 @@ struct Enclosure {
   bool has_zero() const { return !lo.is_positive() && !hi.is_negative(); }
 };
 
-/// What one evaluation on balls of a given precision tells.
-struct BallValue {
-  enum class Status {
-    Ok,             ///< `at` holds the exact value
-    Undefined,      ///< proven undefined: √ of a negative number, a division by an exact zero, …
-    Indeterminate,  ///< this precision cannot tell (a divisor's ball holds 0, √ of a ball that holds 0 and negatives)
-  } status = Status::Indeterminate;
-  Enclosure at;
-};
-
 /// A value with N digits fixed by its enclosure, or the enclosure that could not fix them.
 struct Proven {
   enum class Kind {
@@ -42,7 +32,9 @@ struct Proven {
   long bits = 0;         ///< the precision (bits) of the last evaluation
 };
 
-/// A tape bound to exact input values, evaluated on balls.
+/// A tape bound to exact input values, evaluated on balls. The arithmetic itself is Arb's, in a
+/// module of its own (kinergy_arb.so) loaded when the first BallEvaluator is made: @throws
+/// InputError naming where it was looked for, and what to do, when it cannot be loaded.
 class BallEvaluator {
 public:
   /// `inputs`: one exact value per tape input (a rational, or an exact form such as π/6 or √2,
@@ -53,10 +45,6 @@ public:
   ~BallEvaluator();
   BallEvaluator(BallEvaluator&&) noexcept;
   BallEvaluator& operator=(BallEvaluator&&) noexcept;
-
-  /// Every output at `bits` of precision (out[k] for output k).
-  std::vector<BallValue> at_all(long bits) const;
-  BallValue at(long bits) const { return at_all(bits).front(); }
 
   /// N significant digits proven: the precision starts near what N needs and doubles until the
   /// enclosure's ends round alike, or until `max_bits`. @returns nothing when the form is proven
@@ -70,8 +58,6 @@ public:
   struct Impl;
 
 private:
-  friend std::optional<Proven> root_digits(const GiNaC::ex&, const GiNaC::symbol&, const GiNaC::numeric&, const GiNaC::numeric&,
-                                           const GiNaC::numeric&, const GiNaC::exmap&, int, long);
   std::unique_ptr<Impl> impl_;
   bool from_float_ = false;
 };
@@ -85,10 +71,6 @@ private:
 /// max_bits proves the digits.
 std::optional<Proven> root_digits(const GiNaC::ex& r, const GiNaC::symbol& u, const GiNaC::numeric& x0, const GiNaC::numeric& lo,
                                   const GiNaC::numeric& hi, const GiNaC::exmap& values, int n, long max_bits);
-
-/// An exact value (rational, π/6, √2, …) enclosed at `bits`: nothing when it is not a real number
-/// or is undefined.
-std::optional<Enclosure> enclose(const GiNaC::ex& exact, long bits);
 
 /// Bits for n decimal digits (n·log₂10), rounded up.
 long bits_for(int n);

@@ -1,0 +1,410 @@
+// The ball arithmetic module (see arb_api.hpp): the only code that links Arb and FLINT, loaded
+// with dlopen by numeric/ball.cpp when proven digits are first asked for. It knows no GiNaC: a
+// tape comes in as plain instructions and constants, enclosures go back as integers' digits.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <arb.h>
+
+#include "arb_api.hpp"
+
+namespace {
+
+using namespace kinergy::numerics::arbapi;
+
+/// The tape's operations, numbered as Tape::Op (numeric/tape.hpp; ball.cpp checks the numbering).
+enum class Op : std::uint8_t {
+  Const, Input, Add, Mul, Div, Neg, Sq, Cube, Powi, Sqrt, Rsqrt, Pow,
+  Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Exp, Log, Abs, Sinh, Cosh, Tanh
+};
+
+enum class Status { Ok, Undefined, Indeterminate };
+
+/// A vector of Arb balls, freed with it.
+class Balls {
+public:
+  explicit Balls(std::size_t n = 0) : n_(n), v_(n ? _arb_vec_init(static_cast<slong>(n)) : nullptr) {}
+  ~Balls() {
+    if (v_) _arb_vec_clear(v_, static_cast<slong>(n_));
+  }
+  Balls(const Balls&) = delete;
+  Balls& operator=(const Balls&) = delete;
+  Balls(Balls&& o) noexcept : n_(o.n_), v_(o.v_) {
+    o.v_ = nullptr;
+    o.n_ = 0;
+  }
+  arb_ptr operator[](std::size_t i) const { return v_ + i; }
+  std::size_t size() const { return n_; }
+
+private:
+  std::size_t n_;
+  arb_ptr v_;
+};
+
+/// A constant at `bits`: a rational rounded (exact when it fits), or π, γ, G.
+void set_const(arb_t x, const Const& c, long bits) {
+  switch (c.kind) {
+    case Const::Pi: arb_const_pi(x, bits); return;
+    case Const::Euler: arb_const_euler(x, bits); return;
+    case Const::Catalan: arb_const_catalan(x, bits); return;
+    case Const::Rational: break;
+  }
+  fmpq_t q;
+  fmpq_init(q);
+  fmpz_set_str(fmpq_numref(q), c.num.c_str(), 10);
+  fmpz_set_str(fmpq_denref(q), c.den.c_str(), 10);
+  arb_set_fmpq(x, q, bits);
+  fmpq_clear(q);
+}
+
+/// The ball's ends as integers' digits: [a · 2^e, b · 2^e].
+Interval ends(const arb_t x) {
+  fmpz_t a, b, e;
+  fmpz_init(a);
+  fmpz_init(b);
+  fmpz_init(e);
+  arb_get_interval_fmpz_2exp(a, b, e, x);
+  Interval out;
+  char* s = fmpz_get_str(nullptr, 16, a);
+  out.a = s;
+  flint_free(s);
+  s = fmpz_get_str(nullptr, 16, b);
+  out.b = s;
+  flint_free(s);
+  out.e = fmpz_get_si(e);
+  fmpz_clear(a);
+  fmpz_clear(b);
+  fmpz_clear(e);
+  return out;
+}
+
+/// Whether every value in x rounds to the same n significant digits (half away from zero, as
+/// `round_sig`): ±D · 10^k with 10^(n−1) ≤ D < 10^n. Decided on balls: y = |x| · 10^(n−1−e10)
+/// and ⌊y + ½⌋ must be one integer.
+bool common_digits(const arb_t x, int n, slong prec) {
+  if (arb_contains_zero(x)) return false;
+  // |mid| < 2^e2: log₁₀|x| is near e2 · log₁₀2
+  const slong e2 = arf_abs_bound_lt_2exp_si(arb_midref(x));
+  long e10 = static_cast<long>(std::floor(static_cast<double>(e2) * 0.30102999566398120));
+  arb_t y, t;
+  arb_init(y);
+  arb_init(t);
+  fmpz_t D, k, lo, hi;
+  fmpz_init(D);
+  fmpz_init(k);
+  fmpz_init(lo);
+  fmpz_init(hi);
+  fmpz_ui_pow_ui(lo, 10, static_cast<ulong>(n - 1));
+  fmpz_ui_pow_ui(hi, 10, static_cast<ulong>(n));
+  bool out = false;
+  for (int tries = 0; tries < 6; ++tries) {
+    const long shift = n - 1 - e10;
+    arb_set_ui(t, 10);
+    fmpz_set_si(k, shift);
+    arb_pow_fmpz(t, t, k, prec + 64);
+    arb_abs(y, x);
+    arb_mul(y, y, t, prec + 64);
+    arb_set_d(t, 0.5);
+    arb_add(y, y, t, prec + 64);
+    arb_floor(y, y, prec + 64);
+    if (!arb_get_unique_fmpz(D, y)) break;  // the ball holds a rounding boundary
+    if (fmpz_cmp(D, hi) >= 0) {
+      ++e10;
+    } else if (fmpz_cmp(D, lo) < 0) {
+      --e10;
+    } else {
+      out = true;
+      break;
+    }
+  }
+  fmpz_clear(D);
+  fmpz_clear(k);
+  fmpz_clear(lo);
+  fmpz_clear(hi);
+  arb_clear(y);
+  arb_clear(t);
+  return out;
+}
+
+/// Run a program on `x` (one ball per input) at `bits`; every register into `reg`.
+Status run(const Program& t, const Balls& x, long bits, Balls& reg) {
+  const slong p = bits;
+  for (std::size_t i = 0; i < t.code.size(); ++i) {
+    const Ins& in = t.code[i];
+    arb_ptr v = reg[i];
+    const Op op = static_cast<Op>(in.op);
+    const bool leaf = op == Op::Input || op == Op::Const;
+    arb_srcptr a = !leaf && in.a >= 0 ? reg[static_cast<std::size_t>(in.a)] : nullptr;
+    arb_srcptr b = in.b >= 0 ? reg[static_cast<std::size_t>(in.b)] : nullptr;
+    switch (op) {
+      case Op::Const: set_const(v, t.consts[static_cast<std::size_t>(in.a)], bits); break;
+      case Op::Input: arb_set(v, x[static_cast<std::size_t>(in.a)]); break;
+      case Op::Add: arb_add(v, a, b, p); break;
+      case Op::Mul: arb_mul(v, a, b, p); break;
+      // a / b: b must be away from 0; an exact 0 is a division by zero
+      case Op::Div:
+        if (arb_is_zero(b)) return Status::Undefined;
+        if (arb_contains_zero(b)) return Status::Indeterminate;
+        arb_div(v, a, b, p);
+        break;
+      case Op::Neg: arb_neg(v, a); break;
+      case Op::Sq: arb_sqr(v, a, p); break;
+      case Op::Cube: arb_pow_ui(v, a, 3, p); break;
+      case Op::Powi: {
+        const long n = static_cast<long>(in.c);
+        if (n < 0 && arb_is_zero(a)) return Status::Undefined;
+        if (n < 0 && arb_contains_zero(a)) return Status::Indeterminate;
+        fmpz_t e;
+        fmpz_init_set_si(e, n);
+        arb_pow_fmpz(v, a, e, p);
+        fmpz_clear(e);
+        break;
+      }
+      // √a for a ≥ 0; a ball that is all below 0 is undefined, one across 0 cannot tell
+      case Op::Sqrt:
+        if (arb_is_zero(a)) {
+          arb_zero(v);
+        } else if (arb_is_nonnegative(a)) {
+          arb_sqrt(v, a, p);
+        } else {
+          return arb_is_negative(a) ? Status::Undefined : Status::Indeterminate;
+        }
+        break;
+      // 1/√a for a > 0
+      case Op::Rsqrt:
+        if (arb_is_positive(a)) arb_rsqrt(v, a, p);
+        else return arb_is_nonpositive(a) ? Status::Undefined : Status::Indeterminate;
+        break;
+      case Op::Sin: arb_sin(v, a, p); break;
+      case Op::Cos: arb_cos(v, a, p); break;
+      case Op::Tan: arb_tan(v, a, p); break;  // a ball across a pole comes out not finite
+      // asin, acos for |a| ≤ 1
+      case Op::Asin:
+      case Op::Acos: {
+        arf_t lo;
+        arf_init(lo);
+        arb_get_abs_lbound_arf(lo, a, p);
+        const bool outside = arf_cmp_si(lo, 1) > 0;
+        arf_clear(lo);
+        if (outside) return Status::Undefined;
+        if (op == Op::Asin) arb_asin(v, a, p);
+        else arb_acos(v, a, p);
+        break;
+      }
+      case Op::Atan: arb_atan(v, a, p); break;
+      // atan2(y = a, x = b): undefined at (0, 0)
+      case Op::Atan2:
+        if (arb_is_zero(a) && arb_is_zero(b)) return Status::Undefined;
+        arb_atan2(v, a, b, p);
+        break;
+      case Op::Exp: arb_exp(v, a, p); break;
+      // ln a for a > 0
+      case Op::Log:
+        if (arb_is_positive(a)) arb_log(v, a, p);
+        else return arb_is_nonpositive(a) ? Status::Undefined : Status::Indeterminate;
+        break;
+      case Op::Abs: arb_abs(v, a); break;
+      case Op::Sinh: arb_sinh(v, a, p); break;
+      case Op::Cosh: arb_cosh(v, a, p); break;
+      case Op::Tanh: arb_tanh(v, a, p); break;
+      // a^b = e^(b ln a) for a > 0
+      case Op::Pow:
+        if (arb_is_positive(a)) arb_pow(v, a, b, p);
+        else return arb_is_negative(a) ? Status::Undefined : Status::Indeterminate;
+        break;
+    }
+    if (!arb_is_finite(v)) return Status::Indeterminate;
+  }
+  return Status::Ok;
+}
+
+/// A program bound to its inputs, each enclosed per precision (kept).
+struct Bound {
+  Program tape;
+  std::vector<Program> inputs;
+  std::map<long, Balls> at_bits;
+
+  /// The inputs at `bits`: nothing when one of them is undefined there.
+  const Balls* enclosed(long bits) {
+    auto it = at_bits.find(bits);
+    if (it != at_bits.end()) return &it->second;
+    Balls x(inputs.size());
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      const Program& in = inputs[i];
+      // a rational: rounded once; an exact form (π/6, √2): its own program, on balls of a few more bits
+      if (in.code.size() == 1 && in.consts.size() == 1) {
+        set_const(x[i], in.consts[0], bits);
+        continue;
+      }
+      Balls reg(in.code.size()), none(0);
+      if (run(in, none, bits + 16, reg) != Status::Ok) return nullptr;
+      arb_set_round(x[i], reg[static_cast<std::size_t>(in.outs.at(0))], bits);
+    }
+    return &at_bits.emplace(bits, std::move(x)).first->second;
+  }
+
+  /// Run at `bits`; with `first`, input 0 is that ball.
+  Status eval(long bits, Balls& reg, arb_srcptr first = nullptr) {
+    const Balls* x = enclosed(bits);
+    if (!x) return Status::Undefined;
+    if (!first) return run(tape, *x, bits, reg);
+    Balls y(x->size());
+    for (std::size_t i = 0; i < x->size(); ++i) arb_set(y[i], (*x)[i]);
+    arb_set(y[0], first);
+    return run(tape, y, bits, reg);
+  }
+  arb_srcptr out(const Balls& reg) const { return reg[static_cast<std::size_t>(tape.outs.at(0))]; }
+};
+
+void* create(const Program& tape, const std::vector<Program>& inputs) { return new Bound{tape, inputs, {}}; }
+void destroy(void* h) { delete static_cast<Bound*>(h); }
+
+long bits_for(int n) { return static_cast<long>(std::ceil(n * 3.3219280948873623)); }
+
+// n digits: evaluate at p bits; the digits are proven when every value of the ball rounds to them
+// (common_digits). Else p doubles. A ball that keeps holding 0 once the precision is well past what
+// n digits need is a zero whose sign is not fixed.
+Answer digits(void* h, int n, long max_bits) {
+  Bound& b = *static_cast<Bound*>(h);
+  const long zero_bits = std::max<long>(1024, 4 * bits_for(n));
+  // a few guard bits over what n digits need, and at least one 64-bit limb
+  long bits = std::max<long>(64, bits_for(n) + 12);
+  Balls reg(b.tape.code.size());
+  Answer a;
+  for (;;) {
+    const Status st = b.eval(bits, reg);
+    if (st == Status::Undefined) {
+      a.kind = 3;
+      return a;
+    }
+    if (st == Status::Ok) {
+      arb_srcptr x = b.out(reg);
+      a.bits = bits;
+      if (!arb_contains_zero(x)) {
+        if (common_digits(x, n, bits)) {
+          a.kind = 1;
+          a.at = ends(x);
+          return a;
+        }
+      } else if (arb_is_zero(x)) {
+        a.kind = 0;  // an exact zero: the ball is the point 0
+        return a;
+      } else if (bits >= std::min(zero_bits, max_bits)) {
+        a.kind = 2;
+        a.at = ends(x);
+        return a;
+      }
+    }
+    if (bits >= max_bits) {
+      a.kind = 4;
+      a.error = "no working precision up to " + std::to_string(max_bits) + " bits fixes " + std::to_string(n) + " digits (" +
+                (st == Status::Indeterminate
+                     ? std::string("a step of the evaluation cannot be decided: a divisor, a square root's or a logarithm's argument that cannot be told from 0")
+                     : std::string("the digits do not settle")) +
+                ")";
+      return a;
+    }
+    bits = std::min(max_bits, 2 * bits);
+  }
+}
+
+// A root of r(u) = 0 proven: Newton's steps on the balls' midpoints find x; then the ball
+// I = [x − δ, x + δ] holds a root when r is defined (so continuous) on all of I and r(x − δ),
+// r(x + δ) have proven opposite signs (the intermediate value theorem). The digits are those
+// every value of I rounds to.
+Answer root(const Program& r, const Program& dr, const std::vector<Program>& inputs, const Const& start, const Const& lo,
+            const Const& hi, bool bracket, int n, long max_bits) {
+  Bound R{r, inputs, {}}, D{dr, inputs, {}};
+  long bits = bits_for(n) + 32;
+  arb_t x, t, I, a, b, step, blo, bhi;
+  for (arb_ptr p : {x, t, I, a, b, step, blo, bhi}) arb_init(p);
+  set_const(x, start, 4 * bits);
+  arb_get_mid_arb(x, x);
+  Balls reg_r(r.code.size()), reg_d(dr.code.size());
+  Answer out;
+  auto sign = [&](arb_srcptr at, long p) {
+    if (R.eval(p, reg_r, at) != Status::Ok) return 0;
+    arb_srcptr v = R.out(reg_r);
+    return arb_is_positive(v) ? 1 : arb_is_negative(v) ? -1 : 0;
+  };
+  bool done = false;
+  while (!done) {
+    // Newton: x ← x − r(x)/r′(x), on midpoints
+    for (int it = 0; it < 200; ++it) {
+      if (R.eval(bits, reg_r, x) != Status::Ok || D.eval(bits, reg_d, x) != Status::Ok) break;
+      arb_srcptr fr = R.out(reg_r);
+      if (arb_is_zero(fr)) {  // r(x) = 0 exactly: x is a root
+        out.kind = 0;
+        out.at = ends(x);
+        out.bits = bits;
+        done = true;
+        break;
+      }
+      arb_get_mid_arb(t, fr);
+      arb_get_mid_arb(a, D.out(reg_d));
+      if (arf_is_zero(arb_midref(a))) break;
+      arb_div(step, t, a, bits);
+      arb_get_mid_arb(step, step);
+      arb_sub(x, x, step, bits);
+      arb_get_mid_arb(x, x);
+      // |step| ≤ 2^(8 − bits) |x|: the midpoints' noise
+      arb_mul_2exp_si(t, x, 8 - bits);
+      arb_abs(t, t);
+      arb_abs(a, step);
+      if (arb_le(a, t) || arf_is_zero(arb_midref(step))) break;
+    }
+    if (done) break;
+    // δ = 4|step| + 2^(8 − bits)|x| + 2^−bits
+    arb_abs(a, step);
+    arb_mul_2exp_si(a, a, 2);
+    arb_abs(t, x);
+    arb_mul_2exp_si(t, t, 8 - bits);
+    arb_add(a, a, t, bits);
+    arb_one(t);
+    arb_mul_2exp_si(t, t, -bits);
+    arb_add(a, a, t, bits);
+    arb_get_ubound_arf(arb_midref(t), a, bits);
+    mag_zero(arb_radref(t));
+    arb_sub(a, x, t, bits + 16);
+    arb_get_mid_arb(a, a);
+    arb_add(b, x, t, bits + 16);
+    arb_get_mid_arb(b, b);
+    arb_union(I, a, b, bits + 16);
+    const int sa = sign(a, bits), sb = sign(b, bits);
+    if (sa != 0 && sb != 0 && sa != sb && R.eval(bits, reg_r, I) == Status::Ok) {
+      if (bracket) {
+        // inside the bracket the solver found the root in
+        set_const(blo, lo, bits + 64);
+        set_const(bhi, hi, bits + 64);
+        arb_union(t, blo, bhi, bits + 64);
+        if (!arb_contains(t, I)) {
+          out.error = "the root proven lies outside the bracket it was found in";
+          break;
+        }
+      }
+      if (common_digits(I, n, bits)) {
+        out.kind = 1;
+        out.at = ends(I);
+        out.bits = bits;
+        break;
+      }
+    }
+    if (bits >= max_bits) {
+      out.error = "no working precision up to " + std::to_string(max_bits) + " bits proves the root";
+      break;
+    }
+    bits = std::min(max_bits, 2 * bits);
+  }
+  for (arb_ptr p : {x, t, I, a, b, step, blo, bhi}) arb_clear(p);
+  return out;
+}
+
+const Api kApi{kVersion, create, destroy, digits, root};
+
+}  // namespace
+
+extern "C" const kinergy::numerics::arbapi::Api* kinergy_arb_api() { return &kApi; }
