@@ -226,18 +226,21 @@ std::optional<numeric> Evaluator::at(long working) const {
 
 // N digits proven: the tape on balls from the exact inputs (ball.hpp).
 std::optional<Precise> Evaluator::digits(int n) const {
-  // an exact value first: GiNaC's exact arithmetic (sin(π) = 0, √4 = 2, 2L − 3d = 0), once
-  if (exact_kind_ == ExactKind::Unknown) {
+  // an exact value first: GiNaC's exact arithmetic (sin(π) = 0, √4 = 2, 2L − 3d = 0). That the
+  // value is not rational at these values is kept (it is a property of the form and its values,
+  // as its tape is); a rational value is computed again at each call, as any value is
+  if (!irrational_) {
     try {
       ex v = e_.subs(values_);
-      exact_kind_ = is_a<numeric>(v) && ex_to<numeric>(v).is_rational() ? ExactKind::Rational : ExactKind::Irrational;
-      if (exact_kind_ == ExactKind::Rational) exact_rational_ = ex_to<numeric>(v);
+      if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) {
+        const numeric& q = ex_to<numeric>(v);
+        return Precise{q, 0, true, false, 0, true, q, q};
+      }
+      irrational_ = true;
     } catch (const std::exception&) {
-      exact_kind_ = ExactKind::Undefined;  // a division by zero at the exact values
+      return std::nullopt;  // a division by zero at the exact values
     }
   }
-  if (exact_kind_ == ExactKind::Undefined) return std::nullopt;
-  if (exact_kind_ == ExactKind::Rational) return Precise{exact_rational_, 0, true, false, 0, true, exact_rational_, exact_rational_};
   if (!precise_tape_) return settled(n);
   if (!balls_) balls_ = std::make_shared<BallEvaluator>(*precise_tape_, exact_);
   if (balls_->from_float()) return settled(n);

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Derivation time of T, V, M(q) and Q for an N-link pendulum, N = 1, 2, 4, 8, 16: kinergy
-# (tests/bench/derivation_time.cpp, Release) against sympy.physics.mechanics' LagrangesMethod and
-# KanesMethod (tests/bench/sympy_nlink.py, Debian's python3-sympy). Checks first that kinergy's
-# M(q) for N = 2 agrees with sympy's. Writes docs/derivation_time.md and docs/derivation_time.svg.
+# Derivation time of the equations of motion M(q) q'' = f(q, q') for an N-link pendulum,
+# N = 1, 2, 4, 8, 16, 32: kinergy (tests/bench/derivation_time.cpp, Release: M, the velocity
+# products and Q, as the simulator derives them; T, V, M, Q alone shown beside) against
+# sympy.physics.mechanics' LagrangesMethod and KanesMethod (mass_matrix and forcing;
+# tests/bench/sympy_nlink.py, Debian's python3-sympy). Checks first that kinergy's M(q) and f(q, q')
+# for N = 2 agree with sympy's. Writes docs/derivation_time.md and docs/derivation_time.svg.
 #   bash tests/bench/run_derivation.sh [--quick]
 # --quick: N = 1, 2, 4, fewer repeats, 30 s per sympy case; writes the .md and .svg into the
 # build directory instead of docs/ (a quick check does not replace the recorded results).
@@ -157,7 +159,7 @@ with open(f"{bench}/derivation_time.dat", "w") as dat:
 with open(f"{bench}/derivation_time.gp", "w") as gp:
     gp.write(f"""set terminal svg size 800,520 dynamic enhanced font 'sans,11' background 'white'
 set output '{out}/derivation_time.svg'
-set title 'Derivation time of the equations of motion M(q), f(q, q'): N-link pendulum ({machine.split(",")[0]}, {machine.split(",")[1].strip()})' noenhanced
+set title 'Derivation time of the equations of motion M(q), f(q, q̇): N-link pendulum ({machine.split(",")[0]}, {machine.split(",")[1].strip()})' noenhanced
 set logscale xy
 set xrange [0.85:38]
 set xtics (1, 2, 4, 8, 16, 32)

@@ -74,11 +74,8 @@ private:
   std::vector<double> fast_x_, fast_dx_;
   GiNaC::ex fast_form_;
   mutable std::map<long, std::vector<cln::cl_R>> inputs_;  ///< the inputs converted, per precision
-  mutable std::shared_ptr<BallEvaluator> balls_;
-  /// e at the exact values by GiNaC's exact arithmetic, decided once
-  enum class ExactKind { Unknown, Rational, Irrational, Undefined };
-  mutable ExactKind exact_kind_ = ExactKind::Unknown;
-  mutable GiNaC::numeric exact_rational_;  ///< the precise tape on balls (made when first asked)
+  mutable std::shared_ptr<BallEvaluator> balls_;  ///< the precise tape on balls (made when first asked)
+  mutable bool irrational_ = false;  ///< e at the values is not rational in GiNaC's exact arithmetic
 };
 
 }  // namespace kinergy::numerics
