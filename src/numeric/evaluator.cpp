@@ -139,6 +139,15 @@ Evaluator::Evaluator(const ex& e, const exmap& values) : e_(e) {
   } catch (const std::invalid_argument&) {
     precise_tape_.reset();
   }
+  // rational inputs, kept as CLN rationals: the tape in exact arithmetic tells a rational value
+  for (auto& v : exact_) {
+    if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_rational()) {
+      rational_inputs_.clear();
+      break;
+    }
+    rational_inputs_.push_back(cln::the<cln::cl_R>(ex_to<numeric>(v).to_cl_N()));
+  }
+  if (rational_inputs_.size() != exact_.size()) rational_inputs_.clear();
   for (std::size_t i = 0; i < syms_.size(); ++i) {
     values_[syms_[i]] = exact_[i];
     auto [d, err] = rounded(exact_[i]);  // the inputs as doubles, once for every candidate
@@ -229,6 +238,19 @@ std::optional<Precise> Evaluator::digits(int n) const {
   // an exact value first: GiNaC's exact arithmetic (sin(π) = 0, √4 = 2, 2L − 3d = 0). That the
   // value is not rational at these values is kept (it is a property of the form and its values,
   // as its tape is); a rational value is computed again at each call, as any value is
+  // the tape in exact arithmetic first (rationals stay rationals through +, −, ×, ÷, integer
+  // powers and √ of a square): a rational result is the exact value, at the cost of a few
+  // rational operations instead of GiNaC's substitution
+  if (precise_tape_ && (rational_inputs_.size() == exact_.size())) {
+    try {
+      if (auto r = precise_tape_->precise(rational_inputs_, 20, true); r && cln::instanceof(*r, cln::cl_RA_ring)) {
+        const numeric q{cln::cl_N(*r)};
+        return Precise{q, 0, true, false, 0, true, q, q};
+      }
+    } catch (const NeedsPrecision&) {
+      // a trigonometric function of a large angle: not rational here; the checks below decide
+    }
+  }
   if (!irrational_) {
     try {
       ex v = e_.subs(values_);
