@@ -9,4 +9,4 @@ KINERGY_EXTRA_PACKAGES="python3-sympy python3-mpmath" bash .ci/setup --deps
 bench="${KINERGY_BENCH_DIR:-build-bench}"
 cmake -S . -B "$bench" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
 cmake --build "$bench" --target kinergy_cli -j"$(nproc)"
-/usr/bin/python3 tests/bench/solve_scaling.py --kinergy "$bench/kinergy" --command "bash tests/bench/run_solve.sh $*" "$@"
+/usr/bin/python3 tests/bench/solve_scaling.py --kinergy "$bench/kinergy" --command "bash tests/bench/run_solve.sh${*:+ $*}" "$@"
