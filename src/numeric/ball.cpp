@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -48,14 +49,21 @@ const api::Api& module() {
     if (const char* env = std::getenv("KINERGY_ARB_MODULE"); env && *env) {
       tried.push_back(env);
     } else {
+      // the file that holds this code: a shared module (the Python one) by dladdr; the program
+      // itself by /proc/self/exe (dladdr names the main program by its argv[0], which may be a
+      // bare name found on PATH)
+      std::vector<std::filesystem::path> selves;
       Dl_info info{};
-      if (dladdr(reinterpret_cast<void*>(&bits_for), &info) && info.dli_fname) {
-        const std::filesystem::path self = std::filesystem::weakly_canonical(std::filesystem::absolute(info.dli_fname));
+      std::error_code err;
+      if (dladdr(reinterpret_cast<void*>(&bits_for), &info) && info.dli_fname && std::strchr(info.dli_fname, '/'))
+        selves.push_back(std::filesystem::weakly_canonical(std::filesystem::absolute(info.dli_fname), err));
+      if (auto exe = std::filesystem::read_symlink("/proc/self/exe", err); !err) selves.push_back(exe);
+      for (auto& self : selves) {
         const std::filesystem::path dir = self.parent_path();
         for (const std::filesystem::path& p :
              {dir / "kinergy_arb.so", dir.parent_path() / "kinergy_arb.so", dir.parent_path() / KINERGY_LIBDIR / "kinergy" / "kinergy_arb.so",
               dir.parent_path().parent_path().parent_path() / KINERGY_LIBDIR / "kinergy" / "kinergy_arb.so"})
-          tried.push_back(p.lexically_normal().string());
+          if (std::find(tried.begin(), tried.end(), p.lexically_normal().string()) == tried.end()) tried.push_back(p.lexically_normal().string());
       }
       for (const char* p : {KINERGY_ARB_INSTALLED, KINERGY_ARB_BUILT})
         if (*p) tried.push_back(p);

@@ -33,6 +33,11 @@ out=$(LD_DEBUG=files "$prefix/bin/kinergy" solve "$src/derivations/energy/slidin
 grep -q '= 3.5017852589786256052 rad/s   (proven: ball radius' <<<"$out" || fail "--digits 20 with the installed CLI printed: $out"
 grep -q "file=$arb " <<<"$out" || grep -q "file=$(cd "$(dirname "$arb")" && pwd -P)/kinergy_arb.so " <<<"$out" ||
   fail "the installed CLI did not load its own module $arb: $(grep -o 'file=[^ ]*kinergy_arb.so' <<<"$out")"
+# the same when it is started by its bare name, found on PATH
+out=$(cd "$tmp" && PATH="$prefix/bin:$PATH" LD_DEBUG=files kinergy solve "$src/derivations/energy/sliding_rod.yaml" --digits 20 2>&1)
+grep -q '(proven: ball radius' <<<"$out" || fail "kinergy on PATH, --digits 20, printed: $out"
+grep -q "file=$arb " <<<"$out" || grep -q "file=$(cd "$(dirname "$arb")" && pwd -P)/kinergy_arb.so " <<<"$out" ||
+  fail "kinergy on PATH did not load its own module $arb: $(grep -o 'file=[^ ]*kinergy_arb.so' <<<"$out")"
 check_omega() {  # the consumer's output: omega2 = … = 3.50… (to the scene's three figures)
   grep -E '^omega2 = .* = 3\.50[0-9]*$' <<<"$1" >/dev/null || fail "$2 printed: $1"
 }
