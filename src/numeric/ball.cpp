@@ -1,6 +1,7 @@
 #include "kinergy/numeric/ball.hpp"
 
 #include <dlfcn.h>
+#include <sys/auxv.h>
 
 #include <algorithm>
 #include <cmath>
@@ -50,14 +51,15 @@ const api::Api& module() {
       tried.push_back(env);
     } else {
       // the file that holds this code: a shared module (the Python one) by dladdr; the program
-      // itself by /proc/self/exe (dladdr names the main program by its argv[0], which may be a
-      // bare name found on PATH)
+      // itself by the file name execve was given (AT_EXECFN: the path a shell found on PATH;
+      // dladdr names the main program by its argv[0], which may be a bare name)
       std::vector<std::filesystem::path> selves;
       Dl_info info{};
       std::error_code err;
       if (dladdr(reinterpret_cast<void*>(&bits_for), &info) && info.dli_fname && std::strchr(info.dli_fname, '/'))
         selves.push_back(std::filesystem::weakly_canonical(std::filesystem::absolute(info.dli_fname), err));
-      if (auto exe = std::filesystem::read_symlink("/proc/self/exe", err); !err) selves.push_back(exe);
+      if (const auto* exe = reinterpret_cast<const char*>(getauxval(AT_EXECFN)); exe && std::strchr(exe, '/'))
+        selves.push_back(std::filesystem::weakly_canonical(std::filesystem::absolute(exe), err));
       for (auto& self : selves) {
         const std::filesystem::path dir = self.parent_path();
         for (const std::filesystem::path& p :
