@@ -189,7 +189,7 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
     if (x0 && lo && hi) {
       const long max_bits = numerics::bits_for(std::max(20000, 8 * digits));
       if (auto p = numerics::root_digits(r, v, *x0, std::min(*lo, *hi), std::max(*lo, *hi), env, digits, max_bits)) {
-        const long working = static_cast<long>(static_cast<double>(p->bits) * 0.30102999566398120);
+        const long working = numerics::digits_in(p->bits);
         if (p->kind == numerics::Proven::Kind::Exact) return Value{p->value, Value::How::Exact, 0, 0, true, p->value, p->value};
         return Value{p->at.mid(), Value::How::Precise, working, 0, true, p->at.lo, p->at.hi};
       }

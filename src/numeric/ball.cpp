@@ -250,6 +250,8 @@ std::optional<Proven> root_digits(const ex& r, const symbol& u, const numeric& x
 
 long bits_for(int n) { return static_cast<long>(std::ceil(n * 3.3219280948873623)); }
 
+long digits_in(long bits) { return static_cast<long>(static_cast<double>(bits) * 0.30102999566398120); }
+
 numeric round_up2(const numeric& x) {
   if (!x.is_positive()) return 0;
   if (!x.is_rational()) {

@@ -270,7 +270,7 @@ std::optional<Precise> Evaluator::digits(int n) const {
   const long max_bits = bits_for(static_cast<int>(std::max<long>(20000, 8L * n)));
   auto p = balls_->digits(n, max_bits);
   if (!p) return std::nullopt;
-  const long working = static_cast<long>(static_cast<double>(p->bits) * 0.30102999566398120);
+  const long working = digits_in(p->bits);
   switch (p->kind) {
     case Proven::Kind::Exact: return Precise{p->value, 0, true, false, 0, true, p->value, p->value};
     // the midpoint: it rounds to the proven digits (it lies inside the ball, whose every value

@@ -74,6 +74,8 @@ std::optional<Proven> root_digits(const GiNaC::ex& r, const GiNaC::symbol& u, co
 
 /// Bits for n decimal digits (n·log₂10), rounded up.
 long bits_for(int n);
+/// The decimal digits `bits` bits hold (bits·log₁₀2), rounded down: a working precision as text says it.
+long digits_in(long bits);
 
 /// The smallest number of at most 2 significant digits ≥ x ≥ 0 (a radius printed so that it still
 /// bounds): 1.234e-20 → 1.3e-20.
