@@ -101,6 +101,13 @@ const api::Api& module() {
 
 bool is_float(const ex& e) { return is_a<numeric>(e) && ex_to<numeric>(e).is_real() && !ex_to<numeric>(e).is_rational(); }
 
+/// A float anywhere in e (a number found numerically).
+bool holds_float(const ex& e) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_float(*it)) return true;
+  return false;
+}
+
 std::string decimal(const cln::cl_I& n) {
   std::ostringstream os;
   cln::fprintdecimal(os, n);
@@ -204,9 +211,7 @@ struct BallEvaluator::Impl {
 };
 
 BallEvaluator::BallEvaluator(const Tape& t, const std::vector<ex>& inputs) {
-  from_float_ = detail::BallRun::has_float(t);
-  for (auto& v : inputs)
-    for (auto it = v.preorder_begin(); it != v.preorder_end(); ++it) from_float_ = from_float_ || is_float(*it);
+  from_float_ = detail::BallRun::has_float(t) || std::any_of(inputs.begin(), inputs.end(), holds_float);
   std::vector<api::Program> in;
   for (auto& v : inputs) in.push_back(input_program(v));
   const api::Api& m = module();
@@ -236,9 +241,7 @@ std::optional<Proven> root_digits(const ex& r, const symbol& u, const numeric& x
   if (detail::BallRun::has_float(tr) || detail::BallRun::has_float(td)) return std::nullopt;
   std::vector<api::Program> inputs;
   for (std::size_t i = 0; i < vals.size(); ++i) {
-    if (i > 0)
-      for (auto it = vals[i].preorder_begin(); it != vals[i].preorder_end(); ++it)
-        if (is_float(*it)) return std::nullopt;
+    if (i > 0 && holds_float(vals[i])) return std::nullopt;  // (input 0 is the start: a float is fine there)
     inputs.push_back(input_program(vals[i]));
   }
   // the start as the exact binary fraction a float is: it is only where Newton begins

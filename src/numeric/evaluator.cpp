@@ -2,6 +2,7 @@
 
 #include "kinergy/expr/canonical.hpp"
 
+#include <algorithm>
 #include <cfenv>
 #include <cmath>
 #include <stdexcept>
@@ -140,14 +141,8 @@ Evaluator::Evaluator(const ex& e, const exmap& values) : e_(e) {
     precise_tape_.reset();
   }
   // rational inputs, kept as CLN rationals: the tape in exact arithmetic tells a rational value
-  for (auto& v : exact_) {
-    if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_rational()) {
-      rational_inputs_.clear();
-      break;
-    }
-    rational_inputs_.push_back(cln::the<cln::cl_R>(ex_to<numeric>(v).to_cl_N()));
-  }
-  if (rational_inputs_.size() != exact_.size()) rational_inputs_.clear();
+  if (!exact_.empty() && std::all_of(exact_.begin(), exact_.end(), [](const ex& v) { return is_a<numeric>(v) && ex_to<numeric>(v).is_rational(); }))
+    for (auto& v : exact_) rational_inputs_.push_back(cln::the<cln::cl_R>(ex_to<numeric>(v).to_cl_N()));
   for (std::size_t i = 0; i < syms_.size(); ++i) {
     values_[syms_[i]] = exact_[i];
     auto [d, err] = rounded(exact_[i]);  // the inputs as doubles, once for every candidate
@@ -233,36 +228,36 @@ std::optional<numeric> Evaluator::at(long working) const {
   return numeric(cln::cl_N(*r));
 }
 
+// An exact value first: the tape in exact arithmetic (rationals stay rationals through +, −, ×, ÷,
+// integer powers and √ of a square: a few rational operations), then GiNaC's exact arithmetic
+// (sin(π) = 0, 2L − 3d = 0). That the value is not rational at these values is kept (a property of
+// the form and its values, as its tape is); a rational value is computed again at each call.
+std::optional<numeric> Evaluator::exact_value(bool& undefined) const {
+  undefined = false;
+  if (precise_tape_ && !rational_inputs_.empty()) {
+    try {
+      if (auto r = precise_tape_->precise(rational_inputs_, 20, true); r && cln::instanceof(*r, cln::cl_RA_ring))
+        return numeric(cln::cl_N(*r));
+    } catch (const NeedsPrecision&) {
+      // a trigonometric function of a large angle: not rational here; GiNaC decides below
+    }
+  }
+  if (irrational_) return std::nullopt;
+  try {
+    ex v = e_.subs(values_);
+    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) return ex_to<numeric>(v);
+    irrational_ = true;
+  } catch (const std::exception&) {
+    undefined = true;  // a division by zero at the exact values
+  }
+  return std::nullopt;
+}
+
 // N digits proven: the tape on balls from the exact inputs (ball.hpp).
 std::optional<Precise> Evaluator::digits(int n) const {
-  // an exact value first: GiNaC's exact arithmetic (sin(π) = 0, √4 = 2, 2L − 3d = 0). That the
-  // value is not rational at these values is kept (it is a property of the form and its values,
-  // as its tape is); a rational value is computed again at each call, as any value is
-  // the tape in exact arithmetic first (rationals stay rationals through +, −, ×, ÷, integer
-  // powers and √ of a square): a rational result is the exact value, at the cost of a few
-  // rational operations instead of GiNaC's substitution
-  if (precise_tape_ && (rational_inputs_.size() == exact_.size())) {
-    try {
-      if (auto r = precise_tape_->precise(rational_inputs_, 20, true); r && cln::instanceof(*r, cln::cl_RA_ring)) {
-        const numeric q{cln::cl_N(*r)};
-        return Precise{q, 0, true, false, 0, true, q, q};
-      }
-    } catch (const NeedsPrecision&) {
-      // a trigonometric function of a large angle: not rational here; the checks below decide
-    }
-  }
-  if (!irrational_) {
-    try {
-      ex v = e_.subs(values_);
-      if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) {
-        const numeric& q = ex_to<numeric>(v);
-        return Precise{q, 0, true, false, 0, true, q, q};
-      }
-      irrational_ = true;
-    } catch (const std::exception&) {
-      return std::nullopt;  // a division by zero at the exact values
-    }
-  }
+  bool undefined = false;
+  if (auto q = exact_value(undefined)) return Precise{*q, 0, true, false, 0, true, *q, *q};
+  if (undefined) return std::nullopt;
   if (!precise_tape_) return settled(n);
   if (!balls_) balls_ = std::make_shared<BallEvaluator>(*precise_tape_, exact_);
   if (balls_->from_float()) return settled(n);
@@ -286,12 +281,9 @@ std::optional<Precise> Evaluator::digits(int n) const {
 
 // N digits: evaluate at p and at a higher precision until both round to the same N digits.
 std::optional<Precise> Evaluator::settled(int n) const {
-  try {
-    ex v = e_.subs(values_);
-    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) return Precise{ex_to<numeric>(v), 0, true, false, 0, false, {}, {}};
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
+  bool undefined = false;
+  if (auto q = exact_value(undefined)) return Precise{*q, 0, true, false, 0, false, {}, {}};
+  if (undefined) return std::nullopt;
   const long limit = std::max<long>(20000, 8L * n);
   // at(w), with w raised to what the arguments need (a trigonometric function of 1e80 rad)
   auto covering = [&](long& w) -> std::optional<numeric> {

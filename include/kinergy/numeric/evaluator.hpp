@@ -76,6 +76,8 @@ private:
   mutable std::map<long, std::vector<cln::cl_R>> inputs_;  ///< the inputs converted, per precision
   mutable std::shared_ptr<BallEvaluator> balls_;  ///< the precise tape on balls (made when first asked)
   std::vector<cln::cl_R> rational_inputs_;  ///< the exact values as CLN rationals (empty unless every one is rational)
+  /// e's exact value when it is rational at the values; `undefined` when e is not defined there.
+  std::optional<GiNaC::numeric> exact_value(bool& undefined) const;
   mutable bool irrational_ = false;  ///< e at the values is not rational in GiNaC's exact arithmetic
 };
 
