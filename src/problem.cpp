@@ -196,7 +196,7 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
     }
   }
   if (!closed_form && digits > kRootDigits)
-    throw SceneError(pos, "'" + name + "' has no closed form (a numeric root or a work integral taken numerically), found to " + std::to_string(kRootDigits) +
+    throw SceneError(pos, "'" + name + "' has no closed form (it holds a number found by a numeric root), found to " + std::to_string(kRootDigits) +
                               " significant digits; " + std::to_string(digits) + " were asked",
                      "ask for --digits " + std::to_string(kRootDigits) + " or fewer");
   numerics::Evaluator ev(closed / unit_factor, env);

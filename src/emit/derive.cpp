@@ -947,7 +947,7 @@ private:
                "number to " + std::to_string(o_.digits) + " significant figures")};
     bool numeric_root = false;
     for (auto& res : s_.results) numeric_root = numeric_root || !res.closed_form;
-    if (numeric_root) sp.push_back(W("; a result without closed form comes from a numeric root, a work integral taken numerically "
+    if (numeric_root) sp.push_back(W("; a result without closed form comes from a numeric root "
                                      "or an extreme"));
     sp.push_back(W(":"));
     para(sp);

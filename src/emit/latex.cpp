@@ -502,7 +502,7 @@ private:
       return k == 1 ? s : s + power;
     }
     if (name == "integral") {
-      // ∫_a^b f dξ (a work integral taken numerically)
+      // ∫_a^b f dξ (a work integral with no elementary antiderivative)
       std::string s = "\\int_{" + print(f.op(2), 0) + "}^{" + print(f.op(3), 0) + "} " + print(f.op(0), kProduct) + "\\,\\mathrm{d}" +
                       print(f.op(1), kAtom);
       return k == 1 ? s : paren(s) + power;

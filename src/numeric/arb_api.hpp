@@ -24,12 +24,15 @@ struct Ins {
   double c;
 };
 
-/// A tape in plain numbers.
+/// A tape in plain numbers. An Integral instruction (op 25: a, b the ends' registers, c an index
+/// into `integrands`) takes ∫_a^b f(ξ) dξ of a program f whose input 0 is ξ and whose inputs 1…
+/// are this program's inputs.
 struct Program {
   std::vector<Ins> code;
   std::vector<Const> consts;
   std::vector<std::int32_t> outs;
   std::size_t inputs = 0;
+  std::vector<Program> integrands;
 };
 
 /// An enclosure [lo, hi] = [a · 2^e, b · 2^e] (a, b: signed hexadecimal digits).
@@ -63,7 +66,7 @@ struct Api {
                  const Const& lo, const Const& hi, bool bracket, int n, long max_bits);
 };
 
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;
 
 }  // namespace kinergy::numerics::arbapi
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <acb.h>
+#include <acb_calc.h>
 #include <arb.h>
 
 #include "arb_api.hpp"
@@ -19,7 +21,7 @@ using namespace kinergy::numerics::arbapi;
 /// The tape's operations, numbered as Tape::Op (numeric/tape.hpp; ball.cpp checks the numbering).
 enum class Op : std::uint8_t {
   Const, Input, Add, Mul, Div, Neg, Sq, Cube, Powi, Sqrt, Rsqrt, Pow,
-  Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Exp, Log, Abs, Sinh, Cosh, Tanh
+  Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Exp, Log, Abs, Sinh, Cosh, Tanh, Integral
 };
 
 enum class Status { Ok, Undefined, Indeterminate };
@@ -43,6 +45,22 @@ public:
 private:
   std::size_t n_;
   arb_ptr v_;
+};
+
+/// A vector of complex balls, freed with it.
+class CBalls {
+public:
+  explicit CBalls(std::size_t n = 0) : n_(n), v_(n ? _acb_vec_init(static_cast<slong>(n)) : nullptr) {}
+  ~CBalls() {
+    if (v_) _acb_vec_clear(v_, static_cast<slong>(n_));
+  }
+  CBalls(const CBalls&) = delete;
+  CBalls& operator=(const CBalls&) = delete;
+  acb_ptr operator[](std::size_t i) const { return v_ + i; }
+
+private:
+  std::size_t n_;
+  acb_ptr v_;
 };
 
 /// A constant at `bits`: a rational rounded (exact when it fits), or π, γ, G.
@@ -130,6 +148,8 @@ bool common_digits(const arb_t x, int n, slong prec) {
   return out;
 }
 
+Status integral(arb_t v, const Program& f, const Balls& x, arb_srcptr a, arb_srcptr b, long bits);
+
 /// Run a program on `x` (one ball per input) at `bits`; every register into `reg`.
 Status run(const Program& t, const Balls& x, long bits, Balls& reg) {
   const slong p = bits;
@@ -216,10 +236,219 @@ Status run(const Program& t, const Balls& x, long bits, Balls& reg) {
         if (arb_is_positive(a)) arb_pow(v, a, b, p);
         else return arb_is_negative(a) ? Status::Undefined : Status::Indeterminate;
         break;
+      case Op::Integral:
+        if (const Status st = integral(v, t.integrands.at(static_cast<std::size_t>(in.c)), x, a, b, bits); st != Status::Ok) return st;
+        break;
     }
     if (!arb_is_finite(v)) return Status::Indeterminate;
   }
   return Status::Ok;
+}
+
+/// Does the ball x hold a point with |x| ≥ 1?
+bool reaches_one(const arb_t x) {
+  arf_t hi;
+  arf_init(hi);
+  arb_get_abs_ubound_arf(hi, x, 64);
+  const bool out = arf_cmp_si(hi, 1) >= 0;
+  arf_clear(hi);
+  return out;
+}
+
+/// Run an integrand on complex balls (`x`: one per input) at `bits`, as the holomorphic function
+/// that equals it on the real line where it is real (the principal branches). With `analytic`,
+/// every branch cut (√, ln, a^b on the negative axis; asin, acos beyond ±1; atan beyond ±i; |x| on
+/// Re x = 0; atan2 on the negative x axis) that a ball touches makes the value indeterminate, so
+/// that Arb's error bounds, which take the function's size on complex neighbourhoods of the path,
+/// hold.
+Status run_complex(const Program& t, const CBalls& x, long bits, bool analytic, CBalls& reg) {
+  const int an = analytic ? 1 : 0;
+  const slong p = bits;
+  acb_t w;
+  acb_init(w);
+  Status out = Status::Ok;
+  for (std::size_t i = 0; i < t.code.size() && out == Status::Ok; ++i) {
+    const Ins& in = t.code[i];
+    acb_ptr v = reg[i];
+    const Op op = static_cast<Op>(in.op);
+    const bool leaf = op == Op::Input || op == Op::Const;
+    acb_srcptr a = !leaf && in.a >= 0 ? reg[static_cast<std::size_t>(in.a)] : nullptr;
+    acb_srcptr b = in.b >= 0 ? reg[static_cast<std::size_t>(in.b)] : nullptr;
+    switch (op) {
+      case Op::Const:
+        set_const(acb_realref(v), t.consts[static_cast<std::size_t>(in.a)], bits);
+        arb_zero(acb_imagref(v));
+        break;
+      case Op::Input: acb_set(v, x[static_cast<std::size_t>(in.a)]); break;
+      case Op::Add: acb_add(v, a, b, p); break;
+      case Op::Mul: acb_mul(v, a, b, p); break;
+      case Op::Div: acb_div(v, a, b, p); break;  // a divisor that may be 0 gives a value not finite
+      case Op::Neg: acb_neg(v, a); break;
+      case Op::Sq: acb_sqr(v, a, p); break;
+      case Op::Cube: acb_pow_ui(v, a, 3, p); break;
+      case Op::Powi: {
+        fmpz_t e;
+        fmpz_init_set_si(e, static_cast<long>(in.c));
+        acb_pow_fmpz(v, a, e, p);
+        fmpz_clear(e);
+        break;
+      }
+      case Op::Sqrt: acb_sqrt_analytic(v, a, an, p); break;
+      case Op::Rsqrt: acb_rsqrt_analytic(v, a, an, p); break;
+      case Op::Log: acb_log_analytic(v, a, an, p); break;
+      case Op::Pow: acb_pow_analytic(v, a, b, an, p); break;
+      case Op::Abs: acb_real_abs(v, a, an, p); break;
+      case Op::Sin: acb_sin(v, a, p); break;
+      case Op::Cos: acb_cos(v, a, p); break;
+      case Op::Tan: acb_tan(v, a, p); break;  // a pole in the ball: not finite
+      case Op::Exp: acb_exp(v, a, p); break;
+      case Op::Sinh: acb_sinh(v, a, p); break;
+      case Op::Cosh: acb_cosh(v, a, p); break;
+      case Op::Tanh: acb_tanh(v, a, p); break;
+      // asin, acos: cuts on the real axis beyond ±1
+      case Op::Asin:
+      case Op::Acos:
+        if (analytic && arb_contains_zero(acb_imagref(a)) && reaches_one(acb_realref(a))) out = Status::Indeterminate;
+        else if (op == Op::Asin) acb_asin(v, a, p);
+        else acb_acos(v, a, p);
+        break;
+      // atan: cuts on the imaginary axis beyond ±i
+      case Op::Atan:
+        if (analytic && arb_contains_zero(acb_realref(a)) && reaches_one(acb_imagref(a))) out = Status::Indeterminate;
+        else acb_atan(v, a, p);
+        break;
+      // atan2(y = a, x = b) = atan(y/x) where Re x > 0, π/2 − atan(x/y) where Re y > 0,
+      // −π/2 − atan(x/y) where Re y < 0 (each holomorphic there, and equal to atan2 on reals)
+      case Op::Atan2: {
+        const bool right = arb_is_positive(acb_realref(b)), up = arb_is_positive(acb_realref(a)), down = arb_is_negative(acb_realref(a));
+        if (!right && !up && !down) {
+          out = Status::Indeterminate;
+          break;
+        }
+        acb_div(w, right ? a : b, right ? b : a, p);
+        if (analytic && arb_contains_zero(acb_realref(w)) && reaches_one(acb_imagref(w))) {
+          out = Status::Indeterminate;
+          break;
+        }
+        acb_atan(w, w, p);
+        if (right) {
+          acb_set(v, w);
+        } else {
+          acb_const_pi(v, p);
+          acb_mul_2exp_si(v, v, -1);
+          if (down) acb_neg(v, v);
+          acb_sub(v, v, w, p);
+        }
+        break;
+      }
+      case Op::Integral: out = Status::Indeterminate; break;  // (an integral inside an integrand is not compiled)
+    }
+    if (out == Status::Ok && !acb_is_finite(v)) out = Status::Indeterminate;
+  }
+  acb_clear(w);
+  return out;
+}
+
+/// An integrand bound to the outer program's inputs, as Arb's integration calls it.
+struct Integrand {
+  const Program& f;
+  Balls real_in, real_reg;
+  CBalls complex_in, complex_reg;
+  bool undefined = false;  ///< f proven undefined at a point of the path
+  Integrand(const Program& fn, const Balls& x)
+      : f(fn), real_in(x.size() + 1), real_reg(fn.code.size()), complex_in(x.size() + 1), complex_reg(fn.code.size()) {
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      arb_set(real_in[i + 1], x[i]);
+      acb_set_arb(complex_in[i + 1], x[i]);
+    }
+  }
+  /// f on the real ball ξ: the value into v.
+  Status real(arb_t v, const arb_t xi, long bits) {
+    arb_set(real_in[0], xi);
+    const Status st = run(f, real_in, bits, real_reg);
+    if (st == Status::Ok) arb_set(v, real_reg[static_cast<std::size_t>(f.outs.at(0))]);
+    return st;
+  }
+};
+
+// f(z) for acb_calc_integrate. On a real ball (order 0: a node, or a piece of the path) the real
+// integrand itself, with its domains: one proven outside them (√ of a ball below 0) makes the
+// integral undefined, not imaginary. A ball across a domain's edge (√ of [−ε, h] on the piece of
+// √x's path next to 0) is enclosed by the principal branches on complex balls, which hold the real
+// values where they are defined. On a complex ball the holomorphic extension (order 1 asks that f
+// be checked holomorphic there).
+int integrand(acb_ptr out, const acb_t z, void* param, slong order, slong prec) {
+  auto& q = *static_cast<Integrand*>(param);
+  if (order > 1) flint_abort();  // (the integration asks only for values)
+  Status st = Status::Indeterminate;
+  if (order == 0 && acb_is_real(z)) {
+    st = q.real(acb_realref(out), acb_realref(z), prec);
+    if (st == Status::Ok) arb_zero(acb_imagref(out));
+    if (st == Status::Undefined) q.undefined = true;
+  }
+  if (st == Status::Indeterminate) {
+    acb_set(q.complex_in[0], z);
+    st = run_complex(q.f, q.complex_in, prec, order == 1, q.complex_reg);
+    if (st == Status::Ok) acb_set(out, q.complex_reg[static_cast<std::size_t>(q.f.outs.at(0))]);
+  }
+  if (st != Status::Ok) acb_indeterminate(out);
+  return 0;
+}
+
+// ∫_a^b f(ξ) dξ with ends that are balls a = [a_m ± r_a], b = [b_m ± r_b]:
+//   ∫_a^b f dξ = ∫_{a_m}^{b_m} f dξ + ∫_{b_m}^{b} f dξ − ∫_{a_m}^{a} f dξ,
+//   |∫_{b_m}^{b} f dξ| ≤ r_b · sup_{ξ ∈ [b]} |f(ξ)|   (f enclosed on the ball [b] itself),
+// the middle one by Arb's rigorous integration (Gauss–Legendre on subintervals, the error bounded
+// through f on complex ellipses around each, which is why f also runs on complex balls).
+Status integral(arb_t v, const Program& f, const Balls& x, arb_srcptr a, arb_srcptr b, long bits) {
+  Integrand q(f, x);
+  acb_t res, am, bm;
+  acb_init(res);
+  acb_init(am);
+  acb_init(bm);
+  arb_get_mid_arb(acb_realref(am), a);
+  arb_get_mid_arb(acb_realref(bm), b);
+  mag_t tol;
+  mag_init(tol);
+  mag_set_ui_2exp_si(tol, 1, -bits);
+  acb_calc_integrate_opt_t opt;
+  acb_calc_integrate_opt_init(opt);
+  // a bound on the work (Arb's default, 1000 p + p², is hours at thousands of bits for an
+  // integral that does not converge); a smooth integrand needs far fewer
+  opt->eval_limit = 20 * bits + 4000;
+  acb_calc_integrate(res, integrand, &q, am, bm, bits, tol, opt, bits);
+  // f real on the path gives a real integral: an imaginary part proven nonzero means it is not
+  Status st = q.undefined                          ? Status::Undefined
+              : !acb_is_finite(res)                ? Status::Indeterminate
+              : !arb_contains_zero(acb_imagref(res)) ? Status::Undefined
+                                                   : Status::Ok;
+  if (st == Status::Ok) {
+    arb_set(v, acb_realref(res));  // f is real on the path: the integral's real part holds it
+    // the ends' radii: r · sup|f| on each end's ball
+    arb_t fe, r;
+    arb_init(fe);
+    arb_init(r);
+    for (arb_srcptr end : {a, b}) {
+      if (mag_is_zero(arb_radref(end))) continue;
+      const Status se = q.real(fe, end, bits);
+      if (se != Status::Ok) {
+        st = se == Status::Undefined ? Status::Indeterminate : se;  // undefined near the end, not proven at it
+        break;
+      }
+      arb_abs(fe, fe);
+      arf_set_mag(arb_midref(r), arb_radref(end));
+      mag_zero(arb_radref(r));
+      arb_mul(r, r, fe, bits);
+      arb_add_error(v, r);
+    }
+    arb_clear(fe);
+    arb_clear(r);
+  }
+  mag_clear(tol);
+  acb_clear(res);
+  acb_clear(am);
+  acb_clear(bm);
+  return st;
 }
 
 /// A program bound to its inputs, each enclosed per precision (kept).
@@ -260,10 +489,16 @@ struct Bound {
   arb_srcptr out(const Balls& reg) const { return reg[static_cast<std::size_t>(tape.outs.at(0))]; }
 };
 
+long bits_for(int n) { return static_cast<long>(std::ceil(n * 3.3219280948873623)); }
+
+// An integral's cost grows fast with the precision, and one that Arb's integration cannot settle at
+// several times the bits n digits need will not settle later: its precision stops there.
+long integral_cap(const Program& t, int n, long max_bits) {
+  return t.integrands.empty() ? max_bits : std::min(max_bits, std::max<long>(1024, 4 * bits_for(n)));
+}
+
 void* create(const Program& tape, const std::vector<Program>& inputs) { return new Bound{tape, inputs, {}}; }
 void destroy(void* h) { delete static_cast<Bound*>(h); }
-
-long bits_for(int n) { return static_cast<long>(std::ceil(n * 3.3219280948873623)); }
 
 // n digits: evaluate at p bits; the digits are proven when every value of the ball rounds to them
 // (common_digits). Else p doubles. A ball that keeps holding 0 once the precision is well past what
@@ -271,6 +506,7 @@ long bits_for(int n) { return static_cast<long>(std::ceil(n * 3.3219280948873623
 Answer digits(void* h, int n, long max_bits) {
   Bound& b = *static_cast<Bound*>(h);
   const long zero_bits = std::max<long>(1024, 4 * bits_for(n));
+  max_bits = integral_cap(b.tape, n, max_bits);
   // a few guard bits over what n digits need, and at least one 64-bit limb
   long bits = std::max<long>(64, bits_for(n) + 12);
   Balls reg(b.tape.code.size());
@@ -303,7 +539,8 @@ Answer digits(void* h, int n, long max_bits) {
       a.kind = 4;
       a.error = "no working precision up to " + std::to_string(max_bits) + " bits fixes " + std::to_string(n) + " digits (" +
                 (st == Status::Indeterminate
-                     ? std::string("a step of the evaluation cannot be decided: a divisor, a square root's or a logarithm's argument that cannot be told from 0")
+                     ? std::string("a step of the evaluation cannot be decided: a divisor, a square root's or a logarithm's argument that cannot be told from 0") +
+                           (b.tape.integrands.empty() ? "" : ", or an integral whose integrand is singular on its path")
                      : std::string("the digits do not settle")) +
                 ")";
       return a;
@@ -319,6 +556,7 @@ Answer digits(void* h, int n, long max_bits) {
 Answer root(const Program& r, const Program& dr, const std::vector<Program>& inputs, const Const& start, const Const& lo,
             const Const& hi, bool bracket, int n, long max_bits) {
   Bound R{r, inputs, {}}, D{dr, inputs, {}};
+  max_bits = integral_cap(r, n, max_bits);
   long bits = bits_for(n) + 32;
   arb_t x, t, I, a, b, step, blo, bhi;
   for (arb_ptr p : {x, t, I, a, b, step, blo, bhi}) arb_init(p);

@@ -146,7 +146,7 @@ struct detail::BallRun {
     // the module numbers the operations as Tape::Op does
     static_assert(static_cast<int>(Tape::Op::Const) == 0 && static_cast<int>(Tape::Op::Input) == 1 &&
                   static_cast<int>(Tape::Op::Pow) == 11 && static_cast<int>(Tape::Op::Atan2) == 18 &&
-                  static_cast<int>(Tape::Op::Tanh) == 24);
+                  static_cast<int>(Tape::Op::Tanh) == 24 && static_cast<int>(Tape::Op::Integral) == 25);
     api::Program p;
     p.inputs = t.n_inputs_;
     for (auto& in : t.code_) p.code.push_back({static_cast<std::uint8_t>(in.op), in.a, in.b, in.c});
@@ -158,12 +158,16 @@ struct detail::BallRun {
       else throw std::invalid_argument("a constant ball arithmetic does not know");
     }
     p.outs.assign(t.outs_.begin(), t.outs_.end());
+    for (auto& f : t.integrands_) p.integrands.push_back(program(*f));
     return p;
   }
-  /// A float among the tape's constants (a number found numerically, written into the form).
+  /// A float among the tape's constants, or its integrands' (a number found numerically, written
+  /// into the form).
   static bool has_float(const Tape& t) {
     for (auto& c : t.exact_)
       if (is_float(c)) return true;
+    for (auto& f : t.integrands_)
+      if (has_float(*f)) return true;
     return false;
   }
 };
@@ -233,10 +237,10 @@ std::optional<Proven> root_digits(const ex& r, const symbol& u, const numeric& x
     }
   Tape tr, td;
   try {
-    tr = Tape::compile(r, in);
-    td = Tape::compile(r.diff(u), in);
+    tr = Tape::compile(r, in, Tape::Accept::Integrals);
+    td = Tape::compile(r.diff(u), in, Tape::Accept::Integrals);
   } catch (const std::invalid_argument&) {
-    return std::nullopt;  // a function the tape has no instruction for (a work integral)
+    return std::nullopt;  // a function the tape has no instruction for
   }
   if (detail::BallRun::has_float(tr) || detail::BallRun::has_float(td)) return std::nullopt;
   std::vector<api::Program> inputs;

@@ -136,7 +136,8 @@ Evaluator::Evaluator(const ex& e, const exmap& values) : e_(e) {
       exact_.push_back(v);
     }
   try {
-    precise_tape_ = Tape::compile(stable_, syms_);
+    // (a work integral compiles too: that tape runs only on balls)
+    precise_tape_ = Tape::compile(stable_, syms_, Tape::Accept::Integrals);
   } catch (const std::invalid_argument&) {
     precise_tape_.reset();
   }
@@ -207,8 +208,9 @@ std::optional<Bounded> Evaluator::naive() const {
 }
 
 std::optional<numeric> Evaluator::at(long working) const {
-  if (!precise_tape_) {
-    // no tape for this form: GiNaC's own evaluation at that precision
+  if (!precise_tape_ || precise_tape_->has_integrals()) {
+    // no tape for this form in CLN: GiNaC's own evaluation at that precision (an integral by
+    // tanh–sinh quadrature)
     return evaluate(e_, values_, static_cast<int>(working));
   }
   // the inputs as floats of this precision, converted once (exact values are the business of
@@ -234,7 +236,7 @@ std::optional<numeric> Evaluator::at(long working) const {
 // the form and its values, as its tape is); a rational value is computed again at each call.
 std::optional<numeric> Evaluator::exact_value(bool& undefined) const {
   undefined = false;
-  if (precise_tape_ && !rational_inputs_.empty()) {
+  if (precise_tape_ && !precise_tape_->has_integrals() && !rational_inputs_.empty()) {
     try {
       if (auto r = precise_tape_->precise(rational_inputs_, 20, true); r && cln::instanceof(*r, cln::cl_RA_ring))
         return numeric(cln::cl_N(*r));

@@ -1,6 +1,7 @@
 #include "kinergy/numeric/tape.hpp"
 
 #include "kinergy/expr/canonical.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ inline double powi(double a, int n) {
 
 class TapeBuilder {
 public:
-  TapeBuilder(Tape& t, const std::vector<ex>& inputs) : t_(t) {
+  TapeBuilder(Tape& t, const std::vector<ex>& inputs, Tape::Accept accept) : t_(t), inputs_(inputs), accept_(accept) {
     for (std::size_t i = 0; i < inputs.size(); ++i) {
       Tape::Ins in{Tape::Op::Input, static_cast<std::int32_t>(i), -1, 0};
       seen_[inputs[i]] = emit(in);
@@ -47,6 +48,8 @@ public:
 
 private:
   Tape& t_;
+  const std::vector<ex>& inputs_;
+  const Tape::Accept accept_;
   std::map<ex, std::int32_t, ex_is_less> seen_;
 
   std::int32_t emit(const Tape::Ins& in) {
@@ -106,6 +109,17 @@ private:
       }
       return emit({Op::Pow, node(b), node(k), 0});
     }
+    if (is_integral(e)) {
+      if (accept_ != Tape::Accept::Integrals || !is_a<symbol>(e.op(1)))
+        throw std::invalid_argument("tape: an integral (" + to_text(e) + ") runs only on balls");
+      // ∫_a^b f(ξ) dξ: f on a tape of its own, its inputs ξ and then this tape's inputs (an
+      // integral inside f is not taken: that compile throws)
+      std::vector<ex> in{e.op(1)};
+      in.insert(in.end(), inputs_.begin(), inputs_.end());
+      t_.integrands_.push_back(std::make_shared<const Tape>(Tape::compile(e.op(0), in)));
+      const std::int32_t a = node(e.op(2)), b = node(e.op(3));
+      return emit({Op::Integral, a, b, static_cast<double>(t_.integrands_.size() - 1)});
+    }
     if (is_a<function>(e)) {
       std::string f = ex_to<function>(e).get_name();
       static const std::map<std::string, Op> ops = {
@@ -127,13 +141,15 @@ private:
   }
 };
 
-Tape Tape::compile(const ex& e, const std::vector<ex>& inputs) { return compile(std::vector<ex>{e}, inputs); }
+Tape Tape::compile(const ex& e, const std::vector<ex>& inputs, Accept accept) {
+  return compile(std::vector<ex>{e}, inputs, accept);
+}
 
-Tape Tape::compile(const std::vector<ex>& outputs, const std::vector<ex>& inputs) {
+Tape Tape::compile(const std::vector<ex>& outputs, const std::vector<ex>& inputs, Accept accept) {
   if (outputs.empty()) throw std::invalid_argument("tape: nothing to compute");
   Tape t;
   t.n_inputs_ = inputs.size();
-  TapeBuilder b(t, inputs);
+  TapeBuilder b(t, inputs, accept);
   for (auto& e : outputs) t.outs_.push_back(b.node(e));
   t.out_ = t.outs_.front();
   t.reg_.resize(t.code_.size());
@@ -148,6 +164,10 @@ Tape Tape::compile(const std::vector<ex>& outputs, const std::vector<ex>& inputs
   return t;
 }
 
+void Tape::elementary_only() const {
+  if (has_integrals()) throw std::logic_error("tape: a tape with an integral runs only on balls");
+}
+
 double Tape::operator()(const double* x) const {
   run(x);
   return out_ < 0 ? 0 : reg_[static_cast<std::size_t>(out_)];
@@ -159,6 +179,7 @@ void Tape::eval(const double* x, double* out) const {
 }
 
 void Tape::run(const double* x) const {
+  elementary_only();
   double* r = reg_.data();  // the constants' registers were filled by compile()
   for (auto [reg, input] : inputs_at_) r[reg] = x[input];
   for (std::uint32_t i : work_) {
@@ -190,11 +211,13 @@ void Tape::run(const double* x) const {
       case Op::Sinh: r[i] = std::sinh(a); break;
       case Op::Cosh: r[i] = std::cosh(a); break;
       case Op::Tanh: r[i] = std::tanh(a); break;
+      case Op::Integral: break;  // (elementary_only)
     }
   }
 }
 
 void Tape::batch(const double* x, std::size_t n, double* out) const {
+  elementary_only();
   // registers laid out instruction-major: register i of point k at R[i*n + k]
   batch_reg_.resize(code_.size() * n);
   double* R = batch_reg_.data();
@@ -234,6 +257,7 @@ void Tape::batch(const double* x, std::size_t n, double* out) const {
       case Op::Sinh: each([&](std::size_t k) { return std::sinh(a[k]); }); break;
       case Op::Cosh: each([&](std::size_t k) { return std::cosh(a[k]); }); break;
       case Op::Tanh: each([&](std::size_t k) { return std::tanh(a[k]); }); break;
+      case Op::Integral: break;  // (elementary_only)
     }
   }
   if (out_ < 0) {
@@ -252,6 +276,7 @@ void Tape::batch(const double* x, std::size_t n, double* out) const {
 // by u|r̂| for correctly rounded +, −, ×, ÷, √ and by 2u|r̂| for the library functions (glibc's
 // sin, cos, exp, log, pow are within one ulp).
 Bounded Tape::bounded(const double* x, const double* dx) const {
+  elementary_only();
   constexpr double u = 0x1p-53;
   constexpr double inf = std::numeric_limits<double>::infinity();
   double* r = reg_.data();
@@ -349,6 +374,7 @@ Bounded Tape::bounded(const double* x, const double* dx) const {
         }
         break;
       }
+      case Op::Integral: break;  // (elementary_only)
     }
     r[i] = v;
     E[i] = std::isnan(v) ? inf : e;
@@ -378,6 +404,7 @@ static void cover_argument(const cl_R& x, long digits) {
 }
 
 std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits, bool exact_constants) const {
+  elementary_only();
   const cln::float_format_t f = cln::float_format(digits);
   std::vector<cl_R> r(code_.size());
   for (std::size_t i = 0; i < code_.size(); ++i) {
@@ -480,6 +507,7 @@ std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits, bool 
           v = cln::exp(as_float(b, f) * cln::ln(as_float(a, f)));
         }
         break;
+      case Op::Integral: break;  // (elementary_only)
     }
     r[i] = v;
   }
@@ -492,6 +520,7 @@ std::string Tape::cpp(const std::string& name) const { return source(name, false
 std::string Tape::cpp_vector(const std::string& name) const { return source(name, true); }
 
 std::string Tape::source(const std::string& name, bool vector) const {
+  elementary_only();
   std::ostringstream os;
   auto r = [](std::int32_t i) { return "r" + std::to_string(i); };
   os << "#include <cmath>\n"
@@ -541,6 +570,7 @@ std::string Tape::source(const std::string& name, bool vector) const {
       case Op::Sinh: v = "std::sinh(" + a + ")"; break;
       case Op::Cosh: v = "std::cosh(" + a + ")"; break;
       case Op::Tanh: v = "std::tanh(" + a + ")"; break;
+      case Op::Integral: break;  // (elementary_only)
     }
     os << "  const double " << r(static_cast<std::int32_t>(i)) << " = " << v << ";\n";
   }

@@ -8,8 +8,9 @@
 
 namespace kinergy::principles {
 
-/// Digits of a work integral taken numerically: those of a numeric root, and a margin.
-constexpr int kIntegralDigits = 45;
+/// Digits to which a work integral between known ends must settle as the scene is read (a check
+/// that it has a value there: the value itself is taken when asked, to the digits asked).
+constexpr int kIntegralCheckDigits = 20;
 
 using namespace GiNaC;
 using model::Effect;
@@ -255,8 +256,10 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
   }
   auto F = antiderivative(model::trig_simplify(Qs), s);
   if (!F) {
-    // no elementary antiderivative: U = ∫ Q ds numerically, where both ends and every parameter
-    // in it are known numbers (then marked "no closed form", as a numeric root is)
+    // no elementary antiderivative: U = ∫_{s(1)}^{s(2)} Q ds held as integral(Q, ξ, s₁, s₂), as
+    // erf would hold it; its value comes by quadrature (tanh–sinh in CLN, or Arb's rigorous
+    // integration for proven digits), and where an end is unknown, by a numeric root for the end
+    static const symbol xi("xi");
     const exmap given = m.given_values(), vals = m.parameter_values();
     auto a = numerics::evaluate(m.bind(ex(s), s1).subs(given), vals, 60);
     auto b = numerics::evaluate(m.bind(ex(s), s2).subs(given), vals, 60);
@@ -266,22 +269,19 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
                                   ", so its work cannot be split where it switches",
                        "give " + m.coords[p->s].name + " at " + (!a && !b ? "one of the states" : "that state") +
                            (!a && !b ? std::string() : ", or a nonzero " + m.coords[p->s].name + "_dot at a state"));
+    w.U = numerics::integral_of(Qs.subs(s == xi), xi, m.bind(ex(s), s1).subs(given), m.bind(ex(s), s2).subs(given));
     if (!a || !b) {
-      // an end unknown: U = ∫_{s(1)}^{s(2)} Q ds held as integral(Q, ξ, s₁, s₂), which takes its
-      // value by quadrature once the ends are numbers — the unknown end is found by a numeric root
-      static const symbol xi("xi");
-      w.U = numerics::integral_of(Qs.subs(s == xi), xi, m.bind(ex(s), s1).subs(given), m.bind(ex(s), s2).subs(given));
-      w.how = "U = integral along " + m.coords[p->s].name + ", numerically at each trial end (no closed form)";
+      // an end unknown: the integral takes its value once the root search gives the end a number
+      w.how = "U = integral along " + m.coords[p->s].name + ", numerically at each trial end (no elementary antiderivative)";
       return w;
     }
-    auto I = numerics::integrate(model::trig_simplify(Qs), s, *a, *b, vals, kIntegralDigits);
-    if (!I)
+    // both ends known: the integral must have a value there (checked once, as the scene is read)
+    if (!numerics::integrate(model::trig_simplify(Qs), s, *a, *b, vals, kIntegralCheckDigits))
       throw SceneError(e.pos, "the work of '" + e.name + "' has no closed form integral along " + m.coords[p->s].name +
                                   ", and its numeric value does not settle between the states (a parameter without a value, or a "
                                   "singular integrand?)",
                        "give every parameter in it a value, or write the " + what + " in a form with an elementary antiderivative");
-    w.U = *I;
-    w.how = "U = integral along " + m.coords[p->s].name + ", numerically (no closed form)";
+    w.how = "U = integral along " + m.coords[p->s].name + ", held as an integral (no elementary antiderivative)";
     return w;
   }
   w.U = m.bind(*F, s2) - m.bind(*F, s1);

@@ -147,16 +147,71 @@ TEST_CASE("proven: a zero exact arithmetic does not see says its sign is not fix
   CHECK_THAT(out, Catch::Contains("\"evaluation\": \"sign not fixed: |value| <= "));
 }
 
-TEST_CASE("proven: a work integral taken by quadrature is not called proven, and is refused beyond its digits",
-          "[numeric][proven][cli]") {
+TEST_CASE("proven: a work integral on balls (Arb's integration), both ends known and an end found as a root, against mpmath",
+          "[numeric][proven][integrate][cli]") {
+  // tests/data/numeric/cam_couple_reference.py (the error function and its inverse, mpmath at 130 digits)
+  const std::string omega2 =
+      "6.709051266990077198931405617897785301369551713751955930937200383654461045560510640815708011204599476";
+  const std::string phi2 =
+      "0.7144304417732017885921246356422574111507979678465891313871478517160731816232707870618938450965197532";
   int status = 0;
-  std::string out = kt::run_cli("solve derivations/energy/wheel_cam_couple_numeric.yaml --digits 20 --json", status);
+  std::string out = kt::run_cli("solve derivations/energy/wheel_cam_couple_numeric.yaml --digits 100", status);
   CHECK(status == 0);
-  CHECK_THAT(out, Catch::Contains("\"proven\": false"));
-  CHECK_THAT(out, Catch::Contains("\"radius\": null"));
+  CHECK_THAT(out, Catch::Contains("= " + omega2 + " rad/s   (proven: ball radius "));
   out = kt::run_cli("solve derivations/energy/wheel_cam_couple_angle.yaml --digits 100", status);
-  CHECK(status != 0);
-  CHECK_THAT(out, Catch::Contains("wheel_cam_couple_angle.yaml:") && Catch::Contains("--digits 35 or fewer"));
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= " + phi2 + " rad   (no closed form: taken numerically; proven: ball radius "));
+  out = kt::run_cli("solve derivations/energy/wheel_cam_couple_numeric.yaml --digits 20 --json", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("\"proven\": true"));
+  CHECK_THAT(out, Catch::Contains("\"midpoint\": \"" + omega2.substr(0, 21)));
+  // the default (no --digits) takes the integral by tanh-sinh quadrature in CLN: not a proof, the same digits
+  out = kt::run_cli("solve derivations/energy/wheel_cam_couple_numeric.yaml", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= " + kn::format(numeric(omega2.c_str()), 15) + " rad/s"));
+}
+
+TEST_CASE("ball arithmetic: integrals against mpmath, and undefined or ill-posed ones", "[numeric][proven][integrate]") {
+  symbol x("x"), xi("xi"), a("a");
+  auto proven = [&](const ex& e, const numeric& av, int n) {
+    kn::BallEvaluator b(kn::Tape::compile(e, {a}, kn::Tape::Accept::Integrals), {av});
+    return b.digits(n, 20000);
+  };
+  auto I = [&](const ex& f, const ex& lo, const ex& hi) { return kn::integral_of(f.subs(x == xi), xi, lo, hi); };
+  // tests/data/numeric/cam_couple_reference.py, 60 digits each
+  auto p = proven(I(exp(-pow(x, 2)), 0, a), 1, 60);
+  REQUIRE(p);
+  CHECK(kn::format(p->value, 60) == "0.746824132812427025399467436131853005354499686812606329027654");
+  // backwards: the negative
+  p = proven(I(exp(-pow(x, 2)), a, 0), 1, 60);
+  REQUIRE(p);
+  CHECK(kn::format(p->value, 60) == "-0.746824132812427025399467436131853005354499686812606329027654");
+  // √x at the end 0: a branch point where the path begins (Arb subdivides towards it)
+  p = proven(I(sqrt(x) * atan(x), 0, a), 2, 60);
+  REQUIRE(p);
+  CHECK(kn::format(p->value, 60) == "1.54043578241733831790671836361164442957549035806207395335286");
+  p = proven(I(asin(x / 2) / (1 + x), a, 3 * a), numeric(1, 2), 60);
+  REQUIRE(p);
+  CHECK(kn::format(p->value, 60) == "0.25917824262648267532135704956239017464477346076993992355939");
+  // the input inside the integrand too: x^(1/3) ln x on [1, 3a] with a = 1
+  p = proven(I(log(x) * pow(x, numeric(1, 3)) * a, 1, 3 * a), 1, 60);
+  REQUIRE(p);
+  CHECK(kn::format(p->value, 60) == "1.69376832795479268340019867820928025101552197511098844186564");
+  // an empty path is an exact 0
+  p = proven(I(exp(x), a, a), 1, 20);
+  REQUIRE(p);
+  CHECK(p->kind == kn::Proven::Kind::Exact);
+  // √x on [−1, 1]: undefined on part of the path (no value, not an imaginary one)
+  CHECK(!proven(I(sqrt(x), -a, a), 1, 20));
+  // 1/x across 0: no precision decides it (a pole on the path), and it says so rather than hang
+  CHECK_THROWS_WITH(proven(I(1 / x, -a, 2 * a), 1, 20), Catch::Contains("no working precision") && Catch::Contains("singular on its path"));
+  // an integral compiles only for balls; its double and CLN evaluations refuse
+  CHECK_THROWS_WITH(kn::Tape::compile(I(exp(x), 0, a), {a}), Catch::Contains("runs only on balls"));
+  kn::Tape t = kn::Tape::compile(I(exp(x), 0, a), {a}, kn::Tape::Accept::Integrals);
+  CHECK(t.has_integrals());
+  CHECK_THROWS_AS(t(std::vector<double>{1.0}), std::logic_error);
+  // an integral inside an integrand is not taken
+  CHECK_THROWS(kn::Tape::compile(I(I(exp(x), 0, xi), 0, a), {a}, kn::Tape::Accept::Integrals));
 }
 
 TEST_CASE("ball arithmetic: undefined, indeterminate and exact cases of the tape", "[numeric][proven]") {

@@ -47,6 +47,13 @@ TEST_CASE("tape: every derivation's closed forms agree with 50-digit values", "[
     for (auto& r : s.results) {
       if (!r.closed_form || !r.si) continue;
       INFO(fs::path(f).filename().string() << ": " << r.name << " = " << r.closed);
+      bool integral = false;
+      for (auto it = r.closed.preorder_begin(); it != r.closed.preorder_end(); ++it) integral = integral || kinergy::numerics::is_integral(*it);
+      if (integral) {
+        // a work integral held as such runs only on balls (tests/numeric/test_proven.cpp)
+        CHECK_THROWS_WITH(Tape::compile(r.closed, inputs), Catch::Contains("runs only on balls"));
+        continue;
+      }
       Tape t = Tape::compile(r.closed, inputs);
       double got = t(x);
       // the reference from the same double inputs, at 50 digits

@@ -67,7 +67,7 @@ private:
 /// around the result on which r is defined and whose ends give r proven opposite signs, so that
 /// I holds a root; the precision doubles until every value of I rounds to the same n digits. When
 /// lo < hi, I must lie in [lo, hi] (the bracket the root was found in). @returns nothing when r
-/// does not compile to a tape (a work integral in it), holds a float, or no precision up to
+/// does not compile to a tape (a function it has no instruction for), holds a float, or no precision up to
 /// max_bits proves the digits.
 std::optional<Proven> root_digits(const GiNaC::ex& r, const GiNaC::symbol& u, const GiNaC::numeric& x0, const GiNaC::numeric& lo,
                                   const GiNaC::numeric& hi, const GiNaC::exmap& values, int n, long max_bits);

@@ -4,6 +4,7 @@
 /// precision (exact rationals where the operations allow, floats of the asked precision after).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,13 +34,20 @@ struct NeedsPrecision {
 
 class Tape {
 public:
+  /// What a tape takes besides the elementary functions. A work integral held as
+  /// integral(f, ξ, a, b) (numeric/evaluate.hpp) compiles only with `Integrals`, and such a tape
+  /// runs only on balls (BallEvaluator, root_digits: Arb's rigorous integration); its other
+  /// evaluations throw std::logic_error.
+  enum class Accept { Elementary, Integrals };
+
   /// Compile e; `inputs` are the symbols whose values are given at evaluation, in order.
   /// @throws std::invalid_argument naming a node the tape cannot evaluate, or a free symbol
   /// that is not an input.
-  static Tape compile(const GiNaC::ex& e, const std::vector<GiNaC::ex>& inputs);
+  static Tape compile(const GiNaC::ex& e, const std::vector<GiNaC::ex>& inputs, Accept accept = Accept::Elementary);
   /// Several outputs from one tape: a subexpression shared between them is computed once
   /// (sin θ for every entry of M(q) and Q). The single-value calls give the first output.
-  static Tape compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs);
+  static Tape compile(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::ex>& inputs,
+                      Accept accept = Accept::Elementary);
 
   /// Every output at x: out[k] is output k.
   void eval(const double* x, double* out) const;
@@ -74,17 +82,23 @@ public:
   std::size_t instructions() const { return code_.size(); }  ///< after sharing
   std::size_t outputs() const { return outs_.size(); }
   std::size_t inputs() const { return n_inputs_; }
+  /// It holds an integral: it runs only on balls.
+  bool has_integrals() const { return !integrands_.empty(); }
 
 private:
   enum class Op : std::uint8_t {
     Const, Input, Add, Mul, Div, Neg, Sq, Cube, Powi, Sqrt, Rsqrt, Pow,
-    Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Exp, Log, Abs, Sinh, Cosh, Tanh
+    Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Exp, Log, Abs, Sinh, Cosh, Tanh,
+    Integral  ///< ∫_a^b f(ξ) dξ: a, b the ends' registers, c the index of f in integrands_
   };
   struct Ins {
     Op op;
     std::int32_t a = -1, b = -1;  ///< operand registers (Input: the input's index; Const: its exact value's index)
     double c = 0;                 ///< constant, or an integer exponent
   };
+  /// Each integral's integrand, a tape of its own: input 0 is ξ, inputs 1… this tape's inputs.
+  std::vector<std::shared_ptr<const Tape>> integrands_;
+  void elementary_only() const;  ///< @throws std::logic_error when the tape holds an integral
   std::vector<Ins> code_;
   std::vector<GiNaC::ex> exact_;     ///< each constant exactly (a rational, or π, …)
   std::vector<double> const_err_;    ///< |double constant − exact constant|
