@@ -180,23 +180,34 @@ std::optional<numeric> Result::value(const exmap& env, int digits) const {
 }
 
 std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_double) const {
-  if (!closed_form && root && !(prefer_double && digits <= 15)) {
-    // v = u / unit_factor solves r(v · unit_factor) = 0: its digits proven on balls
-    symbol v("v");
-    const ex r = root->residual.subs(root_unknown == v * unit_factor);
-    auto at = [&](const ex& x) { return numerics::evaluate(x / unit_factor, env, digits + 20); };
-    auto x0 = at(closed), lo = at(root->lo), hi = at(root->hi);
-    if (x0 && lo && hi) {
-      const long max_bits = numerics::bits_for(std::max(20000, 8 * digits));
-      if (auto p = numerics::root_digits(r, v, *x0, std::min(*lo, *hi), std::max(*lo, *hi), env, digits, max_bits)) {
-        const long working = numerics::digits_in(p->bits);
-        if (p->kind == numerics::Proven::Kind::Exact) return Value{p->value, Value::How::Exact, 0, 0, true, p->value, p->value};
-        return Value{p->at.mid(), Value::How::Precise, working, 0, true, p->at.lo, p->at.hi};
+  if (!closed_form && !roots.empty() && !(prefer_double && digits <= 15)) {
+    const long max_bits = numerics::bits_for(std::max(20000, 8 * digits));
+    std::optional<numerics::Proven> p;
+    if (roots.size() == 1 && of_roots.is_equal(roots[0].u)) {
+      // the root itself: v = u / unit_factor solves r(v · unit_factor) = 0, its digits proven on balls
+      symbol v("v");
+      const ex r = roots[0].residual.subs(roots[0].u == v * unit_factor);
+      auto at = [&](const ex& x) { return numerics::evaluate(x / unit_factor, env, digits + 20); };
+      auto x0 = at(roots[0].at), lo = at(roots[0].lo), hi = at(roots[0].hi);
+      if (x0 && lo && hi) p = numerics::root_digits(r, v, *x0, std::min(*lo, *hi), std::max(*lo, *hi), env, digits, max_bits);
+    } else {
+      // an expression of the roots: each root enclosed on balls, the expression on those enclosures
+      p = numerics::digits_at_roots(of_roots / unit_factor, roots, env, digits, max_bits);
+    }
+    if (p) {
+      const long working = numerics::digits_in(p->bits);
+      switch (p->kind) {
+        case numerics::Proven::Kind::Exact: return Value{p->value, Value::How::Exact, 0, 0, true, p->value, p->value};
+        case numerics::Proven::Kind::Digits: return Value{p->at.mid(), Value::How::Precise, working, 0, true, p->at.lo, p->at.hi};
+        case numerics::Proven::Kind::Unsigned: {
+          const numeric m = std::max(abs(p->at.lo), abs(p->at.hi));
+          return Value{0, Value::How::Zero, working, numerics::round_up2(m).to_double(), true, p->at.lo, p->at.hi};
+        }
       }
     }
   }
   if (!closed_form && digits > kRootDigits)
-    throw SceneError(pos, "'" + name + "' has no closed form (it holds a number found by a numeric root), found to " + std::to_string(kRootDigits) +
+    throw SceneError(pos, "'" + name + "' has no closed form (it holds a number found numerically, by a root or a stationary point), found to " + std::to_string(kRootDigits) +
                               " significant digits; " + std::to_string(digits) + " were asked",
                      "ask for --digits " + std::to_string(kRootDigits) + " or fewer");
   numerics::Evaluator ev(closed / unit_factor, env);
@@ -247,6 +258,7 @@ public:
           if (f.value.has(qs.first) || f.value.has(qs.second)) add_state(static_cast<int>(s));
     for (auto& e : sol_.equations) check_units(e);
     choose(solve(sol_.equations));
+    solve_in_roots();
     for (auto& f : m.finds) sol_.results.push_back(result(f));
   }
 
@@ -258,6 +270,7 @@ private:
   std::optional<principles::Knowledge> know_;
   std::vector<ex> unknowns;
   exmap reference;  ///< a coordinate's value at another state, for numeric root searches
+  exmap in_roots_;  ///< the chosen branch's unknowns as expressions of its numeric roots (solve_in_roots)
   std::map<ex, std::pair<ex, ex>, ex_is_less> ranges;  ///< root ranges of results that are one unknown
   std::set<int> states_in;
   int fewer_switches_ = 0;  ///< see principles::Knowledge::fewer_switches
@@ -350,8 +363,9 @@ private:
     }
   }
 
-  std::vector<solve::Branch> solve(const std::vector<principles::Equation>& eqs) const {
-    solve::Problem p{eqs, unknowns, given, env, reference, ranges, {}, {}};
+  std::vector<solve::Branch> solve(const std::vector<principles::Equation>& eqs) const { return solve(eqs, unknowns, env); }
+  std::vector<solve::Branch> solve(const std::vector<principles::Equation>& eqs, const std::vector<ex>& us, const exmap& e) const {
+    solve::Problem p{eqs, us, given, e, reference, ranges, {}, {}};
     for (auto& a : m.analyses) p.impulses.insert(a.unknowns.begin(), a.unknowns.end());
     for (auto& x : m.params)
       if (!x.value && !x.unknown) p.stand_ins.insert(x.sym);
@@ -360,6 +374,58 @@ private:
     } catch (const solve::SolveError& e) {
       SourcePos pos = e.pos().line > 0 ? e.pos() : (m.analyses.empty() ? SourcePos{m.file, 1, 1} : m.analyses.front().pos);
       throw SceneError(pos, e.what(), e.fix());
+    }
+  }
+
+  /// The chosen branch's unknowns as expressions of the unknowns it found by numeric roots, so that
+  /// a value solved from a root's number can be proven from the root's own equation: solved again
+  /// with each such unknown taken as known (its number in env, for the solver's decisions), and
+  /// the branch whose values agree with the chosen one kept. Unknowns with no root's number in
+  /// them keep their closed form.
+  void solve_in_roots() {
+    const solve::Branch& b = sol_.branch;
+    if (b.roots.empty()) return;
+    exmap in, with_roots = env;
+    for (auto& [u, nr] : b.roots) {
+      in[u] = u;
+      with_roots[u] = b.sol.at(u);
+    }
+    std::vector<ex> rest;
+    bool needed = false;
+    for (auto& u : unknowns) {
+      auto it = b.sol.find(u);
+      if (b.roots.count(u) || it == b.sol.end()) continue;  // (an unknown nothing fixed stays one)
+      rest.push_back(u);
+      needed = needed || has_float(it->second);
+    }
+    if (!needed) {
+      for (auto& u : rest) in[u] = b.sol.at(u);
+      in_roots_ = in;
+      return;
+    }
+    std::vector<solve::Branch> again;
+    try {
+      again = solve(sol_.equations, rest, with_roots);
+    } catch (const std::exception&) {
+      return;  // not solved so: the values solved from the roots stay numbers
+    }
+    for (auto& c : again) {
+      if (!c.roots.empty()) continue;
+      bool same = true;
+      for (auto& u : rest) {
+        auto ci = c.sol.find(u);
+        auto bi = b.sol.find(u);
+        if (ci == c.sol.end() || bi == b.sol.end()) {
+          same = false;
+          break;
+        }
+        auto x = numerics::evaluate(ci->second.subs(given), with_roots, 30), y = numerics::evaluate(bi->second.subs(given), env, 30);
+        same = same && x && y && abs(*x - *y) <= numerics::tenth(20) * (abs(*y) + 1);
+      }
+      if (!same) continue;
+      for (auto& u : rest) in[u] = c.sol.at(u);
+      in_roots_ = in;
+      return;
     }
   }
 
@@ -433,10 +499,11 @@ private:
     struct Cand {
       numeric p, F;
       std::string how;
+      numeric lo, hi;  ///< a stationary point: the bracket dF/dp changes sign in
     };
     std::vector<Cand> cands;
     for (const numeric& e : {*lo, *hi})
-      if (auto v = value_at(F, e)) cands.push_back({e, *v, "end of the range"});
+      if (auto v = value_at(F, e)) cands.push_back({e, *v, "end of the range", e, e});
     const int N = 400;
     std::optional<numeric> prev;
     numeric prev_p = *lo;
@@ -454,7 +521,8 @@ private:
         auto s2 = value_at(d2F, root);
         if (v && s2) {
           bool kind_ok = x.largest ? s2->is_negative() : s2->is_positive();
-          cands.push_back({root, *v, std::string(kind_ok ? "stationary" : "stationary, not a ") + (kind_ok ? "" : x.largest ? "maximum" : "minimum")});
+          cands.push_back({root, *v, std::string(kind_ok ? "stationary" : "stationary, not a ") + (kind_ok ? "" : x.largest ? "maximum" : "minimum"),
+                           d->is_zero() ? pi : prev_p, pi});
           cands.back().how += ": second derivative " + numerics::format(*s2, 6) +
                               (kind_ok ? (x.largest ? " < 0, a maximum" : " > 0, a minimum") : "");
         }
@@ -493,6 +561,12 @@ private:
     std::optional<ex> place;
     if (best->how == "end of the range") place = best->p == *lo ? x.lo : x.hi;
     else place = stationary_place(dF, p, best->p);
+    if (!place && best->how != "end of the range" && !has_float(F)) {
+      // no closed form for the stationary point p*: its digits are proven as a root of dF/dp = 0
+      // in its bracket, and the value there as F on p*'s enclosure
+      r.of_roots = x.location ? ex(p) : F;
+      r.roots = {numerics::RootOf{p, dF, best->p, best->lo, best->hi}};
+    }
     if (!place) return;
     ex at_place = model::factored(model::root_simplify(model::tidy(F.subs(p == *place)), [this](const ex& y) { return m.fixed_sign(y); }));
     auto pv = numerics::evaluate(*place, env, digits), fv = numerics::evaluate(at_place, env, digits);
@@ -771,14 +845,22 @@ private:
   r.closed_form = !has_float(c);
   r.closed = model::factored(model::root_simplify(model::tidy(model::tidy_function_arguments(c)),
                                                   [this](const ex& x) { return m.fixed_sign(x); }));
-  // the unknown itself, found by a numeric root: keep how (for proving its digits)
-  try {
-    ex u = f.value.subs(given);
-    if (auto it = sol.branch.roots.find(u); it != sol.branch.roots.end()) {
-      r.root_unknown = u;
-      r.root = it->second;
+  // a value that holds numbers found by numeric roots: the same value as an expression of the
+  // roots (for proving its digits)
+  if (!r.closed_form && !in_roots_.empty()) {
+    try {
+      const ex g = f.value.subs(given).subs(in_roots_);
+      bool free = !has_float(g);
+      for (auto& u : unknowns) free = free && (!g.has(u) || sol.branch.roots.count(u));
+      if (free) {
+        for (auto& [u, nr] : sol.branch.roots)
+          if (g.has(u) && is_a<numeric>(sol.branch.sol.at(u)))
+            r.roots.push_back({u, nr.residual, ex_to<numeric>(sol.branch.sol.at(u)), nr.lo, nr.hi});
+        r.of_roots = g;
+      }
+    } catch (const std::exception&) {
+      r.roots.clear();
     }
-  } catch (const std::exception&) {
   }
   if (f.extreme) extreme(f, r);
   if (f.reach) reach(f, r);

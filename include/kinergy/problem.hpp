@@ -7,6 +7,7 @@
 #include <ginac/ginac.h>
 
 #include "kinergy/model/model.hpp"
+#include "kinergy/numeric/ball.hpp"
 #include "kinergy/principles/momentum.hpp"
 #include "kinergy/principles/principles.hpp"
 #include "kinergy/scene/scene.hpp"
@@ -44,10 +45,12 @@ struct Result {
   GiNaC::ex extreme_of;  ///< the expression made greatest or least (of the parameter)
   std::string extreme_what = "of the parameter";  ///< what extreme_of is, for the derivation
   GiNaC::ex unit_factor = 1;        ///< SI value / unit_factor = value in the display unit
-  /// A result that is an unknown found by a numeric root: the unknown, and the equation and
-  /// bracket it was found in (its digits are then proven by ball arithmetic to any number).
-  GiNaC::ex root_unknown;
-  std::optional<solve::NumericRoot> root;
+  /// A result that holds numbers found as roots (an unknown found by a numeric root, a value
+  /// solved from one, an extreme at a stationary point found numerically): the same value as an
+  /// expression of those roots (SI; in the parameters and the roots' unknowns), and each root's
+  /// equation and bracket. Its digits are then proven by ball arithmetic to any number.
+  GiNaC::ex of_roots;
+  std::vector<numerics::RootOf> roots;
   /// Value in the display unit with `digits` correct significant digits (working precision
   /// raised until stable). @returns nothing when parameters lack values.
   std::optional<GiNaC::numeric> value(const GiNaC::exmap& env, int digits) const;

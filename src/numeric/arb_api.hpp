@@ -10,10 +10,12 @@
 
 namespace kinergy::numerics::arbapi {
 
-/// A constant of a tape: a rational p/q (decimal digits), or π, Euler's γ, Catalan's G.
+/// A constant of a tape: a rational p/q (decimal digits), or π, Euler's γ, Catalan's G; or an
+/// interval [p/q, p2/q2] (an input known only to lie there: a root proven to some digits).
 struct Const {
-  enum Kind : std::uint8_t { Rational, Pi, Euler, Catalan } kind = Rational;
+  enum Kind : std::uint8_t { Rational, Pi, Euler, Catalan, Interval } kind = Rational;
   std::string num = "0", den = "1";
+  std::string num2 = "0", den2 = "1";  ///< Interval: the upper end
 };
 
 /// One instruction, as Tape keeps it (op: Tape::Op's value; a, b: registers, or for Input the
@@ -66,7 +68,7 @@ struct Api {
                  const Const& lo, const Const& hi, bool bracket, int n, long max_bits);
 };
 
-constexpr int kVersion = 2;
+constexpr int kVersion = 3;
 
 }  // namespace kinergy::numerics::arbapi
 

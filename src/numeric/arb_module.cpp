@@ -63,20 +63,34 @@ private:
   acb_ptr v_;
 };
 
-/// A constant at `bits`: a rational rounded (exact when it fits), or π, γ, G.
+/// A rational p/q at `bits` (exact when it fits, else a ball around it).
+void set_rational(arb_t x, const std::string& p, const std::string& q, long bits) {
+  fmpq_t r;
+  fmpq_init(r);
+  fmpz_set_str(fmpq_numref(r), p.c_str(), 10);
+  fmpz_set_str(fmpq_denref(r), q.c_str(), 10);
+  arb_set_fmpq(x, r, bits);
+  fmpq_clear(r);
+}
+
+/// A constant at `bits`: a rational rounded (exact when it fits), or π, γ, G; an interval as the
+/// ball that holds both its ends.
 void set_const(arb_t x, const Const& c, long bits) {
   switch (c.kind) {
     case Const::Pi: arb_const_pi(x, bits); return;
     case Const::Euler: arb_const_euler(x, bits); return;
     case Const::Catalan: arb_const_catalan(x, bits); return;
-    case Const::Rational: break;
+    case Const::Rational: set_rational(x, c.num, c.den, bits); return;
+    case Const::Interval: {
+      arb_t hi;
+      arb_init(hi);
+      set_rational(x, c.num, c.den, bits);
+      set_rational(hi, c.num2, c.den2, bits);
+      arb_union(x, x, hi, bits);
+      arb_clear(hi);
+      return;
+    }
   }
-  fmpq_t q;
-  fmpq_init(q);
-  fmpz_set_str(fmpq_numref(q), c.num.c_str(), 10);
-  fmpz_set_str(fmpq_denref(q), c.den.c_str(), 10);
-  arb_set_fmpq(x, q, bits);
-  fmpq_clear(q);
 }
 
 /// The ball's ends as integers' digits: [a · 2^e, b · 2^e].

@@ -255,6 +255,53 @@ std::optional<Proven> root_digits(const ex& r, const symbol& u, const numeric& x
   return proven(a);
 }
 
+std::optional<Proven> digits_at_roots(const ex& g, const std::vector<RootOf>& roots, const exmap& values, int n, long max_bits) {
+  // the inputs: the roots' unknowns, then g's other symbols with their values
+  std::vector<ex> syms;
+  std::vector<api::Program> given;
+  for (auto& r : roots) syms.push_back(r.u);
+  for (auto& [s, v] : values) {
+    if (!g.has(s) || std::any_of(roots.begin(), roots.end(), [&](const RootOf& r) { return r.u.is_equal(s); })) continue;
+    if (holds_float(v)) return std::nullopt;
+    syms.push_back(s);
+    given.push_back(input_program(v));
+  }
+  Tape t;
+  try {
+    t = Tape::compile(g, syms, Tape::Accept::Integrals);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;  // a function the tape has no instruction for, or a symbol without a value
+  }
+  if (detail::BallRun::has_float(t)) return std::nullopt;
+  const api::Program program = detail::BallRun::program(t);
+  const api::Api& m = module();
+  for (int digits = n + 10;; digits *= 2) {
+    const long bits = std::min(max_bits, bits_for(digits) + 64);
+    std::vector<api::Program> in;
+    for (auto& r : roots) {
+      if (!is_a<symbol>(r.u)) return std::nullopt;
+      auto p = root_digits(r.residual, ex_to<symbol>(r.u), r.at, r.lo, r.hi, values, digits, max_bits);
+      if (!p) return std::nullopt;
+      // the root lies in [lo, hi]: an input known to that width
+      api::Program x;
+      x.code.push_back({0, 0, -1, 0});
+      api::Const c = rational(p->kind == Proven::Kind::Exact ? p->value : p->at.lo);
+      const api::Const hi = rational(p->kind == Proven::Kind::Exact ? p->value : p->at.hi);
+      c.kind = api::Const::Interval;
+      c.num2 = hi.num;
+      c.den2 = hi.den;
+      x.consts.push_back(c);
+      x.outs.push_back(0);
+      in.push_back(std::move(x));
+    }
+    in.insert(in.end(), given.begin(), given.end());
+    BallEvaluator::Impl run(m, m.create(program, in));
+    const api::Answer a = m.digits(run.handle, n, bits);
+    if (a.kind == 0 || a.kind == 1 || a.kind == 2) return proven(a);
+    if (a.kind == 3 || bits >= max_bits) return std::nullopt;  // undefined on the roots' balls, or no precision fixes it
+  }
+}
+
 long bits_for(int n) { return static_cast<long>(std::ceil(n * 3.3219280948873623)); }
 
 long digits_in(long bits) { return static_cast<long>(static_cast<double>(bits) * 0.30102999566398120); }

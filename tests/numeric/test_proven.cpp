@@ -171,6 +171,33 @@ TEST_CASE("proven: a work integral on balls (Arb's integration), both ends known
   CHECK_THAT(out, Catch::Contains("= " + kn::format(numeric(omega2.c_str()), 15) + " rad/s"));
 }
 
+TEST_CASE("proven: values that hold numbers found numerically — solved from a numeric root, an extreme at a numeric stationary point",
+          "[numeric][proven][roots][cli]") {
+  // tests/data/numeric/roots_reference.py (mpmath at 80 digits)
+  int status = 0;
+  std::string out = kt::run_cli("solve tests/data/numeric/rod_power_spring.yaml --digits 60", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= 33.5318066590265941049948173215214111221693048198773393115431 deg   (no closed form: taken numerically; proven: "));
+  CHECK_THAT(out, Catch::Contains("= 51.7450284033851464407020667140752353478537453449013265684211 W   (no closed form: taken numerically; proven: "));
+  // h2 = (L/2) sin(theta2), from the root theta2
+  auto text = kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/tests/data/wound_spring.yaml") + "  h2: {value: L/2*sin(theta@2), unit: m}\n";
+  auto s = kinergy::solve_scene(kinergy::scene::load_string(text, "wound.yaml"));
+  auto h = s.results.at(1).evaluate(s.model.numeric_environment(), 60, false);
+  REQUIRE(h);
+  CHECK(h->proven);
+  CHECK(kn::format(h->v, 60) == "-0.298596962139167321553855347774685689832307129805543319664395");
+  // w3 solved (energy 2 -> 3) from the root theta2: -w1 = -46 rad/s by the energy from 1 to 3,
+  // which the ball holds (not exact: the root's number is only enclosed)
+  auto b = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/tests/data/numeric/wound_spring_back.yaml");
+  auto w3 = b.results.at(1).evaluate(b.model.numeric_environment(), 50, false);
+  REQUIRE(w3);
+  CHECK(w3->proven);
+  CHECK(w3->how == kinergy::Value::How::Precise);
+  CHECK(w3->lo <= -46);
+  CHECK(-46 <= w3->hi);
+  CHECK(w3->hi - w3->lo < pow(numeric(10), -48));
+}
+
 TEST_CASE("ball arithmetic: integrals against mpmath, and undefined or ill-posed ones", "[numeric][proven][integrate]") {
   symbol x("x"), xi("xi"), a("a");
   auto proven = [&](const ex& e, const numeric& av, int n) {

@@ -72,6 +72,23 @@ private:
 std::optional<Proven> root_digits(const GiNaC::ex& r, const GiNaC::symbol& u, const GiNaC::numeric& x0, const GiNaC::numeric& lo,
                                   const GiNaC::numeric& hi, const GiNaC::exmap& values, int n, long max_bits);
 
+/// A number found as a root that a value depends on: u with residual(u) = 0 (the other symbols of
+/// the residual at their values), found as `at` inside the bracket [lo, hi].
+struct RootOf {
+  GiNaC::ex u;  ///< a symbol (held as an ex: a realsymbol copied into a symbol would be another symbol)
+  GiNaC::ex residual;
+  GiNaC::numeric at, lo, hi;
+};
+
+/// g at the roots u₁…u_k (and the other symbols of g at their exact `values`) to n proven digits:
+/// each root is proven on balls to m ≥ n + 10 digits (root_digits), and g runs on balls whose
+/// inputs are those enclosures; m doubles until g's digits are fixed. A value solved from a
+/// numeric root, or an extreme at a stationary point found numerically, is proven so. @returns
+/// nothing when a root is not proven, g holds a float or a function the tape has no instruction
+/// for, or no m up to max_bits fixes the digits.
+std::optional<Proven> digits_at_roots(const GiNaC::ex& g, const std::vector<RootOf>& roots, const GiNaC::exmap& values, int n,
+                                      long max_bits);
+
 /// Bits for n decimal digits (n·log₂10), rounded up.
 long bits_for(int n);
 /// The decimal digits `bits` bits hold (bits·log₁₀2), rounded down: a working precision as text says it.
