@@ -37,10 +37,15 @@ struct Program {
   std::vector<Program> integrands;
 };
 
-/// An enclosure [lo, hi] = [a · 2^e, b · 2^e] (a, b: signed hexadecimal digits).
+/// An enclosure [lo, hi] = [a · 2^e, b · 2^e] (a, b: signed hexadecimal digits; or, when `small`,
+/// |a| and |b| as two 64-bit limbs each, low limb first, with their signs: what a working
+/// precision of a limb or two gives, without text).
 struct Interval {
   std::string a = "0", b = "0";
   long e = 0;
+  bool small = false;
+  std::uint64_t a_limbs[2] = {0, 0}, b_limbs[2] = {0, 0};
+  bool a_negative = false, b_negative = false;
 };
 
 /// What a proof gives back. kind: 0 exact (the point `at`), 1 digits (every value of `at` rounds

@@ -101,13 +101,28 @@ Interval ends(const arb_t x) {
   fmpz_init(e);
   arb_get_interval_fmpz_2exp(a, b, e, x);
   Interval out;
-  char* s = fmpz_get_str(nullptr, 16, a);
-  out.a = s;
-  flint_free(s);
-  s = fmpz_get_str(nullptr, 16, b);
-  out.b = s;
-  flint_free(s);
   out.e = fmpz_get_si(e);
+  if (fmpz_bits(a) <= 128 && fmpz_bits(b) <= 128) {
+    out.small = true;
+    out.a_negative = fmpz_sgn(a) < 0;
+    out.b_negative = fmpz_sgn(b) < 0;
+    ulong limbs[2];
+    fmpz_abs(a, a);
+    fmpz_get_ui_array(limbs, 2, a);
+    out.a_limbs[0] = limbs[0];
+    out.a_limbs[1] = limbs[1];
+    fmpz_abs(b, b);
+    fmpz_get_ui_array(limbs, 2, b);
+    out.b_limbs[0] = limbs[0];
+    out.b_limbs[1] = limbs[1];
+  } else {
+    char* s = fmpz_get_str(nullptr, 16, a);
+    out.a = s;
+    flint_free(s);
+    s = fmpz_get_str(nullptr, 16, b);
+    out.b = s;
+    flint_free(s);
+  }
   fmpz_clear(a);
   fmpz_clear(b);
   fmpz_clear(e);
@@ -117,31 +132,68 @@ Interval ends(const arb_t x) {
 /// Whether every value in x rounds to the same n significant digits (half away from zero, as
 /// `round_sig`): ±D · 10^k with 10^(n−1) ≤ D < 10^n. Decided on balls: y = |x| · 10^(n−1−e10)
 /// and ⌊y + ½⌋ must be one integer.
+/// 10^k as a ball of `prec` bits (an exact integer, or its reciprocal rounded), kept: the same few
+/// powers serve every call at a precision.
+arb_srcptr power_of_ten(long k, slong prec) {
+  struct Power {
+    arb_t v;
+    Power() { arb_init(v); }
+    ~Power() { arb_clear(v); }
+    Power(const Power&) = delete;
+    Power& operator=(const Power&) = delete;
+  };
+  thread_local std::map<std::pair<long, slong>, Power> kept;
+  if (kept.size() > 512) kept.clear();
+  auto [it, made] = kept.try_emplace({k, prec});
+  if (made) {
+    arb_ui_pow_ui(it->second.v, 10, static_cast<ulong>(k < 0 ? -k : k), prec);
+    if (k < 0) arb_inv(it->second.v, it->second.v, prec);
+  }
+  return it->second.v;
+}
+
+/// 10^(n−1) and 10^n as integers, kept per n.
+const std::pair<fmpz_t, fmpz_t>& digit_bounds(int n) {
+  struct Bounds {
+    std::pair<fmpz_t, fmpz_t> b;
+    Bounds() {
+      fmpz_init(b.first);
+      fmpz_init(b.second);
+    }
+    ~Bounds() {
+      fmpz_clear(b.first);
+      fmpz_clear(b.second);
+    }
+    Bounds(const Bounds&) = delete;
+    Bounds& operator=(const Bounds&) = delete;
+  };
+  thread_local std::map<int, Bounds> kept;
+  auto [it, made] = kept.try_emplace(n);
+  if (made) {
+    fmpz_ui_pow_ui(it->second.b.first, 10, static_cast<ulong>(n - 1));
+    fmpz_ui_pow_ui(it->second.b.second, 10, static_cast<ulong>(n));
+  }
+  return it->second.b;
+}
+
 bool common_digits(const arb_t x, int n, slong prec) {
   if (arb_contains_zero(x)) return false;
   // |mid| < 2^e2: log₁₀|x| is near e2 · log₁₀2
   const slong e2 = arf_abs_bound_lt_2exp_si(arb_midref(x));
   long e10 = static_cast<long>(std::floor(static_cast<double>(e2) * 0.30102999566398120));
-  arb_t y, t;
+  arb_t y;
   arb_init(y);
-  arb_init(t);
-  fmpz_t D, k, lo, hi;
+  fmpz_t D;
   fmpz_init(D);
-  fmpz_init(k);
-  fmpz_init(lo);
-  fmpz_init(hi);
-  fmpz_ui_pow_ui(lo, 10, static_cast<ulong>(n - 1));
-  fmpz_ui_pow_ui(hi, 10, static_cast<ulong>(n));
+  const auto& [lo, hi] = digit_bounds(n);
   bool out = false;
   for (int tries = 0; tries < 6; ++tries) {
     const long shift = n - 1 - e10;
-    arb_set_ui(t, 10);
-    fmpz_set_si(k, shift);
-    arb_pow_fmpz(t, t, k, prec + 64);
     arb_abs(y, x);
-    arb_mul(y, y, t, prec + 64);
-    arb_set_d(t, 0.5);
-    arb_add(y, y, t, prec + 64);
+    arb_mul(y, y, power_of_ten(shift, prec + 64), prec + 64);
+    arb_mul_2exp_si(y, y, 1);  // y + ½ = (2y + 1)/2, exactly
+    arb_add_ui(y, y, 1, prec + 64);
+    arb_mul_2exp_si(y, y, -1);
     arb_floor(y, y, prec + 64);
     if (!arb_get_unique_fmpz(D, y)) break;  // the ball holds a rounding boundary
     if (fmpz_cmp(D, hi) >= 0) {
@@ -154,18 +206,15 @@ bool common_digits(const arb_t x, int n, slong prec) {
     }
   }
   fmpz_clear(D);
-  fmpz_clear(k);
-  fmpz_clear(lo);
-  fmpz_clear(hi);
   arb_clear(y);
-  arb_clear(t);
   return out;
 }
 
 Status integral(arb_t v, const Program& f, const Balls& x, arb_srcptr a, arb_srcptr b, long bits);
 
-/// Run a program on `x` (one ball per input) at `bits`; every register into `reg`.
-Status run(const Program& t, const Balls& x, long bits, Balls& reg) {
+/// Run a program on `x` (one ball per input) at `bits`; every register into `reg`. `consts`: the
+/// program's constants at `bits`, when kept (else each is made again from its digits).
+Status run(const Program& t, const Balls& x, long bits, Balls& reg, const Balls* consts = nullptr) {
   const slong p = bits;
   for (std::size_t i = 0; i < t.code.size(); ++i) {
     const Ins& in = t.code[i];
@@ -175,7 +224,10 @@ Status run(const Program& t, const Balls& x, long bits, Balls& reg) {
     arb_srcptr a = !leaf && in.a >= 0 ? reg[static_cast<std::size_t>(in.a)] : nullptr;
     arb_srcptr b = in.b >= 0 ? reg[static_cast<std::size_t>(in.b)] : nullptr;
     switch (op) {
-      case Op::Const: set_const(v, t.consts[static_cast<std::size_t>(in.a)], bits); break;
+      case Op::Const:
+        if (consts) arb_set(v, (*consts)[static_cast<std::size_t>(in.a)]);
+        else set_const(v, t.consts[static_cast<std::size_t>(in.a)], bits);
+        break;
       case Op::Input: arb_set(v, x[static_cast<std::size_t>(in.a)]); break;
       case Op::Add: arb_add(v, a, b, p); break;
       case Op::Mul: arb_mul(v, a, b, p); break;
@@ -470,6 +522,17 @@ struct Bound {
   Program tape;
   std::vector<Program> inputs;
   std::map<long, Balls> at_bits;
+  Balls reg{tape.code.size()};  ///< the tape's registers, kept between calls
+  std::map<long, Balls> consts_at_bits;  ///< the tape's constants, per precision
+
+  /// The tape's constants at `bits` (made once).
+  const Balls& constants(long bits) {
+    auto it = consts_at_bits.find(bits);
+    if (it != consts_at_bits.end()) return it->second;
+    Balls c(tape.consts.size());
+    for (std::size_t i = 0; i < tape.consts.size(); ++i) set_const(c[i], tape.consts[i], bits);
+    return consts_at_bits.emplace(bits, std::move(c)).first->second;
+  }
 
   /// The inputs at `bits`: nothing when one of them is undefined there.
   const Balls* enclosed(long bits) {
@@ -494,11 +557,12 @@ struct Bound {
   Status eval(long bits, Balls& reg, arb_srcptr first = nullptr) {
     const Balls* x = enclosed(bits);
     if (!x) return Status::Undefined;
-    if (!first) return run(tape, *x, bits, reg);
+    const Balls& c = constants(bits);
+    if (!first) return run(tape, *x, bits, reg, &c);
     Balls y(x->size());
     for (std::size_t i = 0; i < x->size(); ++i) arb_set(y[i], (*x)[i]);
     arb_set(y[0], first);
-    return run(tape, y, bits, reg);
+    return run(tape, y, bits, reg, &c);
   }
   arb_srcptr out(const Balls& reg) const { return reg[static_cast<std::size_t>(tape.outs.at(0))]; }
 };
@@ -523,7 +587,7 @@ Answer digits(void* h, int n, long max_bits) {
   max_bits = integral_cap(b.tape, n, max_bits);
   // a few guard bits over what n digits need, and at least one 64-bit limb
   long bits = std::max<long>(64, bits_for(n) + 12);
-  Balls reg(b.tape.code.size());
+  Balls& reg = b.reg;
   Answer a;
   for (;;) {
     const Status st = b.eval(bits, reg);

@@ -136,7 +136,28 @@ numeric scaled(const cln::cl_I& m, long e) {
   return numeric(cln::cl_N(cln::scale_float(f, e)));
 }
 
-Enclosure enclosure(const api::Interval& i) { return {scaled(from_hex(i.a), i.e), scaled(from_hex(i.b), i.e)}; }
+/// ±(hi · 2⁶⁴ + lo) as an integer.
+cln::cl_I from_limbs(const std::uint64_t* limbs, bool negative) {
+  const cln::cl_I m = cln::logior(cln::ash(cln::cl_I(static_cast<unsigned long>(limbs[1])), 64), cln::cl_I(static_cast<unsigned long>(limbs[0])));
+  return negative ? cln::cl_I(-m) : m;
+}
+
+/// The ends' integers a, b of [a · 2^e, b · 2^e].
+std::pair<cln::cl_I, cln::cl_I> end_integers(const api::Interval& i) {
+  if (i.small) return {from_limbs(i.a_limbs, i.a_negative), from_limbs(i.b_limbs, i.b_negative)};
+  return {from_hex(i.a), from_hex(i.b)};
+}
+
+Enclosure enclosure(const api::Interval& i) {
+  const auto [a, b] = end_integers(i);
+  return {scaled(a, i.e), scaled(b, i.e)};
+}
+
+/// The enclosure and its midpoint (a + b) · 2^(e−1), exact, from the integers.
+std::pair<Enclosure, numeric> enclosure_and_mid(const api::Interval& i) {
+  const auto [a, b] = end_integers(i);
+  return {{scaled(a, i.e), scaled(b, i.e)}, scaled(a + b, i.e - 1)};
+}
 
 }  // namespace
 
@@ -194,8 +215,8 @@ std::optional<Proven> proven(const api::Answer& a) {
       return Proven{Proven::Kind::Exact, e.lo, e, a.bits};
     }
     case 1: {
-      Enclosure e = enclosure(a.at);
-      return Proven{Proven::Kind::Digits, e.mid(), e, a.bits};
+      auto [e, mid] = enclosure_and_mid(a.at);
+      return Proven{Proven::Kind::Digits, mid, e, a.bits};
     }
     case 2: return Proven{Proven::Kind::Unsigned, 0, enclosure(a.at), a.bits};
     case 3: return std::nullopt;

@@ -272,7 +272,7 @@ std::optional<Precise> Evaluator::digits(int n) const {
     case Proven::Kind::Exact: return Precise{p->value, 0, true, false, 0, true, p->value, p->value};
     // the midpoint: it rounds to the proven digits (it lies inside the ball, whose every value
     // rounds to them), and carries more digits for a caller that rounds again
-    case Proven::Kind::Digits: return Precise{p->at.mid(), working, false, false, 0, true, p->at.lo, p->at.hi};
+    case Proven::Kind::Digits: return Precise{p->value, working, false, false, 0, true, p->at.lo, p->at.hi};
     case Proven::Kind::Unsigned: {
       numeric m = std::max(abs(p->at.lo), abs(p->at.hi));
       return Precise{0, working, false, true, round_up2(m).to_double(), true, p->at.lo, p->at.hi};
