@@ -232,10 +232,12 @@ std::optional<numeric> Evaluator::at(long working) const {
 
 // An exact value first: the tape in exact arithmetic (rationals stay rationals through +, −, ×, ÷,
 // integer powers and √ of a square: a few rational operations), then GiNaC's exact arithmetic
-// (sin(π) = 0, 2L − 3d = 0). That the value is not rational at these values is kept (a property of
-// the form and its values, as its tape is); a rational value is computed again at each call.
+// (sin(π) = 0, 2L − 3d = 0). That the value is not rational at these values is kept once GiNaC has
+// said so (a property of the form and its values, as its tape is): later calls go straight to the
+// balls. A rational value is computed again at each call.
 std::optional<numeric> Evaluator::exact_value(bool& undefined) const {
   undefined = false;
+  if (irrational_) return std::nullopt;
   if (precise_tape_ && !precise_tape_->has_integrals() && !rational_inputs_.empty()) {
     try {
       if (auto r = precise_tape_->precise(rational_inputs_, 20, true); r && cln::instanceof(*r, cln::cl_RA_ring))
@@ -244,7 +246,6 @@ std::optional<numeric> Evaluator::exact_value(bool& undefined) const {
       // a trigonometric function of a large angle: not rational here; GiNaC decides below
     }
   }
-  if (irrational_) return std::nullopt;
   try {
     ex v = e_.subs(values_);
     if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) return ex_to<numeric>(v);
