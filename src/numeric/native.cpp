@@ -94,8 +94,8 @@ NativeFunction NativeFunction::build(const Tape& t) {
   return loaded<NativeFunction, Fn>(t.cpp("kinergy_fn"), "kinergy_fn");
 }
 
-NativeKernel NativeKernel::build(const Tape& t) {
-  return loaded<NativeKernel, Fn>(t.cpp_vector("kinergy_kernel"), "kinergy_kernel");
+NativeKernel NativeKernel::build(const Tape& t, const std::string& epilogue) {
+  return loaded<NativeKernel, Fn>(t.cpp_vector("kinergy_kernel", epilogue), "kinergy_kernel");
 }
 
 }  // namespace kinergy::numerics

@@ -517,9 +517,9 @@ std::optional<cl_R> Tape::precise(const std::vector<cl_R>& x, long digits, bool 
 
 std::string Tape::cpp(const std::string& name) const { return source(name, false); }
 
-std::string Tape::cpp_vector(const std::string& name) const { return source(name, true); }
+std::string Tape::cpp_vector(const std::string& name, const std::string& epilogue) const { return source(name, true, epilogue); }
 
-std::string Tape::source(const std::string& name, bool vector) const {
+std::string Tape::source(const std::string& name, bool vector, const std::string& epilogue) const {
   elementary_only();
   std::ostringstream os;
   auto r = [](std::int32_t i) { return "r" + std::to_string(i); };
@@ -574,9 +574,10 @@ std::string Tape::source(const std::string& name, bool vector) const {
     }
     os << "  const double " << r(static_cast<std::int32_t>(i)) << " = " << v << ";\n";
   }
-  if (vector)
+  if (vector) {
     for (std::size_t k = 0; k < outs_.size(); ++k) os << "  out[" << k << "] = " << r(outs_[k]) << ";\n";
-  else
+    os << epilogue;
+  } else
     os << "  return " << (out_ < 0 ? std::string("0") : r(out_)) << ";\n";
   os << "}\n";
   return os.str();

@@ -62,6 +62,8 @@ struct Simulator::Impl {
   // --- the right-hand side kernel: inputs [t, q, q̇] ---
   Kernel rhs_k, aux_k;
   std::size_t o_M = 0, o_f = 0, o_A = 0, o_gamma = 0;
+  std::size_t o_qdd = 0;          // q̈, when the native kernel solves M q̈ = f itself
+  bool solved_in_kernel = false;
   std::vector<std::size_t> o_power;                 // of each non-conservative force
   std::vector<std::pair<RateAt, RateAt>> o_fric;    // x, y
   std::vector<std::pair<RateAt, RateAt>> o_cont;    // normal, tangent
@@ -132,13 +134,50 @@ struct Simulator::Impl {
     return at;
   }
 
-  Kernel build(const std::vector<ex>& outs) const {
+  Kernel build(const std::vector<ex>& outs, const std::string& epilogue = "") const {
     std::vector<ex> inputs{m.t};
     for (auto& q : eq.q) inputs.push_back(q);
     for (auto& qd : eq.qd) inputs.push_back(qd);
     Kernel k{numerics::Tape::compile(outs, inputs), std::nullopt};
-    if (o.native) k.native = numerics::NativeKernel::build(k.tape);
+    if (o.native) k.native = numerics::NativeKernel::build(k.tape, epilogue);
     return k;
+  }
+
+  // M q̈ = f solved inside the generated kernel, for a system of n ≤ 4 coordinates without
+  // constraint rows: M = L D Lᵀ (L unit lower triangular), unrolled,
+  //   D_j = M_jj − Σ_{k<j} L_jk² D_k,   L_ij = (M_ij − Σ_{k<j} L_ik L_jk D_k) / D_j   (i > j),
+  //   z_i = f_i − Σ_{k<i} L_ik z_k,   q̈_i = z_i / D_i − Σ_{k>i} L_ki q̈_k   (k from the last down).
+  // M is read packed (row i holds M_i0 … M_ii at o_M + i(i+1)/2), q̈ written at o_qdd. A pivot that
+  // is not positive (M not positive definite) writes NaN: the general path then says why.
+  static std::string ldlt_epilogue(std::size_t n, std::size_t o_M, std::size_t o_f, std::size_t o_qdd) {
+    auto M = [&](std::size_t i, std::size_t j) { return "out[" + std::to_string(o_M + i * (i + 1) / 2 + j) + "]"; };
+    auto L = [](std::size_t i, std::size_t j) { return "l" + std::to_string(i) + std::to_string(j); };
+    auto D = [](std::size_t j) { return "d" + std::to_string(j); };
+    std::string s;
+    for (std::size_t j = 0; j < n; ++j) {
+      s += "  const double " + D(j) + " = " + M(j, j);
+      for (std::size_t k = 0; k < j; ++k) s += " - " + L(j, k) + " * " + L(j, k) + " * " + D(k);
+      s += ";\n";
+      s += "  if (!(" + D(j) + " > 0)) {\n";
+      for (std::size_t i = 0; i < n; ++i) s += "    out[" + std::to_string(o_qdd + i) + "] = NAN;\n";
+      s += "    return;\n  }\n";
+      for (std::size_t i = j + 1; i < n; ++i) {
+        s += "  const double " + L(i, j) + " = (" + M(i, j);
+        for (std::size_t k = 0; k < j; ++k) s += " - " + L(i, k) + " * " + L(j, k) + " * " + D(k);
+        s += ") / " + D(j) + ";\n";
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      s += "  const double z" + std::to_string(i) + " = out[" + std::to_string(o_f + i) + "]";
+      for (std::size_t k = 0; k < i; ++k) s += " - " + L(i, k) + " * z" + std::to_string(k);
+      s += ";\n";
+    }
+    for (std::size_t i = n; i-- > 0;) {
+      s += "  const double a" + std::to_string(i) + " = z" + std::to_string(i) + " / " + D(i);
+      for (std::size_t k = i + 1; k < n; ++k) s += " - " + L(k, i) + " * a" + std::to_string(k);
+      s += ";\n  out[" + std::to_string(o_qdd + i) + "] = a" + std::to_string(i) + ";\n";
+    }
+    return s;
   }
 
   void compile() {
@@ -186,8 +225,11 @@ struct Simulator::Impl {
     }
     for (std::size_t k = 0; k < work_names.size(); ++k) work_names[k].second = k;
     nw = work_names.size();
-    rhs_k = build(outs);
-    out.resize(outs.size());
+    // no constraint rows can ever be active, and the system is small: q̈ comes from the kernel
+    solved_in_kernel = o.native && nc == 0 && eq.friction.empty() && eq.contacts.empty() && n >= 1 && n <= 4;
+    o_qdd = outs.size();
+    rhs_k = build(outs, solved_in_kernel ? ldlt_epilogue(n, o_M, o_f, o_qdd) : std::string());
+    out.resize(outs.size() + (solved_in_kernel ? n : 0));
 
     build_aux(std::nullopt);
     x.resize(1 + 2 * n);
@@ -387,6 +429,21 @@ struct Simulator::Impl {
     ++rhs_calls;
     load(t, y);
     rhs_k(x.data(), out.data());
+    if (solved_in_kernel) {
+      // q̈ from the kernel's own LDLᵀ (ldlt_epilogue); not finite: the general path below says why.
+      // M and f are kept as the general path keeps them (impulses and projections read M after)
+      fill_M();
+      for (std::size_t i = 0; i < n; ++i) f(static_cast<Eigen::Index>(i)) = out[o_f + i];
+      lambda.resize(0);
+      bool finite = true;
+      for (std::size_t i = 0; i < n; ++i) {
+        dy[i] = y[n + i];
+        dy[n + i] = out[o_qdd + i];
+        finite = finite && std::isfinite(dy[n + i]);
+      }
+      for (std::size_t k = 0; k < o_power.size(); ++k) dy[2 * n + k] = out[o_power[k]];
+      if (finite) return;
+    }
     fill_M();
     for (std::size_t i = 0; i < n; ++i) f(static_cast<Eigen::Index>(i)) = out[o_f + i];
     std::size_t w = 0;

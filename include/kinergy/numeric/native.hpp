@@ -35,8 +35,9 @@ private:
 /// output (a right-hand side, a mass matrix and its forcing terms in one call).
 class NativeKernel {
 public:
+  /// `epilogue`: C++ statements run after the outputs are written (Tape::cpp_vector).
   /// @throws std::runtime_error as NativeFunction::build.
-  static NativeKernel build(const Tape& t);
+  static NativeKernel build(const Tape& t, const std::string& epilogue = "");
 
   void operator()(const double* x, double* out) const { fn_(x, out); }
   using Fn = void (*)(const double*, double*);

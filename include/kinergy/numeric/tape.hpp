@@ -76,8 +76,9 @@ public:
   /// per instruction, constants as exact hexadecimal literals (for NativeFunction).
   std::string cpp(const std::string& name) const;
 
-  /// The same as `extern "C" void NAME(const double* x, double* out)`, writing every output.
-  std::string cpp_vector(const std::string& name) const;
+  /// The same as `extern "C" void NAME(const double* x, double* out)`, writing every output, then
+  /// `epilogue` (C++ statements that may read and write `out`: a solve of the outputs' system).
+  std::string cpp_vector(const std::string& name, const std::string& epilogue = "") const;
 
   std::size_t instructions() const { return code_.size(); }  ///< after sharing
   std::size_t outputs() const { return outs_.size(); }
@@ -108,7 +109,7 @@ private:
   std::vector<std::uint32_t> work_;  ///< the instructions that compute (not constants, not inputs)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> inputs_at_;  ///< (register, input index)
   void run(const double* x) const;  ///< every register at x (double)
-  std::string source(const std::string& name, bool vector) const;
+  std::string source(const std::string& name, bool vector, const std::string& epilogue = "") const;
   mutable std::vector<double> reg_;
   mutable std::vector<double> err_;
   mutable std::vector<double> batch_reg_;
