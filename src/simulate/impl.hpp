@@ -64,6 +64,7 @@ struct Simulator::Impl {
   std::size_t o_M = 0, o_f = 0, o_A = 0, o_gamma = 0;
   std::size_t o_qdd = 0;          // q̈, when the native kernel solves M q̈ = f itself
   bool solved_in_kernel = false;
+  numerics::NativeKernel::Fn kernel_fn = nullptr;  // rhs_k's machine code, called directly
   std::vector<std::size_t> o_power;                 // of each non-conservative force
   std::vector<std::pair<RateAt, RateAt>> o_fric;    // x, y
   std::vector<std::pair<RateAt, RateAt>> o_cont;    // normal, tangent
@@ -230,6 +231,7 @@ struct Simulator::Impl {
     o_qdd = outs.size();
     rhs_k = build(outs, solved_in_kernel ? ldlt_epilogue(n, o_M, o_f, o_qdd) : std::string());
     out.resize(outs.size() + (solved_in_kernel ? n : 0));
+    kernel_fn = rhs_k.native ? rhs_k.native->function() : nullptr;
 
     build_aux(std::nullopt);
     x.resize(1 + 2 * n);
@@ -428,13 +430,12 @@ struct Simulator::Impl {
   void rhs(const double* y, double t, double* dy) {
     ++rhs_calls;
     load(t, y);
-    rhs_k(x.data(), out.data());
+    if (kernel_fn) kernel_fn(x.data(), out.data());
+    else rhs_k(x.data(), out.data());
     if (solved_in_kernel) {
       // q̈ from the kernel's own LDLᵀ (ldlt_epilogue); not finite: the general path below says why.
-      // M and f are kept as the general path keeps them (impulses and projections read M after)
-      fill_M();
-      for (std::size_t i = 0; i < n; ++i) f(static_cast<Eigen::Index>(i)) = out[o_f + i];
-      lambda.resize(0);
+      // M and f are left as they were (out holds them): a caller that reads M after rhs() calls
+      // fill_M() (jump, stick_or_slip)
       bool finite = true;
       for (std::size_t i = 0; i < n; ++i) {
         dy[i] = y[n + i];

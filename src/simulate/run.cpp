@@ -165,8 +165,9 @@ public:
     p_.eval_aux(t_, y_.data());
     run_.E0 = p_.T() + p_.V();  // before what happens at the start (impulses, impacts)
     max_T_ = p_.T();
+    const state_type before = y_;
     start();
-    p_.eval_aux(t_, y_.data());
+    if (y_ != before) p_.eval_aux(t_, y_.data());  // (aux still holds the start's values when nothing moved)
     if (p_.has_stop) {
       double s = p_.aux[p_.a_stop];
       stop_sign_ = s > 0 ? 1 : (s < 0 ? -1 : 0);
@@ -223,6 +224,7 @@ private:
       impulse_work_ = p_.T() - T0;  // the work of the given impulses, ½ P·(q̇⁻ + q̇⁺)
       note("the given impulse(s) act");
     }
+    if (p_.eq.contacts.empty() && p_.eq.friction.empty()) return;  // nothing more to settle at the start
     // contacts: penetrated (an error), touching and approaching (an impact now), touching at rest
     p_.eval_aux(t_, y_.data());
     std::vector<double> dydt(y_.size());
@@ -572,6 +574,7 @@ private:
     const std::size_t n = p_.n;
     std::vector<double> dydt(y_.size());
     p_.rhs(y_.data(), t_, dydt.data());
+    p_.fill_M();
     auto [rx, ry] = p_.o_fric[k];
     const bool rot = p_.eq.friction[k].rotary;
     Mat J(rot ? 1 : 2, static_cast<Eigen::Index>(n));
@@ -621,6 +624,7 @@ private:
     const std::size_t n = p_.n;
     std::vector<double> dydt(y_.size());
     p_.rhs(y_.data(), t_, dydt.data());
+    p_.fill_M();
     p_.eval_aux(t_, y_.data());
     p_.constraint_rows();  // holonomic, sticking friction, resting contacts
     // friction forces are finite: they do not hold against an impulse
