@@ -72,6 +72,7 @@ struct Simulator::Impl {
   std::size_t a_T = 0, a_V = 0, a_g = 0, a_gt = 0, a_gap = 0, a_stop = 0, a_imp = 0;
   bool has_stop = false;
   std::optional<ex> aux_when;  ///< the stop expression the auxiliary kernel was built with
+  std::shared_ptr<void> kept_stepper;  ///< the method's stepper, kept between runs (run.cpp)
   std::vector<double> x, out, aux;
   // --- modes ---
   std::vector<FrictionMode> fmode;

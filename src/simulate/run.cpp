@@ -126,6 +126,17 @@ std::unique_ptr<Stepper> make_stepper(Simulator::Impl& p) {
   return nullptr;
 }
 
+/// The run's stepper: an adaptive method's or RK4's is kept between runs of a simulator (its
+/// coefficients and buffers made once) and reset at each start; the symplectic one, which takes M
+/// at its first step, is made anew.
+std::shared_ptr<Stepper> take_stepper(Simulator::Impl& p) {
+  if (p.o.method == Method::Symplectic) return make_stepper(p);
+  if (!p.kept_stepper) p.kept_stepper = std::shared_ptr<Stepper>(make_stepper(p));
+  auto s = std::static_pointer_cast<Stepper>(p.kept_stepper);
+  s->reset();
+  return s;
+}
+
 }  // namespace
 
 namespace {
@@ -151,7 +162,7 @@ public:
     std::copy(s0.q.begin(), s0.q.end(), y_.begin());
     std::copy(s0.qd.begin(), s0.qd.end(), y_.begin() + static_cast<long>(n));
     check_finite(y_, "the initial state");
-    stepper_ = make_stepper(p_);
+    stepper_ = take_stepper(p_);
     if (!stepper_->adaptive() && p_.o.step <= 0) fixed_dt_ = std::max(span_, 1e-300) / 1e4;
     else fixed_dt_ = p_.o.step;
     // a fixed step so small that the run would take more steps than the limit (or than t can
@@ -188,7 +199,7 @@ private:
   Simulator::Impl& p_;
   Stop stop_;
   Sys sys_;
-  std::unique_ptr<Stepper> stepper_;
+  std::shared_ptr<Stepper> stepper_;
   state_type y_;
   double t_ = 0, span_ = 0, fixed_dt_ = 0, max_T_ = 0;
   int stop_sign_ = 0;

@@ -144,3 +144,35 @@ TEST_CASE("the compiled right-hand side solves M q̈ = f itself for a small syst
     CHECK(std::fabs(rt.end.qd[i] - rn.end.qd[i]) <= 1e-6);
   }
 }
+
+TEST_CASE("a simulator's stepper kept between runs gives every run the same steps as a new simulator's first", "[simulate][methods]") {
+  // the adaptive steppers (and RK4) are kept between runs and reset at each start (their
+  // coefficients and buffers made once): a second and third run must be the first run again,
+  // bit for bit, for every method, also after a run of another length in between
+  kinergy::Solution s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/tests/bench/scenes/double_pendulum.yaml");
+  sim::State s0 = sim::state_values(s, 0);
+  for (auto method : {sim::Method::Dopri5, sim::Method::Rkf78, sim::Method::BulirschStoer, sim::Method::Rk4}) {
+    sim::Options o;
+    o.tol = 1e-9;
+    o.method = method;
+    o.record = false;
+    sim::Simulator kept(s.model, s.model.parameter_values(), o);
+    sim::Stop stop;
+    stop.until = 1.5;
+    sim::Stop other;
+    other.until = 0.37;
+    auto first = kept.run(s0, stop);
+    kept.run(s0, other);
+    auto again = kept.run(s0, stop);
+    auto fresh = go(s.model, o, s0, 1.5);
+    INFO(static_cast<int>(method));
+    CHECK(first.steps == fresh.steps);
+    CHECK(again.steps == fresh.steps);
+    CHECK(again.rejected == fresh.rejected);
+    for (std::size_t i = 0; i < s0.q.size(); ++i) {
+      CHECK(first.end.q[i] == fresh.end.q[i]);
+      CHECK(again.end.q[i] == fresh.end.q[i]);
+      CHECK(again.end.qd[i] == fresh.end.qd[i]);
+    }
+  }
+}
