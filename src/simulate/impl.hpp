@@ -73,7 +73,7 @@ struct Simulator::Impl {
   bool has_stop = false;
   std::optional<ex> aux_when;  ///< the stop expression the auxiliary kernel was built with
   std::shared_ptr<void> kept_stepper;  ///< the method's stepper, kept between runs (run.cpp)
-  std::vector<double> x, out, aux;
+  std::vector<double> x, out, aux, xa;
   // --- modes ---
   std::vector<FrictionMode> fmode;
   std::vector<std::array<double, 2>> fdir;    // sliding: last slip direction
@@ -151,11 +151,20 @@ struct Simulator::Impl {
   //   z_i = f_i − Σ_{k<i} L_ik z_k,   q̈_i = z_i / D_i − Σ_{k>i} L_ki q̈_k   (k from the last down).
   // M is read packed (row i holds M_i0 … M_ii at o_M + i(i+1)/2), q̈ written at o_qdd. A pivot that
   // is not positive (M not positive definite) writes NaN: the general path then says why.
+  // Also T = ½ q̇ᵀ M q̇ at o_qdd + n (q̇ the inputs x[1 + n …]): the kinetic energy at the state
+  // of the call, which the run takes as its energy scale without the auxiliary kernel.
   static std::string ldlt_epilogue(std::size_t n, std::size_t o_M, std::size_t o_f, std::size_t o_qdd) {
     auto M = [&](std::size_t i, std::size_t j) { return "out[" + std::to_string(o_M + i * (i + 1) / 2 + j) + "]"; };
     auto L = [](std::size_t i, std::size_t j) { return "l" + std::to_string(i) + std::to_string(j); };
     auto D = [](std::size_t j) { return "d" + std::to_string(j); };
-    std::string s;
+    auto V = [&](std::size_t i) { return "x[" + std::to_string(1 + n + i) + "]"; };
+    std::string s = "  out[" + std::to_string(o_qdd + n) + "] = 0.5 * (";
+    for (std::size_t i = 0; i < n; ++i) {
+      s += (i ? " + " : "") + V(i) + " * (" + M(i, i) + " * " + V(i);
+      for (std::size_t j = 0; j < i; ++j) s += " + 2 * " + M(i, j) + " * " + V(j);
+      s += ")";
+    }
+    s += ");\n";
     for (std::size_t j = 0; j < n; ++j) {
       s += "  const double " + D(j) + " = " + M(j, j);
       for (std::size_t k = 0; k < j; ++k) s += " - " + L(j, k) + " * " + L(j, k) + " * " + D(k);
@@ -231,11 +240,12 @@ struct Simulator::Impl {
     solved_in_kernel = o.native && nc == 0 && eq.friction.empty() && eq.contacts.empty() && n >= 1 && n <= 4;
     o_qdd = outs.size();
     rhs_k = build(outs, solved_in_kernel ? ldlt_epilogue(n, o_M, o_f, o_qdd) : std::string());
-    out.resize(outs.size() + (solved_in_kernel ? n : 0));
+    out.resize(outs.size() + (solved_in_kernel ? n + 1 : 0));
     kernel_fn = rhs_k.native ? rhs_k.native->function() : nullptr;
 
     build_aux(std::nullopt);
     x.resize(1 + 2 * n);
+    xa.resize(1 + 2 * n);
   }
 
   // T, V, g, ∂g/∂t, the contact gaps, the impulses and (last) the stop expression
@@ -291,9 +301,11 @@ struct Simulator::Impl {
     x[0] = t;
     std::copy(y, y + 2 * n, x.begin() + 1);
   }
+  // (its own inputs: x stays the last right-hand side call's, which out's values belong to)
   void eval_aux(double t, const double* y) {
-    load(t, y);
-    aux_k(x.data(), aux.data());
+    xa[0] = t;
+    std::copy(y, y + 2 * n, xa.begin() + 1);
+    aux_k(xa.data(), aux.data());
   }
   double T() const { return aux[a_T]; }
   double V() const { return aux[a_V]; }

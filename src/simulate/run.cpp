@@ -399,9 +399,16 @@ private:
       double sp = std::hypot(vx, vy);
       if (sp > 0) p_.fdir[k] = {vx / sp, vy / sp};
     }
-    // the largest T (the scale of the energy audit) is taken at every step
-    p_.eval_aux(t_, y_.data());
-    max_T_ = std::max(max_T_, p_.T());
+    // the largest T (the scale of the energy audit) is taken at every step: from the right-hand
+    // side's kernel when its last call was at this state (a method whose last stage is the step's
+    // end, as dopri5's), else from the auxiliary kernel
+    const std::size_t n = p_.n;
+    if (p_.solved_in_kernel && p_.x[0] == t_ && std::equal(y_.begin(), y_.begin() + static_cast<long>(2 * n), p_.x.begin() + 1)) {
+      max_T_ = std::max(max_T_, p_.out[p_.o_qdd + n]);
+    } else {
+      p_.eval_aux(t_, y_.data());
+      max_T_ = std::max(max_T_, p_.T());
+    }
     if (p_.o.record && !sampling()) record();
     return moved;
   }

@@ -143,6 +143,11 @@ TEST_CASE("the compiled right-hand side solves M q̈ = f itself for a small syst
     CHECK(std::fabs(rt.end.q[i] - rn.end.q[i]) <= 1e-7);
     CHECK(std::fabs(rt.end.qd[i] - rn.end.qd[i]) <= 1e-6);
   }
+  // the energy audit's scale, the largest T: the kernel's ½ q̇ᵀ M q̇ at the steps' ends (dopri5's
+  // last stage) against the auxiliary kernel's T
+  CHECK(rn.energy_scale > 0);
+  CHECK(std::fabs(rt.energy_scale - rn.energy_scale) <= 1e-6 * rt.energy_scale);
+  CHECK(std::fabs(rt.drift - rn.drift) <= 1e-9);
 }
 
 TEST_CASE("a simulator's stepper kept between runs gives every run the same steps as a new simulator's first", "[simulate][methods]") {
