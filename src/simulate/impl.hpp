@@ -65,6 +65,10 @@ struct Simulator::Impl {
   std::size_t o_qdd = 0;          // q̈, when the native kernel solves M q̈ = f itself
   bool solved_in_kernel = false;
   numerics::NativeKernel::Fn kernel_fn = nullptr;  // rhs_k's machine code, called directly
+  // T at the call whose state is the buffer watch_y (a step's start: run.cpp), when solved_in_kernel
+  const double* watch_y = nullptr;
+  double watched_T = 0;
+  bool watched = false;
   std::vector<std::size_t> o_power;                 // of each non-conservative force
   std::vector<std::pair<RateAt, RateAt>> o_fric;    // x, y
   std::vector<std::pair<RateAt, RateAt>> o_cont;    // normal, tangent
@@ -456,6 +460,10 @@ struct Simulator::Impl {
         finite = finite && std::isfinite(dy[n + i]);
       }
       for (std::size_t k = 0; k < o_power.size(); ++k) dy[2 * n + k] = out[o_power[k]];
+      if (y == watch_y) {
+        watched_T = out[o_qdd + n];
+        watched = true;
+      }
       if (finite) return;
     }
     fill_M();

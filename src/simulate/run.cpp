@@ -292,7 +292,13 @@ private:
       double h = last ? remaining : dt;
       y = y_;
       double t = t_, hh = h;
-      if (!stepper_->step(sys_, y, t, hh)) {
+      // a step's first call is at its start, the state accepted last: its T is taken there
+      p_.watch_y = y.data();
+      p_.watched = false;
+      const bool stepped = stepper_->step(sys_, y, t, hh);
+      p_.watch_y = nullptr;
+      if (p_.watched) max_T_ = std::max(max_T_, p_.watched_T);
+      if (!stepped) {
         ++run_.rejected;
         dt = hh;
         if (dt < 1e-14 * std::max(std::fabs(t_), span_))
@@ -401,11 +407,15 @@ private:
     }
     // the largest T (the scale of the energy audit) is taken at every step: from the right-hand
     // side's kernel when its last call was at this state (a method whose last stage is the step's
-    // end, as dopri5's), else from the auxiliary kernel
+    // end, as dopri5's), or at the next step's first call (a method that starts each step with a
+    // call at its start: integrate() takes it; the run's end is taken by finish()), else from the
+    // auxiliary kernel
     const std::size_t n = p_.n;
+    const bool next_takes_it = p_.solved_in_kernel && (p_.o.method == Method::Rkf78 || p_.o.method == Method::BulirschStoer ||
+                                                       p_.o.method == Method::Rk4);
     if (p_.solved_in_kernel && p_.x[0] == t_ && std::equal(y_.begin(), y_.begin() + static_cast<long>(2 * n), p_.x.begin() + 1)) {
       max_T_ = std::max(max_T_, p_.out[p_.o_qdd + n]);
-    } else {
+    } else if (!next_takes_it) {
       p_.eval_aux(t_, y_.data());
       max_T_ = std::max(max_T_, p_.T());
     }
