@@ -302,8 +302,9 @@ struct Simulator::Impl {
 
   // ------------------------------------------------------------ evaluation
   void load(double t, const double* y) {
-    x[0] = t;
-    std::copy(y, y + 2 * n, x.begin() + 1);
+    double* to = x.data();
+    to[0] = t;
+    for (std::size_t i = 0; i < 2 * n; ++i) to[1 + i] = y[i];  // (a few doubles: no call to memmove)
   }
   // (its own inputs: x stays the last right-hand side call's, which out's values belong to)
   void eval_aux(double t, const double* y) {
