@@ -271,6 +271,7 @@ private:
   std::vector<ex> unknowns;
   exmap reference;  ///< a coordinate's value at another state, for numeric root searches
   exmap in_roots_;  ///< the chosen branch's unknowns as expressions of its numeric roots (solve_in_roots)
+  std::vector<numerics::RootOf> found_roots_;  ///< those roots, each after the roots its equation holds
   std::map<ex, std::pair<ex, ex>, ex_is_less> ranges;  ///< root ranges of results that are one unknown
   std::set<int> states_in;
   int fewer_switches_ = 0;  ///< see principles::Knowledge::fewer_switches
@@ -379,53 +380,74 @@ private:
 
   /// The chosen branch's unknowns as expressions of the unknowns it found by numeric roots, so that
   /// a value solved from a root's number can be proven from the root's own equation: solved again
-  /// with each such unknown taken as known (its number in env, for the solver's decisions), and
-  /// the branch whose values agree with the chosen one kept. Unknowns with no root's number in
-  /// them keep their closed form.
+  /// with each root whose equation holds no other root's number taken as known (its number in env,
+  /// for the solver's decisions), and the branch whose values agree with the chosen one kept. A
+  /// root of an equation that held an earlier root's number (two roots chained) is then found
+  /// again, its equation now in the earlier root's symbol, and taken as known in turn. Unknowns
+  /// with no root's number in them keep their closed form.
   void solve_in_roots() {
     const solve::Branch& b = sol_.branch;
     if (b.roots.empty()) return;
     exmap in, with_roots = env;
-    for (auto& [u, nr] : b.roots) {
+    std::vector<numerics::RootOf> found;
+    auto know = [&](const ex& u, const solve::NumericRoot& nr, const ex& at) {
       in[u] = u;
-      with_roots[u] = b.sol.at(u);
-    }
-    std::vector<ex> rest;
-    bool needed = false;
-    for (auto& u : unknowns) {
-      auto it = b.sol.find(u);
-      if (b.roots.count(u) || it == b.sol.end()) continue;  // (an unknown nothing fixed stays one)
-      rest.push_back(u);
-      needed = needed || has_float(it->second);
-    }
-    if (!needed) {
-      for (auto& u : rest) in[u] = b.sol.at(u);
-      in_roots_ = in;
-      return;
-    }
-    std::vector<solve::Branch> again;
-    try {
-      again = solve(sol_.equations, rest, with_roots);
-    } catch (const std::exception&) {
-      return;  // not solved so: the values solved from the roots stay numbers
-    }
-    for (auto& c : again) {
-      if (!c.roots.empty()) continue;
-      bool same = true;
-      for (auto& u : rest) {
-        auto ci = c.sol.find(u);
-        auto bi = b.sol.find(u);
-        if (ci == c.sol.end() || bi == b.sol.end()) {
-          same = false;
+      with_roots[u] = at;
+      found.push_back({u, nr.residual, ex_to<numeric>(at), nr.lo, nr.hi});
+    };
+    for (auto& [u, nr] : b.roots)
+      if (!has_float(nr.residual) && is_a<numeric>(b.sol.at(u))) know(u, nr, b.sol.at(u));
+    for (int level = 0; level < 4 && !found.empty(); ++level) {
+      std::vector<ex> rest;
+      bool needed = false;
+      for (auto& u : unknowns) {
+        auto it = b.sol.find(u);
+        if (in.count(u) || it == b.sol.end()) continue;  // (an unknown nothing fixed stays one)
+        rest.push_back(u);
+        needed = needed || has_float(it->second);
+      }
+      if (!needed) {
+        for (auto& u : rest) in[u] = b.sol.at(u);
+        in_roots_ = in;
+        found_roots_ = found;
+        return;
+      }
+      std::vector<solve::Branch> again;
+      try {
+        again = solve(sol_.equations, rest, with_roots);
+      } catch (const std::exception&) {
+        return;  // not solved so: the values solved from the roots stay numbers
+      }
+      const solve::Branch* same = nullptr;
+      for (auto& c : again) {
+        bool agree = true;
+        for (auto& u : rest) {
+          auto ci = c.sol.find(u);
+          auto bi = b.sol.find(u);
+          if (ci == c.sol.end() || bi == b.sol.end()) {
+            agree = false;
+            break;
+          }
+          auto x = numerics::evaluate(ci->second.subs(given), with_roots, 30), y = numerics::evaluate(bi->second.subs(given), env, 30);
+          agree = agree && x && y && abs(*x - *y) <= numerics::tenth(20) * (abs(*y) + 1);
+        }
+        if (agree) {
+          same = &c;
           break;
         }
-        auto x = numerics::evaluate(ci->second.subs(given), with_roots, 30), y = numerics::evaluate(bi->second.subs(given), env, 30);
-        same = same && x && y && abs(*x - *y) <= numerics::tenth(20) * (abs(*y) + 1);
       }
-      if (!same) continue;
-      for (auto& u : rest) in[u] = c.sol.at(u);
-      in_roots_ = in;
-      return;
+      if (!same) return;
+      if (same->roots.empty()) {
+        for (auto& u : rest) in[u] = same->sol.at(u);
+        in_roots_ = in;
+        found_roots_ = found;
+        return;
+      }
+      // roots found again, their equations now in the known roots' symbols: known in turn
+      const std::size_t before = found.size();
+      for (auto& [u, nr] : same->roots)
+        if (!has_float(nr.residual) && is_a<numeric>(same->sol.at(u))) know(u, nr, same->sol.at(u));
+      if (found.size() == before) return;
     }
   }
 
@@ -851,11 +873,17 @@ private:
     try {
       const ex g = f.value.subs(given).subs(in_roots_);
       bool free = !has_float(g);
-      for (auto& u : unknowns) free = free && (!g.has(u) || sol.branch.roots.count(u));
+      for (auto& u : unknowns)
+        free = free && (!g.has(u) || std::any_of(found_roots_.begin(), found_roots_.end(), [&](const numerics::RootOf& x) { return x.u.is_equal(u); }));
       if (free) {
-        for (auto& [u, nr] : sol.branch.roots)
-          if (g.has(u) && is_a<numeric>(sol.branch.sol.at(u)))
-            r.roots.push_back({u, nr.residual, ex_to<numeric>(sol.branch.sol.at(u)), nr.lo, nr.hi});
+        // the roots g holds, and those their equations hold, each after the ones it needs
+        std::vector<bool> take(found_roots_.size(), false);
+        for (std::size_t i = found_roots_.size(); i-- > 0;) {
+          take[i] = g.has(found_roots_[i].u);
+          for (std::size_t j = i + 1; j < found_roots_.size(); ++j) take[i] = take[i] || (take[j] && found_roots_[j].residual.has(found_roots_[i].u));
+        }
+        for (std::size_t i = 0; i < found_roots_.size(); ++i)
+          if (take[i]) r.roots.push_back(found_roots_[i]);
         r.of_roots = g;
       }
     } catch (const std::exception&) {

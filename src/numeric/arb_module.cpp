@@ -522,8 +522,10 @@ struct Bound {
   Program tape;
   std::vector<Program> inputs;
   std::map<long, Balls> at_bits;
-  Balls reg{tape.code.size()};  ///< the tape's registers, kept between calls
+  Balls reg;  ///< the tape's registers, kept between calls
   std::map<long, Balls> consts_at_bits;  ///< the tape's constants, per precision
+
+  Bound(const Program& t, const std::vector<Program>& in) : tape(t), inputs(in), reg(t.code.size()) {}
 
   /// The tape's constants at `bits` (made once).
   const Balls& constants(long bits) {
@@ -575,7 +577,7 @@ long integral_cap(const Program& t, int n, long max_bits) {
   return t.integrands.empty() ? max_bits : std::min(max_bits, std::max<long>(1024, 4 * bits_for(n)));
 }
 
-void* create(const Program& tape, const std::vector<Program>& inputs) { return new Bound{tape, inputs, {}}; }
+void* create(const Program& tape, const std::vector<Program>& inputs) { return new Bound(tape, inputs); }
 void destroy(void* h) { delete static_cast<Bound*>(h); }
 
 // n digits: evaluate at p bits; the digits are proven when every value of the ball rounds to them
@@ -633,7 +635,11 @@ Answer digits(void* h, int n, long max_bits) {
 // every value of I rounds to.
 Answer root(const Program& r, const Program& dr, const std::vector<Program>& inputs, const Const& start, const Const& lo,
             const Const& hi, bool bracket, int n, long max_bits) {
-  Bound R{r, inputs, {}}, D{dr, inputs, {}};
+  // n ≤ 0: an enclosure at the precision of |n| digits, whatever digits it fixes (an input to
+  // another evaluation on balls, which decides the digits)
+  const bool enclose_only = n <= 0;
+  n = std::max(1, n < 0 ? -n : n);
+  Bound R(r, inputs), D(dr, inputs);
   max_bits = integral_cap(r, n, max_bits);
   long bits = bits_for(n) + 32;
   arb_t x, t, I, a, b, step, blo, bhi;
@@ -674,7 +680,8 @@ Answer root(const Program& r, const Program& dr, const std::vector<Program>& inp
       if (arb_le(a, t) || arf_is_zero(arb_midref(step))) break;
     }
     if (done) break;
-    // δ = 4|step| + 2^(8 − bits)|x| + 2^−bits
+    // δ = 4|step| + 2^(8 − bits)|x| + 2^−bits, widened 16-fold while a sign at an end is not
+    // decided (an input known only to a ball makes r itself a ball there)
     arb_abs(a, step);
     arb_mul_2exp_si(a, a, 2);
     arb_abs(t, x);
@@ -683,14 +690,19 @@ Answer root(const Program& r, const Program& dr, const std::vector<Program>& inp
     arb_one(t);
     arb_mul_2exp_si(t, t, -bits);
     arb_add(a, a, t, bits);
-    arb_get_ubound_arf(arb_midref(t), a, bits);
-    mag_zero(arb_radref(t));
-    arb_sub(a, x, t, bits + 16);
-    arb_get_mid_arb(a, a);
-    arb_add(b, x, t, bits + 16);
-    arb_get_mid_arb(b, b);
+    arb_get_ubound_arf(arb_midref(step), a, bits);
+    mag_zero(arb_radref(step));
+    int sa = 0, sb = 0;
+    for (int widen = 0; widen < 6; ++widen, arb_mul_2exp_si(step, step, 4)) {
+      arb_sub(a, x, step, bits + 16);
+      arb_get_mid_arb(a, a);
+      arb_add(b, x, step, bits + 16);
+      arb_get_mid_arb(b, b);
+      sa = sign(a, bits);
+      sb = sign(b, bits);
+      if (sa != 0 && sb != 0) break;
+    }
     arb_union(I, a, b, bits + 16);
-    const int sa = sign(a, bits), sb = sign(b, bits);
     if (sa != 0 && sb != 0 && sa != sb && R.eval(bits, reg_r, I) == Status::Ok) {
       if (bracket) {
         // inside the bracket the solver found the root in
@@ -702,7 +714,7 @@ Answer root(const Program& r, const Program& dr, const std::vector<Program>& inp
           break;
         }
       }
-      if (common_digits(I, n, bits)) {
+      if (enclose_only || common_digits(I, n, bits)) {
         out.kind = 1;
         out.at = ends(I);
         out.bits = bits;

@@ -248,32 +248,62 @@ BallEvaluator& BallEvaluator::operator=(BallEvaluator&&) noexcept = default;
 
 std::optional<Proven> BallEvaluator::digits(int n, long max_bits) const { return proven(impl_->m.digits(impl_->handle, n, max_bits)); }
 
-std::optional<Proven> root_digits(const ex& r, const symbol& u, const numeric& x0, const numeric& lo, const numeric& hi,
-                                  const exmap& values, int n, long max_bits) {
-  std::vector<ex> in{u}, vals{x0};
-  for (auto& [s, v] : values)
+namespace {
+
+/// An input known to lie in [lo, hi] as the module's program (an Interval constant).
+api::Program interval_program(const Enclosure& e) {
+  api::Program x;
+  x.code.push_back({0, 0, -1, 0});
+  api::Const c = rational(e.lo);
+  const api::Const hi = rational(e.hi);
+  c.kind = api::Const::Interval;
+  c.num2 = hi.num;
+  c.den2 = hi.den;
+  x.consts.push_back(c);
+  x.outs.push_back(0);
+  return x;
+}
+
+/// A proven value as what it encloses: the point itself when exact.
+Enclosure enclosed(const Proven& p) { return p.kind == Proven::Kind::Exact ? Enclosure{p.value, p.value} : p.at; }
+
+/// root_digits with inputs known only to balls (other roots' enclosures); n ≤ 0: an enclosure at
+/// the precision of |n| digits, whatever digits it fixes.
+std::optional<Proven> root_in_balls(const ex& r, const symbol& u, const numeric& x0, const numeric& lo, const numeric& hi,
+                                    const exmap& values, const std::vector<std::pair<ex, Enclosure>>& balls, int n, long max_bits) {
+  std::vector<ex> in{u};
+  std::vector<api::Program> inputs{input_program(x0)};
+  for (auto& [s, e] : balls)
     if (r.has(s) && !s.is_equal(u)) {
       in.push_back(s);
-      vals.push_back(v);
+      inputs.push_back(interval_program(e));
+    }
+  for (auto& [s, v] : values)
+    if (r.has(s) && !s.is_equal(u) && std::none_of(balls.begin(), balls.end(), [&](const auto& b) { return b.first.is_equal(s); })) {
+      if (holds_float(v)) return std::nullopt;
+      in.push_back(s);
+      inputs.push_back(input_program(v));
     }
   Tape tr, td;
   try {
     tr = Tape::compile(r, in, Tape::Accept::Integrals);
     td = Tape::compile(r.diff(u), in, Tape::Accept::Integrals);
   } catch (const std::invalid_argument&) {
-    return std::nullopt;  // a function the tape has no instruction for
+    return std::nullopt;  // a function the tape has no instruction for, or a symbol without a value
   }
   if (detail::BallRun::has_float(tr) || detail::BallRun::has_float(td)) return std::nullopt;
-  std::vector<api::Program> inputs;
-  for (std::size_t i = 0; i < vals.size(); ++i) {
-    if (i > 0 && holds_float(vals[i])) return std::nullopt;  // (input 0 is the start: a float is fine there)
-    inputs.push_back(input_program(vals[i]));
-  }
   // the start as the exact binary fraction a float is: it is only where Newton begins
   const api::Answer a = module().root(detail::BallRun::program(tr), detail::BallRun::program(td), inputs, rational(x0), rational(lo),
                                       rational(hi), lo < hi, n, max_bits);
   if (a.kind != 0 && a.kind != 1) return std::nullopt;
   return proven(a);
+}
+
+}  // namespace
+
+std::optional<Proven> root_digits(const ex& r, const symbol& u, const numeric& x0, const numeric& lo, const numeric& hi,
+                                  const exmap& values, int n, long max_bits) {
+  return root_in_balls(r, u, x0, lo, hi, values, {}, n, max_bits);
 }
 
 std::optional<Proven> digits_at_roots(const ex& g, const std::vector<RootOf>& roots, const exmap& values, int n, long max_bits) {
@@ -298,22 +328,16 @@ std::optional<Proven> digits_at_roots(const ex& g, const std::vector<RootOf>& ro
   const api::Api& m = module();
   for (int digits = n + 10;; digits *= 2) {
     const long bits = std::min(max_bits, bits_for(digits) + 64);
+    // each root enclosed at this precision, in order: a root whose equation holds an earlier
+    // root (two roots chained) takes that root's enclosure as an input known to its ball
     std::vector<api::Program> in;
+    std::vector<std::pair<ex, Enclosure>> balls;
     for (auto& r : roots) {
       if (!is_a<symbol>(r.u)) return std::nullopt;
-      auto p = root_digits(r.residual, ex_to<symbol>(r.u), r.at, r.lo, r.hi, values, digits, max_bits);
+      auto p = root_in_balls(r.residual, ex_to<symbol>(r.u), r.at, r.lo, r.hi, values, balls, -digits, max_bits);
       if (!p) return std::nullopt;
-      // the root lies in [lo, hi]: an input known to that width
-      api::Program x;
-      x.code.push_back({0, 0, -1, 0});
-      api::Const c = rational(p->kind == Proven::Kind::Exact ? p->value : p->at.lo);
-      const api::Const hi = rational(p->kind == Proven::Kind::Exact ? p->value : p->at.hi);
-      c.kind = api::Const::Interval;
-      c.num2 = hi.num;
-      c.den2 = hi.den;
-      x.consts.push_back(c);
-      x.outs.push_back(0);
-      in.push_back(std::move(x));
+      balls.emplace_back(r.u, enclosed(*p));
+      in.push_back(interval_program(balls.back().second));
     }
     in.insert(in.end(), given.begin(), given.end());
     BallEvaluator::Impl run(m, m.create(program, in));

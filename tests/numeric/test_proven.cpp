@@ -196,6 +196,11 @@ TEST_CASE("proven: values that hold numbers found numerically — solved from a 
   CHECK(w3->lo <= -46);
   CHECK(-46 <= w3->hi);
   CHECK(w3->hi - w3->lo < pow(numeric(10), -48));
+  // two roots chained: theta3 solves an equation that holds theta2 (energy 2 -> 3), found again
+  // in theta2's symbol and proven from theta2's enclosure
+  out = kt::run_cli("solve tests/data/numeric/wound_spring_chained.yaml --digits 60", status);
+  CHECK(status == 0);
+  CHECK_THAT(out, Catch::Contains("= 10.7851151437233129700227140465640679186130620610097942492588 rad   (no closed form: taken numerically; proven: "));
 }
 
 TEST_CASE("ball arithmetic: integrals against mpmath, and undefined or ill-posed ones", "[numeric][proven][integrate]") {

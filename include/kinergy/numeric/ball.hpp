@@ -81,8 +81,10 @@ struct RootOf {
 };
 
 /// g at the roots u₁…u_k (and the other symbols of g at their exact `values`) to n proven digits:
-/// each root is proven on balls to m ≥ n + 10 digits (root_digits), and g runs on balls whose
-/// inputs are those enclosures; m doubles until g's digits are fixed. A value solved from a
+/// each root is enclosed on balls at the precision of m ≥ n + 10 digits (as root_digits proves
+/// one, in order: a root whose residual holds an earlier root takes that root's enclosure as an
+/// input), and g runs on balls whose inputs are those enclosures; m doubles until g's digits are
+/// fixed. A value solved from a
 /// numeric root, or an extreme at a stationary point found numerically, is proven so. @returns
 /// nothing when a root is not proven, g holds a float or a function the tape has no instruction
 /// for, or no m up to max_bits fixes the digits.

@@ -9,6 +9,10 @@ and gravity's power is P(th) = m g (L/2) cos th * w. th* solves dP/dth = 0; Pmax
 
 tests/data/wound_spring.yaml with h2 = (L/2) sin(theta2): the height of G where the bar stops
 (theta2 from wound_spring_reference.py).
+
+tests/data/numeric/wound_spring_chained.yaml: from state 2 (theta2, at rest) to state 3 where the
+bar turns back at w3 = -20 rad/s: (1/2)(m L^2/3) w3^2 + (1/2) k theta3^2 + m g (L/2) sin theta3 =
+(1/2) k theta2^2 + m g (L/2) sin theta2, theta3 the root near 10.79 rad.
 """
 import os
 import sys
@@ -23,7 +27,11 @@ m, L, g, k = mpf(3), mpf("1.2"), mpf("9.81"), mpf(5)
 w = lambda th: sqrt((m * g * L / 2 * sin(th) - k * th**2 / 2) / (m * L**2 / 6))
 P = lambda th: m * g * L / 2 * cos(th) * w(th)
 th_star = findroot(lambda t: diff(P, t), mpf("0.585"))
+mw, Lw, kw, gw, w3 = mpf(2), mpf(1), mpf(10), mpf("9.81"), mpf(-20)
+E2 = kw * theta2**2 / 2 + mw * gw * Lw / 2 * sin(theta2)
+theta3 = findroot(lambda t: mw * Lw**2 / 3 * w3**2 / 2 + kw * t**2 / 2 + mw * gw * Lw / 2 * sin(t) - E2, mpf("10.78"))
 if __name__ == "__main__":
     print(mp.nstr(th_star * 180 / pi, 60))  # deg
     print(mp.nstr(P(th_star), 60))  # W
     print(mp.nstr(sin(theta2) / 2, 60))  # h2, m (L = 1 m)
+    print(mp.nstr(theta3, 60))  # rad
