@@ -26,42 +26,29 @@ enum class Op : std::uint8_t {
 
 enum class Status { Ok, Undefined, Indeterminate };
 
-/// A vector of Arb balls, freed with it.
-class Balls {
+/// A vector of Arb's real (arb) or complex (acb) balls, freed with it.
+template <class Ptr, Ptr (*Init)(slong), void (*Clear)(Ptr, slong)>
+class BallVector {
 public:
-  explicit Balls(std::size_t n = 0) : n_(n), v_(n ? _arb_vec_init(static_cast<slong>(n)) : nullptr) {}
-  ~Balls() {
-    if (v_) _arb_vec_clear(v_, static_cast<slong>(n_));
+  explicit BallVector(std::size_t n = 0) : n_(n), v_(n ? Init(static_cast<slong>(n)) : nullptr) {}
+  ~BallVector() {
+    if (v_) Clear(v_, static_cast<slong>(n_));
   }
-  Balls(const Balls&) = delete;
-  Balls& operator=(const Balls&) = delete;
-  Balls(Balls&& o) noexcept : n_(o.n_), v_(o.v_) {
+  BallVector(const BallVector&) = delete;
+  BallVector& operator=(const BallVector&) = delete;
+  BallVector(BallVector&& o) noexcept : n_(o.n_), v_(o.v_) {
     o.v_ = nullptr;
     o.n_ = 0;
   }
-  arb_ptr operator[](std::size_t i) const { return v_ + i; }
+  Ptr operator[](std::size_t i) const { return v_ + i; }
   std::size_t size() const { return n_; }
 
 private:
   std::size_t n_;
-  arb_ptr v_;
+  Ptr v_;
 };
-
-/// A vector of complex balls, freed with it.
-class CBalls {
-public:
-  explicit CBalls(std::size_t n = 0) : n_(n), v_(n ? _acb_vec_init(static_cast<slong>(n)) : nullptr) {}
-  ~CBalls() {
-    if (v_) _acb_vec_clear(v_, static_cast<slong>(n_));
-  }
-  CBalls(const CBalls&) = delete;
-  CBalls& operator=(const CBalls&) = delete;
-  acb_ptr operator[](std::size_t i) const { return v_ + i; }
-
-private:
-  std::size_t n_;
-  acb_ptr v_;
-};
+using Balls = BallVector<arb_ptr, _arb_vec_init, _arb_vec_clear>;
+using CBalls = BallVector<acb_ptr, _acb_vec_init, _acb_vec_clear>;
 
 /// A rational p/q at `bits` (exact when it fits, else a ball around it).
 void set_rational(arb_t x, const std::string& p, const std::string& q, long bits) {
