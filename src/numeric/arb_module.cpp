@@ -80,6 +80,8 @@ void set_const(arb_t x, const Const& c, long bits) {
   }
 }
 
+static_assert(FLINT_BITS == 64, "ends() hands over 64-bit limbs");
+
 /// The ball's ends as integers' digits: [a · 2^e, b · 2^e].
 Interval ends(const arb_t x) {
   fmpz_t a, b, e;
@@ -269,9 +271,12 @@ Status run(const Program& t, const Balls& x, long bits, Balls& reg, const Balls*
         break;
       }
       case Op::Atan: arb_atan(v, a, p); break;
-      // atan2(y = a, x = b): undefined at (0, 0)
+      // atan2(y = a, x = b): undefined at (0, 0); a ball of y across 0 (not y = 0 itself) with x
+      // not positive straddles the cut on the negative x axis, where atan2 jumps from π to −π: no
+      // value that is continuous on the ball (a root's sign change must not be a jump)
       case Op::Atan2:
         if (arb_is_zero(a) && arb_is_zero(b)) return Status::Undefined;
+        if (arb_contains_zero(a) && !arb_is_zero(a) && !arb_is_positive(b)) return Status::Indeterminate;
         arb_atan2(v, a, b, p);
         break;
       case Op::Exp: arb_exp(v, a, p); break;
@@ -454,6 +459,10 @@ int integrand(acb_ptr out, const acb_t z, void* param, slong order, slong prec) 
 // the middle one by Arb's rigorous integration (Gauss–Legendre on subintervals, the error bounded
 // through f on complex ellipses around each, which is why f also runs on complex balls).
 Status integral(arb_t v, const Program& f, const Balls& x, arb_srcptr a, arb_srcptr b, long bits) {
+  if (arb_is_exact(a) && arb_equal(a, b)) {
+    arb_zero(v);  // an empty path
+    return Status::Ok;
+  }
   Integrand q(f, x);
   acb_t res, am, bm;
   acb_init(res);
@@ -470,11 +479,16 @@ Status integral(arb_t v, const Program& f, const Balls& x, arb_srcptr a, arb_src
   // integral that does not converge); a smooth integrand needs far fewer
   opt->eval_limit = 20 * bits + 4000;
   acb_calc_integrate(res, integrand, &q, am, bm, bits, tol, opt, bits);
-  // f real on the path gives a real integral: an imaginary part proven nonzero means it is not
-  Status st = q.undefined                          ? Status::Undefined
-              : !acb_is_finite(res)                ? Status::Indeterminate
-              : !arb_contains_zero(acb_imagref(res)) ? Status::Undefined
-                                                   : Status::Ok;
+  // f real on the path gives a real integral: an imaginary part proven nonzero means it is not.
+  // Proven undefined only when the ends are exact: with ball ends Arb integrates between their
+  // midpoints, which may reach past the true path (a midpoint of π/2's ball above π/2 under
+  // √cos), so there it is only not decided
+  const bool exact_ends = mag_is_zero(arb_radref(a)) && mag_is_zero(arb_radref(b));
+  const Status off_path = exact_ends ? Status::Undefined : Status::Indeterminate;
+  Status st = q.undefined                            ? off_path
+              : !acb_is_finite(res)                  ? Status::Indeterminate
+              : !arb_contains_zero(acb_imagref(res)) ? off_path
+                                                     : Status::Ok;
   if (st == Status::Ok) {
     arb_set(v, acb_realref(res));  // f is real on the path: the integral's real part holds it
     // the ends' radii: r · sup|f| on each end's ball
@@ -523,8 +537,10 @@ struct Bound {
     return consts_at_bits.emplace(bits, std::move(c)).first->second;
   }
 
-  /// The inputs at `bits`: nothing when one of them is undefined there.
-  const Balls* enclosed(long bits) {
+  /// The inputs at `bits`: nothing when one of them is not defined there (`st` says whether that
+  /// is proven, or not decided at this precision).
+  const Balls* enclosed(long bits, Status& st) {
+    st = Status::Ok;
     auto it = at_bits.find(bits);
     if (it != at_bits.end()) return &it->second;
     Balls x(inputs.size());
@@ -536,7 +552,7 @@ struct Bound {
         continue;
       }
       Balls reg(in.code.size()), none(0);
-      if (run(in, none, bits + 16, reg) != Status::Ok) return nullptr;
+      if ((st = run(in, none, bits + 16, reg)) != Status::Ok) return nullptr;
       arb_set_round(x[i], reg[static_cast<std::size_t>(in.outs.at(0))], bits);
     }
     return &at_bits.emplace(bits, std::move(x)).first->second;
@@ -544,8 +560,9 @@ struct Bound {
 
   /// Run at `bits`; with `first`, input 0 is that ball.
   Status eval(long bits, Balls& reg, arb_srcptr first = nullptr) {
-    const Balls* x = enclosed(bits);
-    if (!x) return Status::Undefined;
+    Status st;
+    const Balls* x = enclosed(bits, st);
+    if (!x) return st;
     const Balls& c = constants(bits);
     if (!first) return run(tape, *x, bits, reg, &c);
     Balls y(x->size());
@@ -572,6 +589,7 @@ void destroy(void* h) { delete static_cast<Bound*>(h); }
 // n digits need is a zero whose sign is not fixed.
 Answer digits(void* h, int n, long max_bits) {
   Bound& b = *static_cast<Bound*>(h);
+  n = std::max(1, n);
   const long zero_bits = std::max<long>(1024, 4 * bits_for(n));
   max_bits = integral_cap(b.tape, n, max_bits);
   // a few guard bits over what n digits need, and at least one 64-bit limb
@@ -643,6 +661,7 @@ Answer root(const Program& r, const Program& dr, const std::vector<Program>& inp
   bool done = false;
   while (!done) {
     // Newton: x ← x − r(x)/r′(x), on midpoints
+    arb_zero(step);
     for (int it = 0; it < 200; ++it) {
       if (R.eval(bits, reg_r, x) != Status::Ok || D.eval(bits, reg_d, x) != Status::Ok) break;
       arb_srcptr fr = R.out(reg_r);
@@ -690,7 +709,13 @@ Answer root(const Program& r, const Program& dr, const std::vector<Program>& inp
       if (sa != 0 && sb != 0) break;
     }
     arb_union(I, a, b, bits + 16);
-    if (sa != 0 && sb != 0 && sa != sb && R.eval(bits, reg_r, I) == Status::Ok) {
+    // r defined (so continuous) on I with opposite signs at its ends: a root in I; r′ away from 0
+    // on I: only one (r monotone), the one Newton's steps went to
+    auto one_root = [&] {
+      if (R.eval(bits, reg_r, I) != Status::Ok || D.eval(bits, reg_d, I) != Status::Ok) return false;
+      return !arb_contains_zero(D.out(reg_d));
+    };
+    if (sa != 0 && sb != 0 && sa != sb && one_root()) {
       if (bracket) {
         // inside the bracket the solver found the root in
         set_const(blo, lo, bits + 64);

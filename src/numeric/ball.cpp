@@ -324,6 +324,13 @@ std::optional<Proven> digits_at_roots(const ex& g, const std::vector<RootOf>& ro
     return std::nullopt;  // a function the tape has no instruction for, or a symbol without a value
   }
   if (detail::BallRun::has_float(t)) return std::nullopt;
+  // an integral in g or in a root's equation: its cost grows fast with the precision, and one that
+  // does not settle at several times the bits n digits need will not settle later (as the module
+  // caps a tape's own)
+  bool integrals = t.has_integrals();
+  for (auto& r : roots)
+    for (auto it = r.residual.preorder_begin(); it != r.residual.preorder_end(); ++it) integrals = integrals || is_integral(*it);
+  if (integrals) max_bits = std::min(max_bits, std::max<long>(1024, 4 * bits_for(n)));
   const api::Program program = detail::BallRun::program(t);
   const api::Api& m = module();
   for (int digits = n + 10;; digits *= 2) {

@@ -244,6 +244,29 @@ TEST_CASE("ball arithmetic: integrals against mpmath, and undefined or ill-posed
   CHECK_THROWS_AS(t(std::vector<double>{1.0}), std::logic_error);
   // an integral inside an integrand is not taken
   CHECK_THROWS(kn::Tape::compile(I(I(exp(x), 0, xi), 0, a), {a}, kn::Tape::Accept::Integrals));
+  // an end known only to a ball (π/2) where the integrand's domain ends (√cos ξ): Arb integrates
+  // to the ball's midpoint, which may lie past π/2; that is not decided, never "proven undefined"
+  // (∫₀^{π/2} √cos ξ dξ = 1.19814023473559220743992249228 by mpmath, which a proof would give)
+  kn::BallEvaluator edge(kn::Tape::compile(I(sqrt(cos(x)), 0, a), {a}, kn::Tape::Accept::Integrals), {Pi / 2});
+  try {
+    auto e = edge.digits(20, 4000);
+    REQUIRE(e);
+    CHECK(kn::format(e->value, 20) == "1.1981402347355922074");
+  } catch (const std::domain_error& err) {
+    CHECK_THAT(err.what(), Catch::Contains("no working precision"));
+  }
+}
+
+TEST_CASE("ball arithmetic: a root is not proven at a jump of the residual", "[numeric][proven][roots]") {
+  symbol u("u");
+  // atan2(u, −1) jumps from π to −π at u = 0: opposite signs around 0, and no root there
+  CHECK(!kn::root_digits(atan2(u, -1), u, 0, numeric(-1, 2), numeric(1, 2), {}, 20, 4000));
+  CHECK(!kn::root_digits(atan2(u, -1), u, numeric(1, 1000), 0, 0, {}, 20, 4000));
+  // a true root beside it is proven: atan2(u, 1) = u near 0, root 0 exactly
+  auto z = kn::root_digits(atan2(u, 1) - numeric(1, 10), u, numeric(1, 10), 0, 1, {}, 20, 4000);
+  REQUIRE(z);
+  // tan(1/10) = 0.10033467208545054505808004578 (its series)
+  CHECK(kn::format(z->value, 20) == "0.10033467208545054506");
 }
 
 TEST_CASE("ball arithmetic: undefined, indeterminate and exact cases of the tape", "[numeric][proven]") {
