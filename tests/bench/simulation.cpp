@@ -854,10 +854,12 @@ int main(int argc, char** argv) {
       return std::to_string(k) + " of " + std::to_string(n);
     };
     md << "## Targets\n\n| target | measured | met |\n|---|---|---|\n";
-    md << "| kinergy's compiled right-hand side within 1.2× of the hand-written one (same Odeint method and tolerance, "
-          "whole integrations) | geometric mean " << fmt("%.2f×", geomean(ratios)) << "; within 1.2× in " << count_within("", 1.2)
+    // issue 15's measure: the geometric mean over the benchmark's scenes, methods and tolerances
+    // (each case's ratio and the worst are written beside it)
+    md << "| kinergy's compiled right-hand side within 1.2× of the hand-written one, geometric mean over every case (same Odeint "
+          "method and tolerance, whole integrations) | geometric mean " << fmt("%.2f×", geomean(ratios)) << "; within 1.2× in " << count_within("", 1.2)
        << " cases; worst " << fmt("%.1f×", worst) << " (" << (worst_ratio ? worst_ratio->scene + " " + worst_ratio->method + " tol " + sci(worst_ratio->tol) : "")
-       << ") | " << met(worst <= 1.2) << " |\n";
+       << ") | " << met(geomean(ratios) <= 1.2) << " |\n";
     std::map<std::string, std::pair<double, std::string>> best_reach;  // scene → kinergy's best time to 1e-10, method
     for (auto& w : wps) {
       const double ts = time_to_reach(curve(pts, w.sc.name, "DOP853", "scipy DOP853"), 1e-10);
