@@ -278,12 +278,14 @@ std::optional<Proven> root_in_balls(const ex& r, const symbol& u, const numeric&
       in.push_back(s);
       inputs.push_back(interval_program(e));
     }
-  for (auto& [s, v] : values)
-    if (r.has(s) && !s.is_equal(u) && std::none_of(balls.begin(), balls.end(), [&](const auto& b) { return b.first.is_equal(s); })) {
+  for (auto& [s, v] : values) {
+    const ex& sym = s;  // (a structured binding is not captured by a lambda before C++20 in every compiler)
+    if (r.has(sym) && !sym.is_equal(u) && std::none_of(balls.begin(), balls.end(), [&](const auto& b) { return b.first.is_equal(sym); })) {
       if (holds_float(v)) return std::nullopt;
-      in.push_back(s);
+      in.push_back(sym);
       inputs.push_back(input_program(v));
     }
+  }
   Tape tr, td;
   try {
     tr = Tape::compile(r, in, Tape::Accept::Integrals);
@@ -312,9 +314,10 @@ std::optional<Proven> digits_at_roots(const ex& g, const std::vector<RootOf>& ro
   std::vector<api::Program> given;
   for (auto& r : roots) syms.push_back(r.u);
   for (auto& [s, v] : values) {
-    if (!g.has(s) || std::any_of(roots.begin(), roots.end(), [&](const RootOf& r) { return r.u.is_equal(s); })) continue;
+    const ex& sym = s;  // (not captured as a structured binding: see root_in_balls)
+    if (!g.has(sym) || std::any_of(roots.begin(), roots.end(), [&](const RootOf& r) { return r.u.is_equal(sym); })) continue;
     if (holds_float(v)) return std::nullopt;
-    syms.push_back(s);
+    syms.push_back(sym);
     given.push_back(input_program(v));
   }
   Tape t;
