@@ -226,9 +226,18 @@ DECLARE_FUNCTION_4P(integral)
 ex integral_evalf(const ex& f, const ex& s, const ex& a, const ex& b) {
   ex av = a.evalf(), bv = b.evalf();
   if (is_a<symbol>(s) && is_a<GiNaC::numeric>(av) && is_a<GiNaC::numeric>(bv) && ex_to<GiNaC::numeric>(av).is_real() &&
-      ex_to<GiNaC::numeric>(bv).is_real())
-    if (auto v = integrate(f, ex_to<symbol>(s), ex_to<GiNaC::numeric>(av), ex_to<GiNaC::numeric>(bv), {}, static_cast<int>(Digits)))
+      ex_to<GiNaC::numeric>(bv).is_real()) {
+    // the same integral at the same precision is asked again and again (every check of an
+    // expression that holds it): its value is kept, keyed by the integrand, the ends and the digits
+    static thread_local std::map<ex, ex, ex_is_less> kept;
+    const ex key = lst{f, s, av, bv, numeric(static_cast<long>(Digits))};
+    if (auto it = kept.find(key); it != kept.end()) return it->second;
+    if (auto v = integrate(f, ex_to<symbol>(s), ex_to<GiNaC::numeric>(av), ex_to<GiNaC::numeric>(bv), {}, static_cast<int>(Digits))) {
+      if (kept.size() > 4096) kept.clear();
+      kept.emplace(key, *v);
       return *v;
+    }
+  }
   return integral(f, s, a, b).hold();
 }
 
