@@ -198,7 +198,7 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
       const long working = numerics::digits_in(p->bits);
       switch (p->kind) {
         case numerics::Proven::Kind::Exact: return Value{p->value, Value::How::Exact, 0, 0, true, p->value, p->value};
-        case numerics::Proven::Kind::Digits: return Value{p->at.mid(), Value::How::Precise, working, 0, true, p->at.lo, p->at.hi};
+        case numerics::Proven::Kind::Digits: return Value{p->value, Value::How::Precise, working, 0, true, p->at.lo, p->at.hi};
         case numerics::Proven::Kind::Unsigned: {
           const numeric m = std::max(abs(p->at.lo), abs(p->at.hi));
           return Value{0, Value::How::Zero, working, numerics::round_up2(m).to_double(), true, p->at.lo, p->at.hi};

@@ -4,6 +4,8 @@
 /// Arb, FLINT and NTL costs every process about 5 ms of dynamic linking: a process that never
 /// asks for proven digits does not pay it.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -74,6 +76,14 @@ struct Api {
 };
 
 constexpr int kVersion = 3;
+
+/// Bits for n decimal digits (n·log₂10), rounded up: the module and numeric/ball.cpp alike.
+inline long bits_for(int n) { return static_cast<long>(std::ceil(n * 3.3219280948873623)); }
+
+/// The most bits an evaluation with an integral in it goes to for n digits: Arb's integration
+/// costs more and more as the precision rises, and an integral it cannot settle at several times
+/// the bits n digits need will not settle later.
+inline long integral_bits(int n) { return std::max<long>(1024, 4 * bits_for(n)); }
 
 }  // namespace kinergy::numerics::arbapi
 

@@ -573,12 +573,10 @@ struct Bound {
   arb_srcptr out(const Balls& reg) const { return reg[static_cast<std::size_t>(tape.outs.at(0))]; }
 };
 
-long bits_for(int n) { return static_cast<long>(std::ceil(n * 3.3219280948873623)); }
-
 // An integral's cost grows fast with the precision, and one that Arb's integration cannot settle at
 // several times the bits n digits need will not settle later: its precision stops there.
 long integral_cap(const Program& t, int n, long max_bits) {
-  return t.integrands.empty() ? max_bits : std::min(max_bits, std::max<long>(1024, 4 * bits_for(n)));
+  return t.integrands.empty() ? max_bits : std::min(max_bits, integral_bits(n));
 }
 
 void* create(const Program& tape, const std::vector<Program>& inputs) { return new Bound(tape, inputs); }

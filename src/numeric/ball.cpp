@@ -327,13 +327,12 @@ std::optional<Proven> digits_at_roots(const ex& g, const std::vector<RootOf>& ro
     return std::nullopt;  // a function the tape has no instruction for, or a symbol without a value
   }
   if (detail::BallRun::has_float(t)) return std::nullopt;
-  // an integral in g or in a root's equation: its cost grows fast with the precision, and one that
-  // does not settle at several times the bits n digits need will not settle later (as the module
-  // caps a tape's own)
+  // an integral in g or in a root's equation: capped by the n digits asked, as the module caps a
+  // tape's own (api::integral_bits)
   bool integrals = t.has_integrals();
   for (auto& r : roots)
     for (auto it = r.residual.preorder_begin(); it != r.residual.preorder_end(); ++it) integrals = integrals || is_integral(*it);
-  if (integrals) max_bits = std::min(max_bits, std::max<long>(1024, 4 * bits_for(n)));
+  if (integrals) max_bits = std::min(max_bits, api::integral_bits(n));
   const api::Program program = detail::BallRun::program(t);
   const api::Api& m = module();
   for (int digits = n + 10;; digits *= 2) {
@@ -357,7 +356,7 @@ std::optional<Proven> digits_at_roots(const ex& g, const std::vector<RootOf>& ro
   }
 }
 
-long bits_for(int n) { return static_cast<long>(std::ceil(n * 3.3219280948873623)); }
+long bits_for(int n) { return api::bits_for(n); }
 
 long digits_in(long bits) { return static_cast<long>(static_cast<double>(bits) * 0.30102999566398120); }
 

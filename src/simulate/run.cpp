@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <type_traits>
 
 #include <boost/numeric/odeint.hpp>
 
@@ -29,6 +30,10 @@ public:
   virtual bool step(Sys& s, state_type& y, double& t, double& dt) = 0;
   virtual void reset() = 0;
   virtual bool adaptive() const { return true; }
+  /// Each step's first call of the right-hand side is at the step's start, in the buffer step()
+  /// was given (the state accepted last): not so for a method whose last stage is the next step's
+  /// first (first same as last), nor for one that calls the kernel past the right-hand side.
+  virtual bool calls_at_start() const { return false; }
 };
 
 template <class C>
@@ -40,6 +45,9 @@ public:
   }
   void reset() override {
     if constexpr (requires(C& c) { c.reset(); }) c_.reset();
+  }
+  bool calls_at_start() const override {
+    return !std::is_same_v<typename C::stepper_category, odeint::explicit_controlled_stepper_fsal_tag>;
   }
 private:
   C c_;
@@ -54,6 +62,7 @@ public:
   }
   void reset() override {}
   bool adaptive() const override { return false; }
+  bool calls_at_start() const override { return true; }
 private:
   odeint::runge_kutta4<state_type> st_;
 };
@@ -411,8 +420,7 @@ private:
     // call at its start: integrate() takes it; the run's end is taken by finish()), else from the
     // auxiliary kernel
     const std::size_t n = p_.n;
-    const bool next_takes_it = p_.solved_in_kernel && (p_.o.method == Method::Rkf78 || p_.o.method == Method::BulirschStoer ||
-                                                       p_.o.method == Method::Rk4);
+    const bool next_takes_it = p_.solved_in_kernel && stepper_->calls_at_start();
     if (p_.solved_in_kernel && p_.x[0] == t_ && std::equal(y_.begin(), y_.begin() + static_cast<long>(2 * n), p_.x.begin() + 1)) {
       max_T_ = std::max(max_T_, p_.out[p_.o_qdd + n]);
     } else if (!next_takes_it) {

@@ -84,8 +84,8 @@ struct RootOf {
 /// each root is enclosed on balls at the precision of m ≥ n + 10 digits (as root_digits proves
 /// one, in order: a root whose residual holds an earlier root takes that root's enclosure as an
 /// input), and g runs on balls whose inputs are those enclosures; m doubles until g's digits are
-/// fixed. A value solved from a
-/// numeric root, or an extreme at a stationary point found numerically, is proven so. @returns
+/// fixed. A value solved from a numeric root, or an extreme at a stationary point found
+/// numerically, is proven so. @returns
 /// nothing when a root is not proven, g holds a float or a function the tape has no instruction
 /// for, or no m up to max_bits fixes the digits.
 std::optional<Proven> digits_at_roots(const GiNaC::ex& g, const std::vector<RootOf>& roots, const GiNaC::exmap& values, int n,
