@@ -466,10 +466,87 @@ private:
       }
     }
     if (kept.empty()) throw *first;
-    sol_.branch = kept.size() == 1 ? kept.front() : Selector{m, env, given}.pick(kept);
+    // a branch whose states the motion does not reach (the kinetic energy negative on the way, a
+    // rest on the far side of the way the motion goes) is no solution either; a root choice that
+    // asks for one is refused with that reason
+    std::vector<solve::Branch> reached;
+    std::vector<std::pair<solve::Branch, SceneError>> unreached;
+    for (auto& b : kept) {
+      try {
+        check_reached(b);
+        reached.push_back(b);
+      } catch (const SceneError& e) {
+        unreached.push_back({b, e});
+      }
+    }
+    if (reached.empty()) throw unreached.front().second;
+    try {
+      sol_.branch = Selector{m, env, given}.pick(reached);  // (one branch too: its root choices are checked)
+    } catch (const SceneError&) {
+      // the root choice asked for a solution the motion does not reach: say why
+      const Selector sel{m, env, given};
+      for (auto& [b, why] : unreached) {
+        bool meets = true;
+        for (auto& f : m.finds) {
+          if (f.root.kind == model::RootSpec::Kind::None) continue;
+          auto v = sel.find_value(f, b);
+          meets = meets && (!v || sel.meets(f.root, *v));
+        }
+        if (meets)
+          throw SceneError(why.pos(), "the root asked for gives a solution the motion does not reach: " + why.problem(), why.fix());
+      }
+      throw;
+    }
     for (auto& a : m.analyses) {
       forward_in_time(a);
       a.type->check(m, a, given, sol_.branch, env);
+    }
+  }
+
+  /// Does the motion reach each energy analysis' end state (branch b)?
+  ///  - a coordinate at rest at the end state whose rate at the start is not zero comes to rest
+  ///    the way it moves: (q₂ − q₁) q̇₁ > 0 (to lie the other way it must stop, and turn, first);
+  ///  - with one degree of freedom between the states, the kinetic energy stays ≥ 0 along the way
+  ///    (principles::check_reached).
+  /// Skipped where the kinetic energy between the ends cannot be had (a force that switches,
+  /// split where the end lies; an average force of an isolated set; a parameter without a value).
+  void check_reached(const solve::Branch& b) const {
+    exmap values = env;
+    for (const exmap* part : {static_cast<const exmap*>(&given), static_cast<const exmap*>(&b.sol)})
+      for (auto& [k, v] : *part) {
+        try {
+          ex x = v.subs(given).subs(b.sol).subs(env).evalf();
+          if (is_a<numeric>(x)) values[k] = x;
+        } catch (const std::exception&) {
+        }
+      }
+    auto value = [&](const ex& e) -> std::optional<numeric> {
+      ex x = e.subs(values);
+      if (is_a<numeric>(x) && ex_to<numeric>(x).is_real()) return ex_to<numeric>(x);
+      return std::nullopt;
+    };
+    for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
+      const auto& a = m.analyses[ai];
+      if (a.type->impulsive()) continue;  // energy alone keeps a motion going one way
+      const auto &S1 = m.states[a.from], &S2 = m.states[a.to];
+      for (auto& c : m.coords) {
+        auto q1 = value(S1.sym.at(c.name).first), q2 = value(S2.sym.at(c.name).first);
+        auto v1 = value(S1.sym.at(c.name).second), v2 = value(S2.sym.at(c.name).second);
+        if (!q1 || !q2 || !v1 || !v2 || !v2->is_zero() || v1->is_zero() || (*q2 - *q1) * *v1 >= 0) continue;
+        const std::string unit = units::si_name(c.dim).empty() ? "rad" : units::si_name(c.dim);
+        throw SceneError(a.pos, "state '" + S2.name + "' has " + c.name + " at rest on the other side of state '" + S1.name + "' than the motion goes: " +
+                                    c.name + "_dot@" + S1.name + " = " + numerics::format(*v1, 6) + " " + unit + "/s, so " + c.name +
+                                    " comes to rest first at " + c.name + (v1->is_positive() ? " > " : " < ") + numerics::format(*q1, 6) + " " + unit +
+                                    ", but this solution puts " + c.name + "@" + S2.name + " = " + numerics::format(*q2, 6) + " " + unit,
+                         "choose the root on the side the motion goes ('root:' of the result), or check the rates given at state '" + S1.name + "'");
+      }
+      if (a.bodies.size() != m.bodies.size() || !a.reactions.empty()) continue;
+      const auto& bal = sol_.balances.at(static_cast<std::size_t>(sol_.parts.at(ai)));
+      if (std::any_of(bal.works.begin(), bal.works.end(), [](const principles::Work& w) { return w.ends_only; })) continue;
+      bool symbolic = false;
+      const ex eq = bal.equation.residual().subs(given);
+      for (auto& p : m.params) symbolic = symbolic || (!p.value && !p.unknown && eq.has(p.sym));
+      if (!symbolic) principles::check_reached(m, a, bal, values);
     }
   }
 
@@ -486,16 +563,20 @@ private:
       }
     for (auto& e : m.effects)
       for (std::size_t s = 0; s < m.states.size(); ++s) e.check_state(m, static_cast<int>(s), values);
-    // what the energy equations took for granted (a switching force passed): e ≥ 0
+    // what the equations took for granted (a switching force passed, a declared direction of
+    // sliding): e ≥ 0
+    auto hold = [&](const principles::Condition& c) {
+      auto v = numerics::evaluate(c.e.subs(given).subs(b.sol), env, 30);
+      if (!v || !v->is_negative()) return;
+      std::string what = c.what;
+      what.replace(what.find("{}"), 2, numerics::format(-*v, 6));
+      throw SceneError(c.pos, what, c.fix);
+    };
     for (auto& bal : sol_.balances)
       for (auto& w : bal.works)
-        for (auto& c : w.holds) {
-          auto v = numerics::evaluate(c.e.subs(given).subs(b.sol), env, 30);
-          if (!v || !v->is_negative()) continue;
-          std::string what = c.what;
-          what.replace(what.find("{}"), 2, numerics::format(-*v, 6));
-          throw SceneError(c.pos, what, c.fix);
-        }
+        for (auto& c : w.holds) hold(c);
+    for (auto& mom : sol_.momenta)
+      for (auto& c : mom.holds) hold(c);
   }
 
   /// The greatest or least value of r.closed as f's parameter p runs over [lo, hi] (or where it

@@ -61,6 +61,11 @@ public:
     // one impulsive reaction per constraint: its generalized impulse λ ∂c/∂q has the
     // dimension of (kg·m²/s) / [q], so λ has (kg·m²/s) / [c]
     for (std::size_t kk = 0; kk < m.constraints.size(); ++kk) {
+      // a constraint effect switched off at `before` (a cord gone slack) carries no impulse
+      if (m.constraint_activity(kk, a) == model::Effect::Activity::None) {
+        a.lambdas.push_back(0);
+        continue;
+      }
       Dimension dc = m.dimension(m.constraints[kk].first);
       ex lam = r.unknown("lambda" + std::to_string(kk + 1) + "[" + S1 + "," + S2 + "]", M * L * L / T / dc);
       a.lambdas.push_back(lam);

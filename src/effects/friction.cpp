@@ -95,11 +95,12 @@ public:
 
   /// The friction force on A over analysis an: −μN û, û the direction of A's slip (over B) along
   /// its fixed line at the first state.
-  std::pair<ex, ex> force_on_a(const Model& m, const Analysis& an, const Knowledge& k) const {
+  std::pair<ex, ex> force_on_a(const Model& m, const Analysis& an, const Knowledge& k,
+                               std::vector<principles::Condition>* holds = nullptr) const {
     auto [vx, vy] = slip(m);
     bool x0 = principles::vanishes(m, vy), y0 = principles::vanishes(m, vx);
-    if (x0 && !y0) return {-mu * normal * principles::motion_direction(m, *this, direction, vx, an, k, "sliding"), 0};
-    if (y0 && !x0) return {0, -mu * normal * principles::motion_direction(m, *this, direction, vy, an, k, "sliding")};
+    if (x0 && !y0) return {-mu * normal * principles::motion_direction(m, *this, direction, vx, an, k, "sliding", holds), 0};
+    if (y0 && !x0) return {0, -mu * normal * principles::motion_direction(m, *this, direction, vy, an, k, "sliding", holds)};
     throw SceneError(pos, "friction '" + name + "' slides along a changing direction; its impulse needs the motion in time",
                      "use friction whose contact slides along a fixed line (x or y)");
   }
@@ -109,8 +110,8 @@ public:
     if (!on_a && !on_b) return;
     if (on_a && on_b) return;  // between two bodies of the set: equal and opposite at one place
     // kinetic friction −μN û on A against its slip over B at the first state (+μN û on B)
-    auto [Fx, Fy] = force_on_a(m, an, k);
     Push p;
+    auto [Fx, Fy] = force_on_a(m, an, k, &p.holds);
     const int sign = on_a ? 1 : -1;
     p.Fx = sign * Fx;
     p.Fy = sign * Fy;

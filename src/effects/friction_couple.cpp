@@ -27,7 +27,7 @@ public:
   void pushes(const Model& m, const Analysis& a, const Knowledge& k, std::vector<Push>& out) const override {
     if (!on(a)) return;
     Push p;
-    p.M = -M * principles::motion_direction(m, *this, direction, m.omega(body), a, k, "rotation");
+    p.M = -M * principles::motion_direction(m, *this, direction, m.omega(body), a, k, "rotation", &p.holds);
     out.push_back(p);
   }
 

@@ -92,6 +92,7 @@ public:
     principles::Work w;
     w.effect = name;
     w.U = (e1 ? m.bind(V, s1) : ex(0)) - (e2 ? m.bind(V, s2) : ex(0));
+    w.ends_only = true;
     w.how = "U = V(" + m.states[s1].name + ") - V(" + m.states[s2].name + "), V = k*delta^2/2 where it is " +
             (side < 0 ? "compressed" : "stretched") + " (at " + (e1 && e2 ? "both states" : e1 ? "state " + m.states[s1].name : e2 ? "state " + m.states[s2].name : "neither state") + "), else 0";
     return w;

@@ -655,7 +655,7 @@ private:
       if (a.type->takes_reactions()) {
         // supports between the body set and the rest (pins, constraints) carry unknown reactions
         for (auto& e : m_.effects) {
-          if (!e.reaction_across(a.bodies)) continue;
+          if (!e.reaction_across(a.bodies) || e.activity(a) == Effect::Activity::None) continue;
           std::string key = e.name + "|" + S1 + "|" + S2;
           if (!known_reactions.count(key))
             for (auto& part : e.reaction_parts())

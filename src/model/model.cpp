@@ -165,7 +165,10 @@ ex Model::spring_length(const ex& d2) const {
   if (poly) {
     ex f;
     try {
-      f = factor(d2.expand());
+      // numerator and denominator factored apart, functions of parameters (sin β) standing in as
+      // symbols, after sin² + cos² = 1: (x cos β + D cos β)² + (x sin β + D sin β)² is (x + D)²
+      ex nd = numer_denom(trig_simplify(d2.expand()));
+      f = factor_any(nd.op(0)) / factor_any(nd.op(1));
     } catch (const std::exception&) {
       return sqrt(d2);
     }
@@ -270,6 +273,51 @@ int Model::body_index(const std::string& n) const {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].name == n) return static_cast<int>(i);
   return -1;
+}
+
+const Effect* Model::carrier(std::size_t k) const {
+  for (auto& e : effects)
+    if (e.carries(k)) return &e;
+  return nullptr;
+}
+
+bool Model::constraint_at(std::size_t k, int s, bool rate) const {
+  const Effect* e = carrier(k);
+  if (!e) return true;
+  if ((e->on >= 0 && s < e->on) || (e->off >= 0 && s > e->off)) return false;
+  if (rate && s == e->on)
+    for (auto& a : analyses)
+      if (a.instant && a.from == s) return false;  // it engages in that impact: its rates hold after it
+  return true;
+}
+
+Effect::Activity Model::constraint_activity(std::size_t k, const Analysis& a) const {
+  const Effect* e = carrier(k);
+  return e ? e->activity(a) : Effect::Activity::Whole;
+}
+
+std::vector<std::pair<ex, SourcePos>> Model::constraints_over(const Analysis& a) const {
+  std::vector<std::pair<ex, SourcePos>> out;
+  for (std::size_t k = 0; k < constraints.size(); ++k) {
+    const auto act = constraint_activity(k, a);
+    if (act == Effect::Activity::Part) {
+      const Effect& e = *carrier(k);
+      const int at = e.on > std::min(a.from, a.to) && e.on < std::max(a.from, a.to) ? e.on : e.off;
+      throw SceneError(a.pos, "constraint effect '" + e.name + "' is switched " + (at == e.on ? "on" : "off") + " at state '" +
+                                  states[at].name + "', inside this " + a.kind + " analysis (" + states[a.from].name + " -> " +
+                                  states[a.to].name + "): the motion has other coordinates on either side of it",
+                       "split the analysis at state '" + states[at].name + "'");
+    }
+    if (act == Effect::Activity::Whole) out.push_back(constraints[k]);
+  }
+  return out;
+}
+
+std::vector<std::pair<ex, SourcePos>> Model::constraints_between(int s1, int s2) const {
+  std::vector<std::pair<ex, SourcePos>> out;
+  for (std::size_t k = 0; k < constraints.size(); ++k)
+    if (constraint_at(k, s1, false) && constraint_at(k, s2, false)) out.push_back(constraints[k]);
+  return out;
 }
 
 int Model::effect_index(const std::string& n) const {

@@ -21,9 +21,11 @@ Knowledge::Knowledge(const Model& m) : env_(m.numeric_environment()) {
   // what constraints give at each state from the given values (one unknown, linear)
   for (int pass = 0; pass < 4; ++pass)
     for (std::size_t si = 0; si < m.states.size(); ++si)
-      for (auto& [c, pos] : m.constraints)
-        for (const ex& eq : {m.bind(c, static_cast<int>(si)), m.bind(m.rate(c), static_cast<int>(si))}) {
-          ex r = eq.subs(known_).subs(env);
+      for (std::size_t ck = 0; ck < m.constraints.size(); ++ck)
+        for (const bool rate : {false, true}) {
+          if (!m.constraint_at(ck, static_cast<int>(si), rate)) continue;  // switched off there
+          const ex& c = m.constraints[ck].first;
+          ex r = m.bind(rate ? m.rate(c) : c, static_cast<int>(si)).subs(known_).subs(env);
           std::vector<ex> unknown;
           for (auto& [name, qs] : m.states[si].sym) {
             if (r.has(qs.first)) unknown.push_back(qs.first);
@@ -43,6 +45,7 @@ std::optional<numeric> Knowledge::value(const ex& e) const {
 }
 
 EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& k) {
+  m.constraints_over(a);  // none switched inside the analysis (the coordinates differ on either side)
   EnergyBalance b;
   const bool whole = a.bodies.size() == m.bodies.size();
   // a body set (isolated): its own kinetic energy; each effect acting only on it counts whole,
@@ -117,9 +120,12 @@ EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& 
 std::vector<Equation> state_equations(const Model& m, int s) {
   std::vector<Equation> out;
   const std::string S = m.states[s].name;
-  for (auto& [c, pos] : m.constraints) {
+  for (std::size_t k = 0; k < m.constraints.size(); ++k) {
+    const auto& [c, pos] = m.constraints[k];
+    if (!m.constraint_at(k, s, false)) continue;  // a constraint effect switched off (or not yet on) there
     out.push_back({m.bind(c, s), 0, "constraint", "constraint at state " + S, pos});
     // the constraint holds at every instant, so its rate vanishes: Σ ∂c/∂q q̇ = 0
+    if (!m.constraint_at(k, s, true)) continue;  // it engages in an impact starting at s
     ex r = model::trig_simplify(m.rate(c));
     if (!r.is_zero()) out.push_back({m.bind(r, s), 0, "constraint", "constraint rate at state " + S, pos});
   }

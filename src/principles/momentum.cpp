@@ -50,13 +50,32 @@ bool motion_free(const Model& m, const ex& e) {
 }
 
 int motion_direction(const Model& m, const Effect& e, std::optional<int> declared, const ex& generic, const Analysis& a,
-                     const Knowledge& k, const std::string& what) {
+                     const Knowledge& k, const std::string& what, std::vector<Condition>* holds) {
+  const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;
+  const auto word = [](int s) { return std::string(s > 0 ? "positive" : "negative"); };
   for (int s : {a.from, a.to}) {
     auto v = k.value(m.bind(generic, s));
-    if (v && !v->is_zero()) return v->is_positive() ? 1 : -1;
+    if (!v || v->is_zero()) continue;
+    const int told = v->is_positive() ? 1 : -1;
+    if (declared && *declared != told)
+      throw SceneError(e.pos, "effect '" + e.name + "' declares 'direction: " + word(*declared) + "', but the " + what + " at state '" +
+                                  m.states[s].name + "' is " + word(told) + " (" + model::text(m.bind(generic, s)) + " = " +
+                                  numerics::format(*v, 6) + ")",
+                       "remove 'direction:' from '" + e.name + "' (the states tell it), or check the states");
+    return told;
   }
-  if (declared) return *declared;
-  const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;
+  if (declared) {
+    // taken as declared: the solution must slide (turn) that way at both states
+    if (holds)
+      for (int s : {a.from, a.to})
+        holds->push_back({*declared * m.bind(generic, s),
+                          "effect '" + e.name + "' declares 'direction: " + word(*declared) + "', but the solution has the " + what +
+                              " at state '" + m.states[s].name + "' the other way (by {} in SI units): friction cannot drive the motion",
+                          "give 'direction: " + word(-*declared) + "' on '" + e.name + "', or leave it out and give a velocity at state '" +
+                              S1 + "' or '" + S2 + "'",
+                          e.pos});
+    return *declared;
+  }
   throw SceneError(e.pos, "the direction of " + what + " under '" + e.name + "' between states " + S1 + " and " + S2 +
                               " is not known (no velocity there tells it)",
                    "give a nonzero velocity at state '" + S1 + "' or '" + S2 + "', or 'direction: positive|negative' on '" +
@@ -179,8 +198,10 @@ std::string set_name(const Model& m, const Analysis& a) {
 /// body alone is with the ground (rolling), and one that reaches outside the set pulls from
 /// outside: both forces are unknown, so over a duration the analysis cannot hold them.
 void check_constraints(const Model& m, const Analysis& a) {
+  m.constraints_over(a);  // none switched inside the analysis
   for (std::size_t ci = 0; ci < m.constraints.size(); ++ci) {
     const auto& [c, pos] = m.constraints[ci];
+    if (m.constraint_activity(ci, a) == model::Effect::Activity::None) continue;  // switched off over it
     // held by a named effect: its reaction is that effect's unknown
     if (std::any_of(m.effects.begin(), m.effects.end(), [&](const Effect& e) { return e.carries(ci); })) continue;
     std::vector<int> coupled;
@@ -302,7 +323,10 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
     out.components.push_back(c);
   }
   for (auto& e : m.effects)
-    for (auto& p : pushes(m, e, a, k)) out.shown.push_back({e.name, p});
+    for (auto& p : pushes(m, e, a, k)) {
+      out.holds.insert(out.holds.end(), p.holds.begin(), p.holds.end());
+      out.shown.push_back({e.name, p});
+    }
   return out;
 }
 
@@ -373,7 +397,10 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   const char* what = a.conserved ? "conservation of angular momentum" : "angular impulse-momentum";
   c.equation = {c.before + I, c.after, what, std::string(what) + " about " + a.about.text + ", " + state_pair(m, a), a.pos};
   for (auto& e : m.effects)
-    for (auto& p : pushes(m, e, a, k)) out.shown.push_back({e.name, p});
+    for (auto& p : pushes(m, e, a, k)) {
+      out.holds.insert(out.holds.end(), p.holds.begin(), p.holds.end());
+      out.shown.push_back({e.name, p});
+    }
   out.components.push_back(c);
   return out;
 }

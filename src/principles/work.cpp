@@ -4,6 +4,7 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/roots.hpp"
 #include "kinergy/principles/principles.hpp"
 
 namespace kinergy::principles {
@@ -20,13 +21,15 @@ std::optional<ex> antiderivative(const ex& f, const symbol& s) { return model::a
 
 // ---------------------------------------------------------------- paths
 
-std::optional<Path> one_dof_path(const Model& m) {
+std::optional<Path> one_dof_path(const Model& m, int s1, int s2) {
+  // the constraints that hold along the way (a cord gone slack at an earlier state does not)
+  const auto cs = m.constraints_between(s1, s2);
   std::size_t n = m.coords.size();
-  if (n == 0 || n - std::min(n, m.constraints.size()) != 1 || m.constraints.size() >= n)
+  if (n == 0 || n - std::min(n, cs.size()) != 1 || cs.size() >= n)
     return std::nullopt;
   exmap sub;
   std::vector<bool> gone(n, false);
-  for (auto& [c, pos] : m.constraints) {
+  for (auto& [c, pos] : cs) {
     ex r = c.subs(sub);
     bool done = false;
     for (std::size_t j = n; j-- > 0 && !done;) {
@@ -81,18 +84,50 @@ std::optional<ex> potential(const Model& m, const std::vector<ex>& Q) {
   return phi;
 }
 
+/// The sign σ of the motion a friction opposes between states s1 and s2. What the states tell
+/// decides: each probe is a state-bound expression with the motion's sign (the change of a
+/// coordinate, a rate at either state), known when given or found by an earlier analysis. A
+/// declared direction (`direction:`) that they contradict is refused, naming both; one they do
+/// not tell is taken, and checked on the solution: σ·probe ≥ 0 for every probe (`w.holds`), so a
+/// wrong declaration is refused, never solved (friction would drive the motion). 0: not told, not
+/// declared.
+int friction_sign(const Model& m, const Effect& e, std::optional<int> declared, const std::vector<std::pair<ex, std::string>>& probes,
+                  int s1, int s2, const Knowledge& k, Work& w) {
+  const std::string S1 = m.states[s1].name, S2 = m.states[s2].name;
+  const auto word = [](int s) { return std::string(s > 0 ? "positive" : "negative"); };
+  for (auto& [probe, name] : probes) {
+    auto v = k.value(probe);
+    if (!v || v->is_zero()) continue;
+    const int told = v->is_positive() ? 1 : -1;
+    if (declared && *declared != told)
+      throw SceneError(e.pos, "effect '" + e.name + "' declares 'direction: " + word(*declared) + "', but the motion from state '" + S1 +
+                                  "' to '" + S2 + "' is " + word(told) + " (" + name + " = " + numerics::format(*v, 6) + ")",
+                       "remove 'direction:' from '" + e.name + "' (the states tell it), or check the states");
+    return told;
+  }
+  if (!declared) return 0;
+  for (auto& [probe, name] : probes)
+    w.holds.push_back({*declared * probe,
+                       "effect '" + e.name + "' declares 'direction: " + word(*declared) + "', but the solution moves " + name +
+                           " the other way (by {} in SI units): friction cannot drive the motion",
+                       "give 'direction: " + word(-*declared) + "' on '" + e.name + "', or leave it out and give a rate at state '" + S1 +
+                           "' or '" + S2 + "'",
+                       e.pos});
+  return *declared;
+}
+
 int motion_sign(const Model& m, const Effect& e, std::optional<int> declared, const Path& p, int s1, int s2,
-                const Knowledge& k) {
-  if (declared) return *declared;
+                const Knowledge& k, Work& w) {
   const auto& c = m.coords[p.s];
   ex q1 = m.states[s1].sym.at(c.name).first, q2 = m.states[s2].sym.at(c.name).first;
   ex v1 = m.states[s1].sym.at(c.name).second, v2 = m.states[s2].sym.at(c.name).second;
-  for (const ex& probe : {ex(q2 - q1), v1, v2}) {
-    auto v = k.value(probe);
-    if (v && !v->is_zero()) return v->is_positive() ? 1 : -1;
-  }
-  throw SceneError(e.pos, "effect '" + e.name + "': the direction of the motion from state '" + m.states[s1].name +
-                              "' to '" + m.states[s2].name + "' is not known, so the sign of the friction work is not",
+  const std::string S1 = m.states[s1].name, S2 = m.states[s2].name;
+  if (int sigma = friction_sign(m, e, declared,
+                                {{q2 - q1, c.name + "@" + S2 + " - " + c.name + "@" + S1}, {v1, c.name + "_dot@" + S1}, {v2, c.name + "_dot@" + S2}},
+                                s1, s2, k, w))
+    return sigma;
+  throw SceneError(e.pos, "effect '" + e.name + "': the direction of the motion from state '" + S1 +
+                              "' to '" + S2 + "' is not known, so the sign of the friction work is not",
                    "give '" + c.name + "' at both states, a nonzero '" + c.name + "_dot', or 'direction: positive|negative' (of " +
                        c.name + ")");
 }
@@ -103,7 +138,57 @@ int motion_sign(const Model& m, const Effect& e, std::optional<int> declared, co
 
 Work work(const Model& m, const Effect& e, int s1, int s2, const Knowledge& k) { return e.work(m, s1, s2, k); }
 
-/// ∫ Q ds from state s1 to s2 for Q holding |g(s)| with g linear in s: the ends (state values,
+/// The zeros of g(s) strictly inside (lo, hi): sign changes on a grid of 512, refined to 40
+/// digits; each as (closed form, value) — asin/acos of the solved sine or cosine when g is linear
+/// in sin s or cos s alone and that closed form is the root found, else the number. Nothing when g
+/// has no value somewhere on the grid, or touches zero without changing sign.
+static std::optional<std::vector<std::pair<ex, numeric>>> switching_points(const ex& g, const symbol& s, const numeric& lo,
+                                                                          const numeric& hi, const exmap& env) {
+  std::vector<std::pair<ex, numeric>> out;
+  exmap at = env;
+  auto g_at = [&](const numeric& x) {
+    at[s] = x;
+    return numerics::evaluate(g, at, 40);
+  };
+  const int n = 512;
+  std::optional<numeric> prev = g_at(lo);
+  numeric x0 = lo;
+  for (int i = 1; i <= n; ++i) {
+    const numeric x1 = lo + (hi - lo) * numeric(i, n);
+    auto f1 = g_at(x1);
+    if (!prev || !f1) return std::nullopt;
+    if (f1->is_zero() && i < n) return std::nullopt;  // exactly on the grid: a touch cannot be told from a crossing
+    if (!prev->is_zero() && !f1->is_zero() && prev->is_negative() != f1->is_negative()) {
+      auto r = numerics::bracketed_root(g_at, x0, x1, *prev, *f1, numerics::tenth(40), numerics::tenth(300), 50);
+      if (!r) return std::nullopt;
+      // a closed form: g = α sin s + β (or cos s), s₀ = asin(−β/α), π − asin(−β/α) (±acos)
+      ex closed = *r;
+      static const symbol z("z");
+      const ex trig[2] = {sin(s), cos(s)};
+      for (const ex& f : trig) {
+        ex w = g.subs(f == z);
+        if (w.has(s) || !w.is_polynomial(z) || w.degree(z) != 1) continue;
+        ex c = -w.subs(z == 0) / w.diff(z);
+        std::vector<ex> cands = f.is_equal(sin(s)) ? std::vector<ex>{asin(c), Pi - asin(c), asin(c) - Pi, asin(c) + 2 * Pi}
+                                                   : std::vector<ex>{acos(c), -acos(c), 2 * Pi - acos(c), acos(c) - 2 * Pi};
+        for (auto& k : cands) {
+          auto v = numerics::evaluate(k, env, 40);
+          if (v && abs(*v - *r) <= numerics::tenth(30) * (abs(*r) + 1)) {
+            closed = k;
+            break;
+          }
+        }
+      }
+      out.push_back({closed, *r});
+    }
+    x0 = x1;
+    prev = f1;
+  }
+  return out;
+}
+
+/// ∫ Q ds from state s1 to s2 for Q holding |g(s)| with g linear in s (or, between two known
+/// ends, any g whose zeros there are found): the ends (state values,
 /// expressions of parameters) and the switching points s₀ = −g(0)/g′ between them, ordered by
 /// their values; on each piece |g| = σ g with σ the sign of g at the piece's middle. A closed form
 /// valid at the scene's values.
@@ -126,11 +211,20 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
   std::vector<std::pair<ex, numeric>> switches;
   for (auto& g : args) {
     ex d = g.diff(s);
-    if (d.has(s) || d.is_zero()) return std::nullopt;
-    ex s0 = normal(-g.subs(s == 0) / d);
-    auto v = numerics::evaluate(s0, env, 40);
-    if (!v) return std::nullopt;
-    switches.push_back({s0, *v});
+    if (d.is_zero()) return std::nullopt;
+    if (!d.has(s)) {
+      ex s0 = normal(-g.subs(s == 0) / d);
+      auto v = numerics::evaluate(s0, env, 40);
+      if (!v) return std::nullopt;
+      switches.push_back({s0, *v});
+      continue;
+    }
+    // g not linear in s (a spring under a turning bar, d0 − a sin θ): its zeros between the two
+    // known ends, found numerically and written in closed form where g is linear in sin s or cos s
+    if (!a || !b) return std::nullopt;
+    auto zeros = switching_points(g, s, std::min(*a, *b), std::max(*a, *b), env);
+    if (!zeros) return std::nullopt;
+    switches.insert(switches.end(), zeros->begin(), zeros->end());
   }
   // the pieces' ends from the first state's end to the second's, in the order the motion meets them
   std::vector<std::pair<ex, numeric>> cuts;
@@ -233,7 +327,7 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
     w.how = how;
     return w;
   }
-  auto p = one_dof_path(m);
+  auto p = one_dof_path(m, s1, s2);
   if (!p)
     throw SceneError(e.pos, "the work of '" + e.name + "' depends on the path, and the scene has more than one degree of freedom",
                      "add constraints so one coordinate fixes the motion, or make the " + what + " constant");
@@ -250,6 +344,7 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
     std::string taken;
     if (auto U = piecewise_work(m, e, Qs, m.coords[p->s], s1, s2, fewer_switches, w, taken)) {
       w.U = *U;
+      w.ends_only = true;
       w.how = "U = integral along " + m.coords[p->s].name + ", split where the force switches" + taken;
       return w;
     }
@@ -306,23 +401,18 @@ std::optional<Work> exact_slip_work(const Model& m, const Effect& e, std::option
   if (!f) return std::nullopt;
   auto g = moved ? integral(*moved) : f;
   if (!g) return std::nullopt;
-  int sigma = 0;
-  if (declared) {
-    sigma = *declared;
-  } else {
-    for (int st : {s1, s2})
-      if (auto x = k.value(m.bind(v, st)); !sigma && x && !x->is_zero()) sigma = x->is_positive() ? 1 : -1;
-    if (!sigma) {
-      // the slip's sign from the change of f (the slip keeps its sign between the states)
-      if (auto d = k.value(m.bind(*f, s2) - m.bind(*f, s1)); d && !d->is_zero()) sigma = d->is_positive() ? 1 : -1;
-    }
-  }
+  Work w;
+  // the slip's sign at either state, or from the change of f (the slip keeps its sign between the states)
+  const std::string S1 = m.states[s1].name, S2 = m.states[s2].name;
+  int sigma = friction_sign(m, e, declared,
+                            {{m.bind(v, s1), "the slip at state " + S1}, {m.bind(v, s2), "the slip at state " + S2},
+                             {m.bind(*f, s2) - m.bind(*f, s1), "the slip from state " + S1 + " to " + S2}},
+                            s1, s2, k, w);
   if (!sigma)
     throw SceneError(e.pos, "effect '" + e.name + "': the direction of the slip from state '" + m.states[s1].name + "' to '" +
                                 m.states[s2].name + "' is not known, so the sign of the friction work is not",
                      "give the rates at one of the states, or 'direction: positive|negative' (of the slip)");
   // U = −c σ (f(q₂) − f(q₁)): the distance slid is |Δf|, the slip keeping its sign between the states
-  Work w;
   w.effect = e.name;
   w.U = -c * sigma * (m.bind(*g, s2) - m.bind(*g, s1));
   w.how = how;
@@ -334,7 +424,7 @@ Work friction_work(const Model& m, const Effect& e, std::optional<int> declared,
                    const Knowledge& k) {
   Work w;
   w.effect = e.name;
-  auto p = one_dof_path(m);
+  auto p = one_dof_path(m, s1, s2);
   if (!p)
     throw SceneError(e.pos, "the work of friction '" + e.name + "' depends on the path, and the scene has more than one degree of freedom",
                      "add constraints so one coordinate fixes the motion");
@@ -344,7 +434,7 @@ Work friction_work(const Model& m, const Effect& e, std::optional<int> declared,
   if (!L)
     throw SceneError(e.pos, "the distance slid under '" + e.name + "' has no closed form along " + m.coords[p->s].name,
                      "describe the sliding point so its path is straight or circular");
-  int sigma = motion_sign(m, e, declared, *p, s1, s2, k);
+  int sigma = motion_sign(m, e, declared, *p, s1, s2, k, w);
   // U = −μN · σ (ℓ(s₂) − ℓ(s₁))   (friction against the motion, monotone between the states)
   w.U = -c * sigma * (m.bind(*L, s2) - m.bind(*L, s1));
   w.how = how;

@@ -72,10 +72,18 @@ Equations equations_of_motion(const model::Model& m, const std::vector<bool>& on
     if (on.empty() || on[k]) m.effects[k].motion(m, static_cast<int>(k), eq);
 
   // holonomic constraints g(q, t) = 0:  A q̈ = γ,  γ = −d/dt(A q̇ + ∂g/∂t) at q̈ = 0
-  const std::size_t nc = m.constraints.size();
+  // (a constraint effect that does not act, a cord gone slack, gives no row)
+  std::vector<std::size_t> rows;
+  for (std::size_t r = 0; r < m.constraints.size(); ++r) {
+    bool acts = true;
+    for (std::size_t k = 0; k < m.effects.size(); ++k)
+      if (m.effects[k].carries(r) && !on.empty() && !on[k]) acts = false;
+    if (acts) rows.push_back(r);
+  }
+  const std::size_t nc = rows.size();
   eq.A = matrix(nc, n);
   for (std::size_t r = 0; r < nc; ++r) {
-    const ex& g = m.constraints[r].first;
+    const ex& g = m.constraints[rows[r]].first;
     eq.g.push_back(g);
     for (std::size_t i = 0; i < n; ++i) eq.A(r, i) = trig_simplify(g.diff(m.coords[i].q));
     eq.gt.push_back(trig_simplify(g.diff(m.t)));

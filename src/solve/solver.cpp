@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
+#include <tuple>
 
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
@@ -32,7 +34,33 @@ bool numerically_zero(const ex& e, const exmap& env, bool& known) {
 struct State {
   Branch b;
   std::vector<Equation> eqs;
+  /// Signs the branch took for granted: each expression ≥ 0 on its solution (a √(p²) or |p| taken
+  /// as ±p), or the branch is no solution.
+  std::vector<ex> signs;
 };
+
+/// A √(c p²) or |p| in e whose p holds one of `unknowns` (c free of them): (the term, c, p).
+std::optional<std::tuple<ex, ex, ex>> root_of_square(const ex& e, const std::function<bool(const ex&)>& has_unknown) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    const ex& x = *it;
+    if (is_ex_the_function(x, abs) && has_unknown(x.op(0))) return std::make_tuple(x, ex(1), x.op(0));
+    if (!is_a<power>(x) || !x.op(1).is_equal(numeric(1, 2)) || !has_unknown(x.op(0))) continue;
+    ex f;
+    try {
+      ex nd = numer_denom(model::trig_simplify(x.op(0)));
+      f = model::factor_any(nd.op(0)) / model::factor_any(nd.op(1));
+    } catch (const std::exception&) {
+      continue;
+    }
+    ex c = 1, p;
+    for (auto& y : model::factors_of(f)) {
+      if (p.is_zero() && is_a<power>(y) && y.op(1).is_equal(2) && has_unknown(y.op(0))) p = y.op(0);
+      else c *= y;
+    }
+    if (!p.is_zero() && !has_unknown(c)) return std::make_tuple(x, c, p);
+  }
+  return std::nullopt;
+}
 
 class Solver {
 public:
@@ -150,6 +178,18 @@ private:
     for (;;) {
       prune(st);
       if (st.eqs.empty()) {
+        // a sign taken for granted that the solution breaks: not a solution (the other case is)
+        for (auto& sg : st.signs) {
+          ex v;
+          try {
+            v = sg.subs(st.b.sol).subs(p_.given);
+          } catch (const std::exception&) {
+            continue;
+          }
+          bool known = false;
+          auto x = num(v, p_.env);
+          if (x && x->is_negative() && !numerically_zero(v, p_.env, known)) return;
+        }
         for (auto& w : products_) st.b.sol.erase(w);  // stand-ins, not results
         done_.push_back(st.b);
         return;
@@ -273,6 +313,23 @@ private:
     }
     const symbol& u = ex_to<symbol>(us[0]);
     std::string how = q.label;
+    // √(c p²) = √c |p| and |p| with p holding the unknown: one case for each sign of p, each
+    // checked on its solution (p ≥ 0, p ≤ 0), so the equation keeps a closed form
+    if (auto sq = root_of_square(r, [&](const ex& x) { return x.has(u); })) {
+      const auto& [term, c, p] = *sq;
+      for (int sign : {1, -1}) {
+        State s = st;
+        const ex value = sign * sqrt(c) * p;
+        for (auto& e : s.eqs) {
+          e.lhs = e.lhs.subs(term == value);
+          e.rhs = e.rhs.subs(term == value);
+        }
+        s.signs.push_back(sign * p);
+        s.b.steps.push_back(model::text(term) + " taken as " + model::text(value) + " (checked on the solution)");
+        work_.push_back(std::move(s));
+      }
+      return;
+    }
     // quadratic: a u² + b u + c = 0
     ex d2 = r.diff(u, 2);
     if (!d2.has(u) && !d2.is_zero() && r.diff(u, 3).is_zero()) {

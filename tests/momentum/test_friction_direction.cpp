@@ -38,8 +38,11 @@ double value_of(const std::string& text, const std::string& name) {
 TEST_CASE("friction couple from rest: the declared direction", "[momentum][friction]") {
   // m k² ω₂ = (M − Mf) t₂ = 24·5 / 3.6
   CHECK(value_of(kSpin, "omega2") == Approx(120.0 / 3.6).epsilon(1e-14));
-  // declared the other way, the bearing helps the motor: (M + Mf) t₂ / (m k²)
-  CHECK(value_of(edit(kSpin, "direction: positive", "direction: negative"), "omega2") == Approx(180.0 / 3.6).epsilon(1e-14));
+  // declared the other way, the bearing would help the motor ((M + Mf) t₂ / (m k²)): friction
+  // cannot drive the motion, so the declaration is checked on the solution and refused
+  auto wrong = edit(kSpin, "direction: positive", "direction: negative");
+  expect_error(wrong, at(wrong, "bearing:"), "declares 'direction: negative', but the solution has the rotation at state '2' the other way",
+               "give 'direction: positive' on 'bearing'");
 }
 
 TEST_CASE("friction couple from rest: the direction from the second state", "[momentum][friction]") {

@@ -187,6 +187,19 @@ public:
   /// Kinetic energy lost at a contact in an impact, −½[(1 − e) J v_n⁻ + Jt v_t⁻]
   /// (= ½(1 − e²) m_eff v_n⁻² for one smooth contact), free of the cancellation of T₁ − T₂.
   ex impact_loss(int contact, int analysis) const;
+  /// The effect that holds constraint k (a `constraint` effect), or nullptr (`constraints:`).
+  const Effect* carrier(std::size_t k) const;
+  /// Does constraint k hold at state s (its positions; with `rate`, its rates too)? A constraint
+  /// effect switched off at S holds up to S (a cord that goes slack there), one switched on at
+  /// S from S on — its rates from S on unless an impact starts at S (it engages in the impact).
+  bool constraint_at(std::size_t k, int s, bool rate) const;
+  /// How constraint k acts over analysis a: throughout, not at all, or switched inside it.
+  Effect::Activity constraint_activity(std::size_t k, const Analysis& a) const;
+  /// The constraints that hold throughout analysis a. @throws SceneError when one is switched
+  /// inside it (split the analysis at that state).
+  std::vector<std::pair<ex, SourcePos>> constraints_over(const Analysis& a) const;
+  /// The constraints that hold at both states s1 and s2 (the path between them).
+  std::vector<std::pair<ex, SourcePos>> constraints_between(int s1, int s2) const;
   /// The analysis between two states (−1 when none).
   int analysis_between(int from, int to, const std::string& effect = "") const;
 

@@ -19,6 +19,7 @@ struct Push {
   ex Rx = 0, Ry = 0;
   std::string what;         ///< how a derivation names it, when not by the defaults
   int body = -1;            ///< the body it acts on, where that is one (an impact's impulses); −1: the set
+  std::vector<Condition> holds;  ///< what it took for granted (a declared direction of sliding): checked on the solution
 };
 
 /// An effect's push as a diagram shows it.
@@ -34,9 +35,11 @@ bool vanishes(const model::Model& m, const ex& e);
 /// Free of the coordinates and rates?
 bool motion_free(const model::Model& m, const ex& e);
 /// Direction of sliding (or turning) over the interval: the sign of `generic` at the first
-/// state, or — starting from rest — at the second, or `declared`. @throws SceneError otherwise.
+/// state, or — starting from rest — at the second; a `declared` one they contradict is refused,
+/// one they do not tell is taken and checked on the solution (`holds`: the sign of `generic` at
+/// both states). @throws SceneError when neither tells it, or they disagree.
 int motion_direction(const model::Model& m, const model::Effect& e, std::optional<int> declared, const ex& generic,
-                     const model::Analysis& a, const Knowledge& k, const std::string& what);
+                     const model::Analysis& a, const Knowledge& k, const std::string& what, std::vector<Condition>* holds = nullptr);
 
 /// One external impulse in a component equation.
 struct ImpulseTerm {
@@ -57,6 +60,7 @@ struct MomentumBalance {
   std::vector<Shown> shown;  ///< every force and impulse on the set, for its impulse–momentum diagram
   bool conserved = false;
   bool angular = false;  ///< angular (about a point), else linear
+  std::vector<Condition> holds;  ///< what its pushes took for granted, checked on the solution
 };
 
 /// Linear impulse–momentum Σ m v̄₂·n = Σ m v̄₁·n + Σ ∫F·n dt for the analysis' bodies.

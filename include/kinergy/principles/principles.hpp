@@ -38,6 +38,9 @@ struct Work {
   std::string how;  ///< "U = M (φ₂ − φ₁)", …
   std::vector<Condition> holds;
   int switch_cases = 1;  ///< how many ways a switching force's unknown end may lie (see Knowledge)
+  /// U is right at the two states' positions only, not as a function of the end along the way (a
+  /// force split where it switches, a one-sided spring): no kinetic energy along the path from it
+  bool ends_only = false;
 };
 
 /// What is known numerically at each state before solving: given values and what the
@@ -81,12 +84,13 @@ EnergyBalance energy(const model::Model& m, const model::Analysis& a, const Know
 Work work(const model::Model& m, const model::Effect& e, int s1, int s2, const Knowledge& k);
 
 /// One degree of freedom: the free coordinate s and the others as functions of it, from
-/// constraints linear in a coordinate (later-declared coordinates are eliminated first).
+/// constraints linear in a coordinate (later-declared coordinates are eliminated first) that hold
+/// at both states s1 and s2.
 struct Path {
   std::size_t s = 0;
   GiNaC::exmap q_of_s;
 };
-std::optional<Path> one_dof_path(const model::Model& m);
+std::optional<Path> one_dof_path(const model::Model& m, int s1, int s2);
 
 /// The work of a force or couple from its generalized forces Q_i (constant in time):
 /// Φ(q₂) − Φ(q₁) when Σ Q_i dq_i = dΦ, else the integral along the one-coordinate path.
@@ -114,6 +118,15 @@ std::optional<Work> exact_slip_work(const model::Model& m, const model::Effect& 
 Work friction_work(const model::Model& m, const model::Effect& e, std::optional<int> declared, const ex& c,
                    const std::function<ex(const Path&)>& rate, const std::string& how, int s1, int s2,
                    const Knowledge& k);
+
+/// Does the motion get from state a.from to a.to of energy analysis `a` (balance `bal`, every
+/// state symbol and parameter a number in `values`)? With one degree of freedom between them
+/// (the constraints that hold fix every coordinate but one, the path coordinate s), the kinetic
+/// energy along the way, K(s) = T₁ + V₁ + U₁→s − V(s), must stay ≥ 0: sampled at 256 points
+/// from s₁ to s₂, the other coordinates following by Newton's method on the constraints.
+/// Nothing is decided where the forms cannot be had in doubles (a held integral) or the path
+/// cannot be followed. @throws SceneError naming where K turns negative.
+void check_reached(const model::Model& m, const model::Analysis& a, const EnergyBalance& bal, const GiNaC::exmap& values);
 
 /// Constraint equations at a state (positions and velocities) and its `where` conditions.
 std::vector<Equation> state_equations(const model::Model& m, int state);
