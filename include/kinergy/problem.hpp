@@ -64,6 +64,17 @@ struct Result {
 /// Significant digits a numeric root (no closed form) is refined to.
 constexpr int kRootDigits = 35;
 
+/// How one analysis was confirmed a second way (kinergy/confirm.hpp), or why it could not be.
+struct Confirmed {
+  int analysis = -1;
+  /// "simulation", "residuals" (the equations at the solution, at 50 digits), or "" (not confirmed:
+  /// `note` says why)
+  std::string by;
+  double difference = 0;  ///< the largest relative difference found
+  double tolerance = 0;   ///< what it was checked against
+  std::string note;       ///< how the simulation stood for the analysis (a nudge), or why none could
+};
+
 struct Solution {
   model::Model model;
   std::vector<principles::EnergyBalance> balances;     ///< energy analyses, in order
@@ -73,6 +84,8 @@ struct Solution {
   std::vector<principles::Equation> equations;  ///< every equation solved, in order
   solve::Branch branch;                         ///< the chosen solution
   std::vector<Result> results;
+  /// Each analysis confirmed a second way, in order (empty: not asked, `--no-confirm`).
+  std::vector<Confirmed> confirmed;
 };
 
 /// Every parameter's number: the given values, and the solved values of unknown parameters (for

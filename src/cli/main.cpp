@@ -24,6 +24,7 @@
 #include "kinergy/emit/emit.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm.hpp"
 #include "kinergy/simulate/report.hpp"
 #include "kinergy/simulate/simulate.hpp"
 #include "kinergy/verify/verify.hpp"
@@ -121,6 +122,8 @@ int main(int argc, char** argv) {
   solve->add_option("SCENE", scene, "scene file (YAML)")->required();
   solve->add_option("--digits", digits, "significant digits, proven: ball arithmetic (Arb) from the exact inputs, the precision raised until the ball fixes them; JSON adds the ball (default: 15 from the compiled double evaluator when its error bound fixes them, not proven)")->check(CLI::Range(1, 10000));
   solve->add_flag("--json", as_json, "print JSON for tools");
+  bool no_confirm = false;
+  solve->add_flag("--no-confirm", no_confirm, "do not confirm each analysis a second way (by a simulation of the same scene, else by the equations' residuals at 50 digits) before printing");
 
   std::string tex_out, pdf_out;
   int derive_digits = 4;
@@ -135,6 +138,7 @@ int main(int argc, char** argv) {
       ->check(writable_file());
   derive->add_option("--digits", derive_digits, "significant digits of the numbers (default 4)")->check(CLI::Range(1, 1000));
   derive->add_flag("--no-checks", no_checks, "leave out the checks of the scene's 'expect' claims");
+  derive->add_flag("--no-confirm", no_confirm, "do not confirm each analysis a second way before deriving");
 
   auto* verify = app.add_subcommand("verify", "check every 'expect' claim of the scenes");
   verify->add_option("SCENE", scenes, "scene files (YAML)")->required();
@@ -142,6 +146,7 @@ int main(int argc, char** argv) {
   double rtol = 0;
   verify->add_option("--rtol", rtol, "accept a value within this relative difference of the derived one (e.g. 0.005: books round on the way)")
       ->check(finite_in(0, 1, true, "a relative tolerance such as 0.005"));
+  verify->add_flag("--no-confirm", no_confirm, "do not confirm each analysis a second way before checking the claims");
 
   std::string draw_state, draw_out;
   auto* draw = app.add_subcommand("draw", "draw the scene at a state from its model: bodies, points, supports, springs, forces");
@@ -211,6 +216,7 @@ int main(int argc, char** argv) {
     return guarded(scene, [&] {
       kinergy::Solution s = kinergy::solve_file(scene);
       require_results(s);
+      if (!no_confirm) kinergy::confirm(s);
       kinergy::emit::Options o;
       o.digits = digits;
       o.guaranteed = solve->count("--digits") > 0;
@@ -223,6 +229,7 @@ int main(int argc, char** argv) {
       kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
       kinergy::Solution s = kinergy::solve_scene(def);
       require_results(s);
+      if (!no_confirm) kinergy::confirm(s);
       kinergy::emit::DeriveOptions o;
       o.digits = derive_digits;
       o.checks = !no_checks;
@@ -392,7 +399,8 @@ int main(int argc, char** argv) {
           }
           auto c = sim::check_leg(*sol, leg, o, std::max(100 * tol, 1e-13));
           std::cout << "until " << leg.target << ", " << c.run.steps << " steps; largest relative difference "
-                    << c.worst << (c.worst_what.empty() ? "" : " (" + c.worst_what + ")") << (c.ok ? " ok" : " FAILS") << "\n";
+                    << c.worst << (c.worst_what.empty() ? "" : " (" + c.worst_what + ")") << (c.ok ? " ok" : " FAILS")
+                    << (c.note.empty() ? "" : "; " + c.note) << "\n";
           bad += c.ok ? 0 : 1;
         }
         if (!sol->model.analyses.empty() && !simulate->count("--until")) return bad ? 1 : 0;
@@ -464,6 +472,7 @@ int main(int argc, char** argv) {
   for (auto& f : scenes) {
     int r = guarded(f, [&] {
       kinergy::Solution s = kinergy::solve_file(f);
+      if (!no_confirm) kinergy::confirm(s);
       auto checks = kinergy::verify::verify(s, rtol);
       bool ok = true;
       for (auto& c : checks) ok = ok && c.ok();

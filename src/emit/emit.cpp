@@ -1,5 +1,6 @@
 #include "kinergy/emit/emit.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "kinergy/common/markup.hpp"
@@ -16,6 +17,29 @@ static std::optional<Value> value_of(const Solution& s, const Result& r, const O
 
 static std::string value_text(const std::optional<Value>& v, int digits) {
   return v ? numerics::format(v->v, digits) : std::string();
+}
+
+/// A confirmation's difference as the decade that bounds it ("1e-11"; "0" when exactly zero): the
+/// same text on every machine, where the last digits of a simulation may differ with libm.
+static std::string decade(double d) {
+  if (!(d > 0)) return "0";
+  if (!std::isfinite(d)) return "inf";
+  return "1e" + std::to_string(static_cast<int>(std::ceil(std::log10(d) - 1e-9)));
+}
+
+/// "energy 1 -> 2" for analysis i.
+static std::string analysis_name(const Solution& s, int i) {
+  const auto& a = s.model.analyses[static_cast<std::size_t>(i)];
+  return a.kind + " " + s.model.states[static_cast<std::size_t>(a.from)].name + " -> " + s.model.states[static_cast<std::size_t>(a.to)].name;
+}
+
+/// How an analysis was confirmed, in words.
+static std::string confirmed_text(const Confirmed& c) {
+  const std::string d = c.difference > 0 ? "<= " + decade(c.difference) : "0";
+  std::string t = c.by == "simulation"  ? "by simulation, relative difference " + d
+                  : c.by == "residuals" ? "by the equations' residuals at 50 digits, relative " + d
+                                        : "not confirmed";
+  return t + (c.note.empty() ? "" : " (" + c.note + ")");
 }
 
 std::string text(const Solution& s, const Options& o) {
@@ -37,6 +61,10 @@ std::string text(const Solution& s, const Options& o) {
       os << "  " << r.name << pad << " = " << v << (r.unit.empty() ? "" : " " + r.unit)
          << "   (no closed form: taken numerically" << (val && o.guaranteed ? "; " + val->note() : std::string()) << ")\n";
     }
+  }
+  if (!s.confirmed.empty()) {
+    os << "Confirmed a second way:\n";
+    for (auto& c : s.confirmed) os << "  " << analysis_name(s, c.analysis) << ": " << confirmed_text(c) << "\n";
   }
   return os.str();
 }
@@ -70,6 +98,16 @@ std::string json(const Solution& s, const Options& o, const std::vector<verify::
     os << "}";
   }
   os << "]";
+  if (!s.confirmed.empty()) {
+    os << ", \"confirmed\": [";
+    for (std::size_t i = 0; i < s.confirmed.size(); ++i) {
+      const Confirmed& c = s.confirmed[i];
+      os << (i ? ", " : "") << "{\"analysis\": " << quote(analysis_name(s, c.analysis)) << ", \"by\": "
+         << (c.by.empty() ? std::string("null") : quote(c.by)) << ", \"within\": " << (c.by.empty() ? std::string("null") : quote(decade(c.difference)))
+         << ", \"note\": " << quote(c.note) << "}";
+    }
+    os << "]";
+  }
   if (checks) {
     os << ", \"checks\": [";
     for (std::size_t i = 0; i < checks->size(); ++i) {

@@ -142,9 +142,27 @@ std::string format(const GiNaC::numeric& v, int n) {
   return (d.neg ? "-" : "") + out;
 }
 
-std::optional<numeric> integrate(const ex& f, const symbol& s, const numeric& a, const numeric& b, const exmap& values,
+std::optional<numeric> integrate(const ex& f_in, const symbol& s, const numeric& a_in, const numeric& b_in, const exmap& values,
                                  int digits) {
-  if (a == b) return numeric(0);
+  if (a_in == b_in) return numeric(0);
+  // a float end (a value evaluated at some precision) is taken as the exact binary fraction it
+  // is: the nodes c + r tanh(…) then keep the working precision, where a 17-digit end would cap
+  // every node, and so the sums, at 17 digits and the levels would never agree to digits + 2
+  auto exact_end = [](const numeric& x) {
+    return x.is_rational() || !x.is_real() ? x : numeric(cln::cl_N(cln::rational(cln::the<cln::cl_R>(x.to_cl_N()))));
+  };
+  const numeric a = exact_end(a_in), b = exact_end(b_in);
+  // so is a float in the integrand (GiNaC's evalf makes 40 into 40.0 at its own precision before
+  // the integral is taken): a float's precision would cap every value of f, CLN taking the lower
+  // precision of two operands
+  struct exact_floats : map_function {
+    ex operator()(const ex& e) override {
+      if (is_a<numeric>(e) && ex_to<numeric>(e).is_real() && !ex_to<numeric>(e).is_rational())
+        return numeric(cln::cl_N(cln::rational(cln::the<cln::cl_R>(ex_to<numeric>(e).to_cl_N()))));
+      return e.map(*this);
+    }
+  } to_exact;
+  const ex f = to_exact(f_in);
   const int work = digits + 15;
   // x = c + r tanh(π/2 sinh t),  dx = r (π/2) cosh t / cosh²(π/2 sinh t) dt,  c = (a + b)/2, r = (b − a)/2
   const numeric c = (a + b) / 2, r = (b - a) / 2;

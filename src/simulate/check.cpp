@@ -93,7 +93,8 @@ void aim(const model::Model& m, const Known& k, Leg& leg, double t1) {
     // time enough: the distance at a tenth of the faster of the two rates (or 100 s)
     double v = std::max(std::fabs(leg.start.qd[i]), std::fabs(leg.expect.qd[i]));
     double dq = std::fabs(leg.expect.q[i] - q1);
-    leg.stop.until = leg.start.t + (!rate && v > 0 && !std::isnan(dq) ? std::max(10 * dq / v, 1.0) : 100.0);
+    // (a rate reached at a known place too: a flywheel braked to rest over 2500 rad takes 145 s)
+    leg.stop.until = leg.start.t + (v > 0 && !std::isnan(dq) && dq > 0 ? std::max(10 * dq / v, 1.0) : 100.0);
     leg.target = m.coords[i].name + (rate ? "_dot" : "") + " reaches " + num(q2);
     leg.expect.t = kNaN;
   }
@@ -207,13 +208,61 @@ std::vector<Leg> legs(const Solution& s) {
 LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double tolerance) {
   LegCheck c;
   c.leg = leg;
+  const model::Model& m = s.model;
   // only the effects that act over this analysis
   Options own = o;
   own.effects_on.clear();
-  for (auto& e : s.model.effects) own.effects_on.push_back(e.activity(s.model.analyses[leg.analysis]) != model::Effect::Activity::None);
-  Simulator sim(s.model, simulation_values(s), own);
+  for (auto& e : m.effects) own.effects_on.push_back(e.activity(m.analyses[leg.analysis]) != model::Effect::Activity::None);
+  // the motion's own size: the coordinates' change and the rates (a time scale of 1 s), so that
+  // the absolute tolerance is relative to it (never larger than tol)
+  // (the smallest of the coordinates' changes and rates that are not zero, so that each keeps its
+  // relative accuracy — a rate of 6e-5 among positions of 1 — but not below 1e-9 of the largest)
+  double lo = 0, hi = 0;
+  const State end = state_values(s, leg.to);
+  for (std::size_t i = 0; i < m.coords.size(); ++i)
+    for (double x : {end.q[i] - leg.start.q[i], leg.start.qd[i], end.qd[i]})
+      if (std::isfinite(x) && x != 0) {
+        lo = lo == 0 ? std::fabs(x) : std::min(lo, std::fabs(x));
+        hi = std::max(hi, std::fabs(x));
+      }
+  const double size = std::max(lo, 1e-9 * hi);
+  if (size > 0 && size < 1) own.atol = o.tol * size;
+  Simulator sim(m, simulation_values(s), own);
   c.run = sim.run(leg.start, leg.stop);
-  const model::Model& m = s.model;
+  // not reached: run longer; from rest on an equilibrium (nothing moved), nudged toward the end
+  Stop longer = leg.stop;
+  State start = leg.start;
+  for (int tries = 0; leg.stop.when && !c.run.stopped && tries < 4; ++tries) {
+    bool rest = true, moved = false;
+    for (std::size_t i = 0; i < m.coords.size(); ++i) {
+      rest = rest && start.qd[i] == 0;
+      moved = moved || c.run.end.q[i] != start.q[i] || c.run.end.qd[i] != 0;
+    }
+    if (rest && !moved && c.note.empty()) {
+      // q̇ = ε Δq/|Δq| with ½ ε² (the scale of M) ≈ 10⁻²⁰ T at the end: ε = 10⁻¹⁰ × the end's rates
+      // (the end's values as the solution has them, given ones included)
+      double d2 = 0, v2 = 0;
+      for (std::size_t i = 0; i < m.coords.size(); ++i) {
+        const double d = end.q[i] - start.q[i];
+        if (std::isfinite(d)) d2 += d * d;
+        if (std::isfinite(end.qd[i])) v2 = std::max(v2, std::fabs(end.qd[i]));
+      }
+      if (!(d2 > 0) || !(v2 > 0)) break;
+      const double eps = 1e-10 * v2 / std::sqrt(d2);
+      std::string how;
+      for (std::size_t i = 0; i < m.coords.size(); ++i) {
+        const double d = end.q[i] - start.q[i];
+        start.qd[i] = std::isfinite(d) ? eps * d : 0;
+        if (start.qd[i] != 0) how += (how.empty() ? "" : ", ") + m.coords[i].name + "_dot = " + num(start.qd[i]);
+      }
+      c.note = "nudged: released at rest on an equilibrium, started with " + how + " toward state '" + m.states[static_cast<std::size_t>(leg.to)].name + "'";
+      longer.until = leg.start.t + 10 * (leg.stop.until - leg.start.t);
+    } else {
+      longer.until = leg.start.t + 10 * (longer.until - leg.start.t);
+      c.note = (c.note.empty() ? "" : c.note + "; ") + "run for " + num(longer.until - leg.start.t) + " s";
+    }
+    c.run = sim.run(start, longer);
+  }
   const Sample& e = c.run.end;
   c.ok = true;
   for (std::size_t i = 0; i < m.coords.size(); ++i) {
@@ -239,6 +288,11 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
   }
   bool any = false;
   for (std::size_t i = 0; i < m.coords.size(); ++i) any = any || !std::isnan(leg.expect.q[i]) || !std::isnan(leg.expect.qd[i]);
+  if (leg.stop.when && !c.run.stopped) {
+    c.worst = std::numeric_limits<double>::infinity();
+    c.worst_what = "the simulation does not reach state '" + m.states[static_cast<std::size_t>(leg.to)].name + "' (" + leg.target +
+                   ") by t = " + num(c.run.end.t) + " s";
+  }
   c.ok = any && c.worst <= tolerance;
   if (!any) c.worst_what = "no solved value at state '" + m.states[leg.to].name + "' to compare";
   return c;

@@ -119,16 +119,16 @@ private:
 };
 
 std::unique_ptr<Stepper> make_stepper(Simulator::Impl& p) {
-  const double tol = p.o.tol;
+  const double tol = p.o.tol, atol = p.o.atol < 0 ? tol : p.o.atol;
   switch (p.o.method) {
     case Method::Dopri5:
-      return std::make_unique<Controlled<decltype(odeint::make_controlled(tol, tol, odeint::runge_kutta_dopri5<state_type>()))>>(
-          odeint::make_controlled(tol, tol, odeint::runge_kutta_dopri5<state_type>()));
+      return std::make_unique<Controlled<decltype(odeint::make_controlled(atol, tol, odeint::runge_kutta_dopri5<state_type>()))>>(
+          odeint::make_controlled(atol, tol, odeint::runge_kutta_dopri5<state_type>()));
     case Method::Rkf78:
-      return std::make_unique<Controlled<decltype(odeint::make_controlled(tol, tol, odeint::runge_kutta_fehlberg78<state_type>()))>>(
-          odeint::make_controlled(tol, tol, odeint::runge_kutta_fehlberg78<state_type>()));
+      return std::make_unique<Controlled<decltype(odeint::make_controlled(atol, tol, odeint::runge_kutta_fehlberg78<state_type>()))>>(
+          odeint::make_controlled(atol, tol, odeint::runge_kutta_fehlberg78<state_type>()));
     case Method::BulirschStoer:
-      return std::make_unique<Controlled<odeint::bulirsch_stoer<state_type>>>(odeint::bulirsch_stoer<state_type>(tol, tol));
+      return std::make_unique<Controlled<odeint::bulirsch_stoer<state_type>>>(odeint::bulirsch_stoer<state_type>(atol, tol));
     case Method::Rk4: return std::make_unique<Rk4>();
     case Method::Symplectic: return std::make_unique<Symplectic>(p);
   }

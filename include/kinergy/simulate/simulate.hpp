@@ -40,6 +40,7 @@ private:
 struct Options {
   Method method = Method::Dopri5;
   double tol = 1e-10;        ///< absolute and relative tolerance of the adaptive methods
+  double atol = -1;          ///< the absolute one apart (< 0: tol): a motion's own size times tol
   double step = 0;           ///< fixed step of symplectic and rk4 (0: span/10⁴)
   bool native = true;        ///< right-hand side as machine code (else the tape, same doubles)
   bool record = true;        ///< keep samples (every accepted step, or every `sample_dt`)

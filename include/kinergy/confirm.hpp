@@ -1,0 +1,25 @@
+/// @file confirm.hpp  Every answer confirmed a second way before it is printed: each analysis of
+/// a solved scene run as a simulation of the same scene (simulate/check.hpp) and compared with the
+/// closed form; where no simulation stands for it (a state placed by a parameter without a value,
+/// an effect switched inside it, a scene the simulator cannot run), the equations' residuals at
+/// the chosen solution at 50 digits. `solve`, `verify`, `derive`, batch and the Python module
+/// confirm by default; `--no-confirm` (confirm=False) skips it.
+#pragma once
+#include "kinergy/problem.hpp"
+
+namespace kinergy {
+
+/// Relative agreement a simulation must reach with the closed form (integrated at 1e-10).
+constexpr double kConfirmSimulation = 1e-8;
+/// A difference that stays above kConfirmSimulation when integrated at 1e-13 is still accepted up
+/// to this: what doubles can tell of a tiny rate among large positions (near a turning point, a
+/// nearly balanced Atwood machine); a wrong model or a wrong root differs by far more.
+constexpr double kConfirmFloor = 1e-6;
+/// Relative size a residual may have at the solution (numeric roots are refined to 40 digits).
+constexpr double kConfirmResidual = 1e-25;
+
+/// Confirm every analysis of `s`, in order (fills s.confirmed).
+/// @throws SceneError at the analysis whose second way disagrees, showing both numbers.
+void confirm(Solution& s);
+
+}  // namespace kinergy

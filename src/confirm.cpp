@@ -1,0 +1,142 @@
+// Every answer confirmed a second way before it is printed (see confirm.hpp).
+#include "kinergy/confirm.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/simulate/check.hpp"
+
+namespace kinergy {
+
+using namespace GiNaC;
+
+namespace {
+
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(3);
+  os << v;
+  return os.str();
+}
+
+/// The largest relative residual of the scene's equations at the chosen solution, at 50 digits:
+/// |lhs − rhs| / (|lhs| + |rhs|); its equation's label in `which`. Equations whose value cannot be
+/// had there (a parameter without a value) are left out; nothing when none is left.
+std::optional<double> residuals(const Solution& s, std::string& which) {
+  const exmap given = s.model.given_values(), env = s.model.numeric_environment();
+  std::optional<double> worst;
+  for (auto& e : s.equations) {
+    std::optional<numeric> r, scale;
+    try {
+      const ex lhs = e.lhs.subs(given).subs(s.branch.sol).subs(given), rhs = e.rhs.subs(given).subs(s.branch.sol).subs(given);
+      r = numerics::evaluate(lhs - rhs, env, 50);
+      // against the size of the terms (a sum of terms that cancel exactly is 0 of its terms' size)
+      auto terms = [](const ex& x) {
+        if (!is_a<add>(x)) return ex(abs(x));
+        ex sum = 0;
+        for (std::size_t i = 0; i < x.nops(); ++i) sum += abs(x.op(i));
+        return sum;
+      };
+      scale = numerics::evaluate(terms(lhs) + terms(rhs), env, 50);
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (!r || !scale || !r->is_real()) continue;
+    const double rel = scale->is_zero() ? abs(*r).to_double() : (abs(*r) / *scale).to_double();
+    if (!worst || rel > *worst) {
+      worst = rel;
+      which = e.label;
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+void confirm(Solution& s) {
+  s.confirmed.clear();
+  const model::Model& m = s.model;
+  simulate::Options o;
+  o.tol = 1e-10;
+  o.native = false;  // the tape: no compiler run for a confirmation
+  o.record = true;  // the rates' scale is the largest seen on the way (a rest at both ends)
+  o.max_steps = 50'000;  // a stiff scene is confirmed by its residuals, not by minutes of simulation
+  simulate::Options fine = o;  // a difference at 1e-10 is looked at again at 1e-13
+  fine.tol = 1e-13;
+  fine.max_steps = 200'000;
+  std::optional<std::optional<double>> residual;  // taken once, when some analysis needs it
+  std::string residual_of;
+  for (const simulate::Leg& leg : simulate::legs(s)) {
+    const model::Analysis& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
+    const std::string between = "the " + a.kind + " analysis from state '" + m.states[static_cast<std::size_t>(a.from)].name + "' to '" +
+                                m.states[static_cast<std::size_t>(a.to)].name + "'";
+    Confirmed c;
+    c.analysis = leg.analysis;
+    if (!leg.why_not.empty()) {
+      c.note = "not simulated: " + leg.why_not;
+    } else {
+      std::optional<simulate::LegCheck> run;
+      try {
+        run = simulate::check_leg(s, leg, o, kConfirmSimulation);
+        // a difference may be the integration's (a motion of 1e-11 rad/s among rates of 1): once
+        // more at a tighter tolerance, where the closed form's right value is met more closely;
+        // where doubles cannot tell more (a rate of 6e-6 rad/s from positions of 1.57 rad, near a
+        // turning point) the difference stays put at that level: accepted up to kConfirmFloor,
+        // and said so
+        if (!run->ok && std::isfinite(run->worst)) {
+          try {
+            auto again = simulate::check_leg(s, leg, fine, kConfirmSimulation);
+            if (again.ok || again.worst < run->worst) run = again;
+          } catch (const std::exception&) {
+            // more steps than allowed at 1e-13: the first run stands
+          }
+          if (!run->ok && run->worst <= kConfirmFloor && run->worst_what.rfind("the simulation does not reach", 0) != 0) {
+            run->ok = true;
+            run->note = (run->note.empty() ? "" : run->note + "; ") + "integrated at 1e-13, the difference stays at the double's limit for this motion";
+          }
+        }
+      } catch (const std::exception& err) {
+        // the simulator cannot run this scene (a drive from rest, a singular mass matrix, a stiff
+        // spring beyond the steps allowed): no second opinion from it, which is not a disagreement
+        c.note = std::string("not simulated: ") + err.what();
+      }
+      if (run && run->ok) {
+        c.by = "simulation";
+        c.difference = run->worst;
+        c.tolerance = kConfirmSimulation;
+        c.note = run->note;
+      } else if (run && run->worst_what.rfind("no solved value", 0) == 0) {
+        c.note = "not simulated: " + run->worst_what;
+      } else if (run && run->worst_what.rfind("the simulation does not reach", 0) == 0) {
+        // the scene's effects alone do not take the motion there (balls drawn in by a mechanism
+        // the scene leaves out, a conservation claim): no value to compare, not a disagreement
+        c.note = "not confirmed by simulation: " + run->worst_what + ", with the effects the scene lists";
+      } else if (run) {
+        // a disagreement is an error that shows both numbers, never an answer
+        throw SceneError(a.pos, between + " is not confirmed by a simulation of the same scene: " + run->worst_what +
+                                    " (relative difference " + num(run->worst) + ", more than " + num(kConfirmSimulation) + ")" +
+                                    (run->note.empty() ? "" : "; " + run->note),
+                         "check the scene's states and effects against the problem (the simulation runs exactly what the scene says); "
+                         "'--no-confirm' prints the closed form without this check");
+      }
+    }
+    if (c.by.empty()) {
+      if (!residual) residual = residuals(s, residual_of);
+      if (*residual && **residual > kConfirmResidual)
+        throw SceneError(a.pos, between + ": the equations do not hold at the solution found: the " + residual_of + " is off by " +
+                                    num(**residual) + " of its size at 50 digits",
+                         "report the scene: the solution is not confirmed ('--no-confirm' prints it anyway)");
+      if (*residual) {
+        c.by = "residuals";
+        c.difference = **residual;
+        c.tolerance = kConfirmResidual;
+      }
+    }
+    s.confirmed.push_back(c);
+  }
+}
+
+}  // namespace kinergy
