@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/confirm.hpp"
 #include "kinergy/common/markup.hpp"
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/derive.hpp"
@@ -193,7 +194,11 @@ struct PySolution {
 
 PyScene load(const std::string& path) { return {scene::load_file(path)}; }
 PyScene loads(const std::string& text, const std::string& name) { return {scene::load_string(text, name)}; }
-PySolution solve_scene_def(const PyScene& sc) { return {std::make_shared<const Solution>(solve_scene(sc.def)), sc.def}; }
+PySolution solve_scene_def(const PyScene& sc, bool confirmed) {
+  Solution s = solve_scene(sc.def);
+  if (confirmed) confirm(s);  // each analysis a second way: a disagreement raises SceneError
+  return {std::make_shared<const Solution>(std::move(s)), sc.def};
+}
 
 }  // namespace
 
@@ -256,7 +261,9 @@ PYBIND11_MODULE(kinergy, m) {
       .def_property_readonly("title", [](const PyScene& s) { return s.def.title; })
       .def_property_readonly("parameters", &PyScene::parameters, "name -> value as written")
       .def("set", &PyScene::set, py::arg("name"), py::arg("value"), "give a parameter a value as a scene writes it ('2 kg')")
-      .def("solve", &solve_scene_def, "solve it: each result in closed form and its value")
+      .def("solve", &solve_scene_def, py::arg("confirm") = true,
+           "solve it: each result in closed form and its value, each analysis confirmed a second way (a simulation of the same "
+           "scene, else the equations' residuals at 50 digits) unless confirm=False")
       .def("draw", &PyScene::draw, py::arg("state") = py::none(), "the scene at a state (the first by default) as SVG")
       .def("_repr_svg_", [](const PyScene& s) -> py::object {
         try {

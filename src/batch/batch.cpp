@@ -1,6 +1,8 @@
 // Many scenes in one process: JSON Lines of requests in, JSON Lines of results out.
 #include "kinergy/batch/batch.hpp"
 
+#include "kinergy/confirm.hpp"
+
 #include <istream>
 #include <ostream>
 #include <regex>
@@ -61,8 +63,8 @@ Outcome run_request(const std::string& request, std::size_t number) {
     if (!q.IsMap()) throw BadRequest{"the request is not a JSON object", "write one JSON object a line: {\"scene\": \"FILE.yaml\"}"};
     for (const auto& kv : q) {
       const std::string key = kv.first.as<std::string>();
-      if (key != "scene" && key != "yaml" && key != "id" && key != "set" && key != "produce" && key != "digits")
-        throw BadRequest{"unknown key \"" + key + "\"", "use scene or yaml, and id, set, produce, digits"};
+      if (key != "scene" && key != "yaml" && key != "id" && key != "set" && key != "produce" && key != "digits" && key != "confirm")
+        throw BadRequest{"unknown key \"" + key + "\"", "use scene or yaml, and id, set, produce, digits, confirm"};
     }
     if (q["id"]) {
       if (!q["id"].IsScalar()) throw BadRequest{"\"id\" is not a string or a number", "write \"id\": \"a name\""};
@@ -119,7 +121,15 @@ Outcome run_request(const std::string& request, std::size_t number) {
       o.digits = digits;
       o.guaranteed = true;
     }
-    const Solution s = solve_scene(def);
+    // each analysis confirmed a second way unless the request says "confirm": false
+    bool confirmed = true;
+    if (const YAML::Node c = q["confirm"]) {
+      const std::string v = c.IsScalar() ? c.as<std::string>() : "";
+      if (v != "true" && v != "false") throw BadRequest{"\"confirm\" is not true or false", "write \"confirm\": false"};
+      confirmed = v == "true";
+    }
+    Solution s = solve_scene(def);
+    if (confirmed) confirm(s);
     std::ostringstream out;
     out << head() << ", \"ok\": true";
     std::vector<verify::Check> checks;

@@ -86,6 +86,14 @@ private:
         ordered.push_back({{group, expr::key(x).text}, x});
       }
       std::stable_sort(ordered.begin(), ordered.end(), [](auto& a, auto& b) { return a.first < b.first; });
+      // a factor −1 is a negation, exact: GiNaC writes a sum that is a factor with the sign its
+      // term order asks for, −(b − a) in one run and (a − b) in the next, and the two must round,
+      // and be bounded, alike
+      bool negate = false;
+      if (!sum && ordered.size() > 1 && is_a<numeric>(ordered.back().second) && ordered.back().second.is_equal(-1)) {
+        ordered.pop_back();
+        negate = true;
+      }
       std::int32_t acc = node(ordered[0].second);
       for (std::size_t i = 1; i < ordered.size(); ++i) {
         const ex& x = ordered[i].second;
@@ -93,7 +101,7 @@ private:
         if (!sum && is_a<power>(x) && x.op(1).is_equal(-1)) acc = emit({Op::Div, acc, node(x.op(0)), 0});
         else acc = emit({sum ? Op::Add : Op::Mul, acc, node(x), 0});
       }
-      return acc;
+      return negate ? emit({Op::Neg, acc, -1, 0}) : acc;
     }
     if (is_a<power>(e)) {
       const ex& b = e.op(0);

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include "../support/helpers.hpp"
+#include "kinergy/confirm.hpp"
+#include "kinergy/simulate/check.hpp"
 #include "../support/scene_errors.hpp"
 
 namespace {
@@ -103,4 +105,85 @@ TEST_CASE("finding 6: a state the motion cannot reach is refused", "[silent]") {
   kt_errors::check_form(*e, "bad.yaml");
   // released just past 90 deg it does reach 153 deg
   expect_ok(edit(t, "theta1: 45 deg", "theta1: 91 deg"));
+}
+
+namespace {
+
+/// The one analysis of a silent scene run as a simulation, as `simulate --check` runs it.
+kinergy::simulate::LegCheck check_first(const std::string& name) {
+  auto s = solve(name);
+  auto legs = kinergy::simulate::legs(s);
+  REQUIRE(legs.size() == 1);
+  INFO(legs[0].why_not);
+  REQUIRE(legs[0].why_not.empty());
+  kinergy::simulate::Options o;
+  o.native = false;
+  return kinergy::simulate::check_leg(s, legs[0], o, 1e-8);
+}
+
+}  // namespace
+
+TEST_CASE("finding 7: simulate --check agrees with the right closed form, or says why it cannot", "[silent][simulate]") {
+  // (a) released at rest on an unstable equilibrium: nudged toward state 2, and said so
+  {
+    auto c = check_first("door_torsion_unstable.yaml");
+    INFO(c.worst_what);
+    CHECK(c.ok);
+    CHECK_THAT(c.note, Catch::Contains("nudged: released at rest on an equilibrium"));
+  }
+  // (c) a swing of 1e-6 rad: the tolerance follows the motion's size (it was off by 4.8e-6)
+  CHECK(check_first("tiny_swing.yaml").ok);
+  // (d) a flywheel braked to rest over 2507.69 rad: run until it stops (it stopped at 100 s)
+  {
+    auto c = check_first("braking_friction_long.yaml");
+    INFO(c.worst_what);
+    CHECK(c.ok);
+    CHECK(c.run.end.q[0] == Approx(2507.69232092248).epsilon(1e-9));
+  }
+  // (e) the cam couple's work integral with other numbers: a value to compare (there was none)
+  CHECK(check_first("wheel_cam_couple_variant.yaml").ok);
+  // (b) a least value: no one motion to simulate, confirmed by the residuals instead
+  auto s = solve("wheel_step_least.yaml");
+  kinergy::confirm(s);
+  REQUIRE(s.confirmed.size() == 1);
+  CHECK(s.confirmed[0].by == "residuals");
+  CHECK_THAT(s.confirmed[0].note, Catch::Contains("not simulated"));
+  CHECK(value(s, "v0_min") == Approx(1.14367827643966).epsilon(1e-13));
+}
+
+TEST_CASE("confirmation: every analysis a second way, and a disagreement is an error showing both numbers", "[silent][confirm]") {
+  auto s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/impact/pendulum_strikes_block.yaml");
+  kinergy::confirm(s);
+  REQUIRE(s.confirmed.size() == s.model.analyses.size());
+  for (auto& c : s.confirmed) CHECK(c.by == "simulation");
+  // a ball dropped from h onto a floor (e = 0.5) and asked for its speed rising through h/2:
+  // energy alone says sqrt(g h) up, ignoring the bounce; the motion meets h/2 falling, at -sqrt(g h)
+  // (and after the bounce never rises above h/4)
+  const std::string ball = R"Y(title: Ball rising through half its drop height
+parameters: {m: 0.2 kg, h: 2 m, g: 9.81 m/s^2, e: 0.5}
+coordinates: {y: m}
+bodies:
+  ball: {mass: m, inertia: particle, position: [0, y]}
+effects:
+  gravity: {g: g}
+  floor: {contact: [ground, ball], normal: [0, 1], e: e}
+states:
+  1: {y: h, y_dot: 0}
+  2: {y: h/2}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  v2: {value: y_dot@2, root: positive, unit: m/s}
+)Y";
+  auto b = kinergy::solve_scene(kinergy::scene::load_string(ball, "bad.yaml"));
+  CHECK(value(b, "v2") == Approx(std::sqrt(9.81 * 2)).epsilon(1e-14));  // what energy alone says
+  try {
+    kinergy::confirm(b);
+    FAIL("a disagreement with the simulation was not reported");
+  } catch (const kinergy::SceneError& e) {
+    CHECK_THAT(e.problem(), Catch::Contains("is not confirmed by a simulation of the same scene: y_dot@2: simulated -4.4294469"));
+    CHECK_THAT(e.problem(), Catch::Contains("closed form 4.4294469"));
+    CHECK(e.pos().line == 13);
+    kt_errors::check_form(e, "bad.yaml");
+  }
 }

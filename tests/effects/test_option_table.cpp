@@ -1,0 +1,234 @@
+// Honour or refuse (issue 25): every option of every effect kind, in every kind of analysis it can
+// meet, is either honoured — the scene solves and each analysis is confirmed by a simulation of
+// the same scene, so the principle and the simulator read the option alike — or refused at its
+// line with a clear message. The table below says which, row by row; a kind or an option the
+// table does not have fails the completeness check, so a new one cannot be half-honoured.
+// The contexts: `energy` (a block on a line coupled to a wheel, one degree of freedom, from
+// state 1 to 2 and 2 to 3), `momentum` (the block alone over a duration), `angular` (the wheel
+// alone about its fixed centre over a duration), `impact` (the block striking a fixed stop), and
+// `across` (energy from 1 to 3 with the effect switched at 2).
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <regex>
+#include <set>
+
+#include "../support/helpers.hpp"
+#include "../support/scene_errors.hpp"
+#include "kinergy/confirm.hpp"
+#include "kinergy/model/effect.hpp"
+
+namespace {
+
+struct Row {
+  std::string kind, option;  ///< option: a key of the kind, or "" for the kind with its required keys alone
+  std::string context;       ///< energy, momentum, angular, impact, across
+  std::string effect;        ///< the effect's entry under `effects:` (named `e`)
+  bool honoured;             ///< else refused
+  std::string phrase;        ///< refused: part of the message; honoured: "" (or "residuals": confirmed by them, no simulation)
+};
+
+// clang-format off
+const std::vector<Row> kTable = {
+  // gravity: along x (direction), so that it works on the block's line
+  {"gravity", "", "energy", "e: {gravity: g}", true, ""},
+  {"gravity", "g", "momentum", "e: {gravity: g, direction: [1, 0]}", true, ""},
+  {"gravity", "direction", "energy", "e: {gravity: g, direction: [1, 0]}", true, ""},
+  {"gravity", "direction", "angular", "e: {gravity: g, direction: [1, 0]}", true, ""},
+  {"gravity", "direction", "impact", "e: {gravity: g, direction: [1, 0]}", true, ""},
+  // spring from the block to the fixed point A
+  {"spring", "k", "energy", "e: {spring: [block, A], k: k, free_length: 0.5 m}", true, ""},
+  {"spring", "free_length", "energy", "e: {spring: [block, A], k: k, free_length: 1.5 m}", true, ""},
+  {"spring", "acts", "energy", "e: {spring: [block, A], k: k, free_length: 0.5 m, acts: tension}", true, ""},
+  {"spring", "k", "momentum", "e: {spring: [block, A], k: k, free_length: 0.5 m}", false, "no closed-form impulse"},
+  {"spring", "k", "impact", "e: {spring: [block, A], k: k, free_length: 0.5 m}", true, ""},
+  {"torsion_spring", "k", "energy", "e: {torsion_spring: wheel, k: kt}", true, ""},
+  {"torsion_spring", "free_angle", "energy", "e: {torsion_spring: wheel, k: kt, free_angle: 0.3}", true, ""},
+  {"torsion_spring", "k", "angular", "e: {torsion_spring: wheel, k: kt}", false, "no closed-form impulse"},
+  {"damper", "c", "energy", "e: {damper: [block, A], c: c}", false, "depends on the speeds"},
+  {"damper", "c", "momentum", "e: {damper: [block, A], c: c}", false, "no closed-form impulse"},
+  {"torsion_damper", "c", "energy", "e: {torsion_damper: wheel, c: ct}", false, "depends on the speeds"},
+  {"torsion_damper", "c", "angular", "e: {torsion_damper: wheel, c: ct}", false, "no closed-form impulse"},
+  {"couple", "M", "energy", "e: {couple: wheel, M: M0}", true, ""},
+  {"couple", "M", "angular", "e: {couple: wheel, M: M0}", true, ""},
+  {"couple", "M", "impact", "e: {couple: wheel, M: M0}", true, ""},
+  {"force", "F", "energy", "e: {force: block, F: [F0, 0]}", true, ""},
+  {"force", "F", "momentum", "e: {force: block, F: [F0, 0]}", true, ""},
+  {"force", "at", "energy", "e: {force: wheel, at: [r, 2], F: [0, -F0]}", true, ""},
+  {"force", "at", "angular", "e: {force: wheel, at: [r, 2], F: [0, -F0]}", true, ""},
+  {"friction", "mu", "energy", "e: {friction: block, mu: mu, normal: m*g}", true, ""},
+  {"friction", "normal", "momentum", "e: {friction: block, mu: mu, normal: m*g}", true, ""},
+  {"friction", "at", "momentum", "e: {friction: block, at: [x, 0], mu: mu, normal: m*g}", true, ""},
+  {"friction", "direction", "energy", "e: {friction: block, mu: mu, normal: m*g, direction: negative}", false, "declares 'direction: negative'"},
+  {"friction", "direction", "momentum", "e: {friction: block, mu: mu, normal: m*g, direction: negative}", false, "declares 'direction: negative'"},
+  {"friction", "against", "energy", "e: {friction: block, mu: mu, normal: m*g, against: wheel}", true, ""},
+  {"friction_couple", "M", "energy", "e: {friction_couple: wheel, M: M0/10}", true, ""},
+  {"friction_couple", "M", "angular", "e: {friction_couple: wheel, M: M0/10}", true, ""},
+  {"friction_couple", "direction", "angular", "e: {friction_couple: wheel, M: M0/10, direction: negative}", false, "declares 'direction: negative'"},
+  {"power", "P", "energy", "e: {power: wheel, P: P0}", true, ""},
+  {"power", "P", "angular", "e: {power: wheel, P: P0}", false, "no closed-form impulse"},
+  {"pin", "", "energy", "e: {pin: [C, wheel]}", true, ""},
+  {"pin", "", "angular", "e: {pin: [C, wheel]}", true, ""},
+  {"contact", "normal", "impact", "e: {contact: [W, block], normal: [1, 0], e: 0.5}", true, ""},
+  {"contact", "e", "impact", "e: {contact: [W, block], normal: [1, 0], e: 1}", true, ""},
+  {"contact", "tangential", "impact", "e: {contact: [W, block], normal: [1, 0], e: 0.5, tangential: stick}", true, ""},
+  {"contact", "e", "energy", "e: {contact: [W, block], normal: [1, 0], e: 0.5}", true, ""},
+  {"impulse", "J", "impact", "e: {impulse: block, J: [-J0, 0]}", true, ""},
+  {"cord_pull", "P", "energy", "e: {cord_pull: [block, A], P: F0}", true, ""},
+  {"cord_pull", "P", "momentum", "e: {cord_pull: [block, A], P: F0}", false, "no closed-form impulse"},
+  {"constraint", "between", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, 2 - r]]}", true, ""},
+  {"constraint", "at", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, 2 - r]]}", true, ""},
+  {"track", "line", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}}", true, ""},
+  {"track", "circle", "energy", "e: {track: block, circle: {centre: [0, 0], radius: 1 m}}", false, "is off track"},
+  {"track", "offset", "energy", "e: {track: block, line: {through: [0, -0.1], along: [1, 0]}, offset: 0.1 m}", true, ""},
+  {"track", "line", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}}", true, ""},
+  // on and off, every kind's: switched where the analysis does not reach it, the effect is not
+  // there (the simulation runs without it too); switched inside an energy analysis, its work is
+  // taken over its part (no one simulation stands for that: residuals); inside a momentum
+  // analysis, refused
+  {"gravity", "off", "energy", "e: {gravity: g, direction: [1, 0], off: 2}", true, ""},
+  {"gravity", "on", "energy", "e: {gravity: g, direction: [1, 0], on: 2}", true, ""},
+  {"gravity", "off", "across", "e: {gravity: g, direction: [1, 0], off: 2}", true, "residuals"},
+  {"spring", "off", "energy", "e: {spring: [block, A], k: k, free_length: 0.5 m, off: 2}", true, ""},
+  {"spring", "on", "across", "e: {spring: [block, A], k: k, free_length: 0.5 m, on: 2}", true, "residuals"},
+  {"torsion_spring", "off", "energy", "e: {torsion_spring: wheel, k: kt, off: 2}", true, ""},
+  {"damper", "off", "energy", "e: {damper: [block, A], c: c, off: 1}", true, ""},
+  {"torsion_damper", "on", "energy", "e: {torsion_damper: wheel, c: ct, on: 3}", true, ""},
+  {"couple", "off", "energy", "e: {couple: wheel, M: M0, off: 2}", true, ""},
+  {"couple", "on", "across", "e: {couple: wheel, M: M0, on: 2}", true, "residuals"},
+  {"couple", "on", "angular", "e: {couple: wheel, M: M0, on: 2}", false, "switched on at state '2', inside this angular_momentum analysis"},
+  {"force", "off", "momentum", "e: {force: block, F: [F0, 0], off: 2}", false, "switched off at state '2', inside this momentum analysis"},
+  {"force", "on", "energy", "e: {force: block, F: [F0, 0], on: 2}", true, ""},
+  {"friction", "on", "energy", "e: {friction: block, mu: mu, normal: m*g, on: 2}", true, ""},
+  {"friction", "off", "across", "e: {friction: block, mu: mu, normal: m*g, off: 2}", true, "residuals"},
+  {"friction_couple", "on", "energy", "e: {friction_couple: wheel, M: M0/10, on: 2}", true, ""},
+  {"power", "off", "energy", "e: {power: wheel, P: P0, off: 2}", true, ""},
+  {"pin", "off", "energy", "e: {pin: [C, wheel], off: 2}", true, ""},
+  {"contact", "off", "impact", "e: {contact: [W, block], normal: [1, 0], e: 0.5, off: before}", false, "needs a contact"},
+  {"impulse", "on", "impact", "e: {impulse: block, J: [-J0, 0], on: before}", true, ""},
+  {"cord_pull", "off", "energy", "e: {cord_pull: [block, A], P: F0, off: 2}", true, ""},
+  {"constraint", "off", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, 2 - r]], off: 2}", false, "is not determined"},
+  {"constraint", "off", "across", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, 2 - r]], off: 2}", false, "switched off at state '2', inside this energy analysis"},
+  {"track", "off", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, off: 2}", true, ""},
+};
+// clang-format on
+
+const char* kHead = R"Y(title: option table
+parameters: {m: 2 kg, r: 0.5 m, k: 40 N/m, kt: 2 N*m, g: 9.81 m/s^2, d: 0.5 m, t2: 0.2 s, M0: 3 N*m, F0: 5 N, mu: 0.3,
+             c: 2 N*s/m, ct: 0.1 N*m*s, P0: 4 W, J0: 3 N*s}
+points: {O: [0, 0], A: [-1, 0], C: [0, 2], W: [0, 0]}
+)Y";
+
+/// The scene of a row: its context's bodies, constraints, states and analyses, with the row's effect.
+std::string scene_of(const Row& r) {
+  std::string s = kHead;
+  const bool constraint_row = r.kind == "constraint";
+  auto effect = "effects:\n  " + r.effect + "\n";
+  if (r.context == "energy" || r.context == "across") {
+    s += "coordinates: {x: m, phi: rad}\n"
+         "bodies:\n"
+         "  block: {mass: m, inertia: particle, position: [x, 0]}\n"
+         "  wheel: {mass: m, inertia: {disk: r}, position: [0, 2], angle: phi}\n";
+    if (!constraint_row) s += "constraints:\n  - x - r*phi = 0\n";
+    s += effect;
+    s += "states:\n  1: {t: 0, x: 0, x_dot: 2}\n  2: {x: d}\n  3: {x: 2*d}\n";
+    if (r.context == "energy") s += "analyses:\n  - energy: {from: 1, to: 2}\n  - energy: {from: 2, to: 3}\n";
+    else s += "analyses:\n  - energy: {from: 1, to: 3}\n";
+    s += "find:\n  v3: {value: x_dot@3, root: positive, unit: m/s}\n";
+  } else if (r.context == "momentum") {
+    s += "coordinates: {x: m}\nbodies:\n  block: {mass: m, inertia: particle, position: [x, 0]}\n";
+    s += effect;
+    s += "states:\n  1: {t: 0, x: 0, x_dot: 2}\n  2: {t: t2}\n  3: {t: 2*t2}\n";
+    s += "analyses:\n  - momentum: {from: 1, to: 3, along: x}\n";
+    s += "find:\n  v3: {value: x_dot@3, unit: m/s}\n";
+  } else if (r.context == "angular") {
+    s += "coordinates: {phi: rad}\nbodies:\n  wheel: {mass: m, inertia: {disk: r}, position: [0, 2], angle: phi}\n";
+    s += effect;
+    s += "states:\n  1: {t: 0, phi: 0, phi_dot: 3}\n  2: {t: t2}\n  3: {t: 2*t2}\n";
+    s += "analyses:\n  - angular_momentum: {from: 1, to: 3, about: C}\n";
+    s += "find:\n  w3: {value: phi_dot@3, unit: rad/s}\n";
+  } else {  // impact: the block strikes the stop W (or is struck by a given impulse)
+    s += "coordinates: {x: m, phi: rad}\n"
+         "bodies:\n"
+         "  block: {mass: m, inertia: particle, position: [x, 0]}\n"
+         "  wheel: {mass: m, inertia: {disk: r}, position: [0, 2], angle: phi}\n";
+    s += effect;
+    const bool contact = r.kind == "contact";
+    if (!contact && r.kind != "impulse") s += "  stop: {contact: [W, block], normal: [1, 0], e: 0.5}\n";
+    s += "states:\n  before: {t: 0, x: 0, x_dot: -2, phi: 0, phi_dot: 3}\n  after: {}\n";
+    s += std::string("analyses:\n  - impact: {from: before, to: after") + (contact ? ", contact: e" : r.kind == "impulse" ? "" : ", contact: stop") + "}\n";
+    s += "find:\n  v: {value: x_dot@after, unit: m/s}\n";
+  }
+  return s;
+}
+
+/// The keys a kind accepts, as its own error for an unknown key lists them.
+std::set<std::string> keys_of(const std::string& kind) {
+  const std::string t = std::string(kHead) + "coordinates: {x: m}\nbodies:\n  block: {mass: m, inertia: particle, position: [x, 0]}\n"
+                        "effects:\n  e: {" + kind + ": block, zzqqzz: 1}\n";
+  auto e = kt_errors::error_of(t);
+  REQUIRE(e.has_value());
+  std::smatch m;
+  const std::string fix = e->fix();
+  std::set<std::string> out;
+  if (!std::regex_search(fix, m, std::regex("^use: (.*)$"))) return out;
+  std::string list = m[1];
+  std::regex item("[a-z_]+");
+  for (auto it = std::sregex_iterator(list.begin(), list.end(), item); it != std::sregex_iterator(); ++it)
+    if (it->str() != kind) out.insert(it->str());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("option table: every option of every effect kind is in the table, with on and off", "[options]") {
+  std::map<std::string, std::set<std::string>> covered;
+  for (auto& r : kTable) covered[r.kind].insert(r.option);
+  for (auto& k : kinergy::model::effect_kinds()) {
+    INFO("effect kind " << k.name);
+    REQUIRE(covered.count(k.name));
+    auto keys = keys_of(k.name);
+    keys.insert("on");
+    keys.insert("off");
+    for (auto& key : keys) {
+      INFO("option " << key);
+      // a key the kind requires may stand for itself in the row of the kind alone ("")
+      CHECK((covered[k.name].count(key) || (covered[k.name].count("") && key != "on" && key != "off" && covered[k.name].size() > 0)));
+    }
+    // on or off at least once for each kind
+    CHECK((covered[k.name].count("on") || covered[k.name].count("off")));
+  }
+}
+
+TEST_CASE("option table: each row honoured (solved, confirmed by simulation) or refused at its line", "[options]") {
+  for (auto& r : kTable) {
+    const std::string text = scene_of(r);
+    INFO(r.kind << " / " << (r.option.empty() ? "(the kind)" : r.option) << " / " << r.context << "\n" << text);
+    std::optional<kinergy::Solution> s;
+    std::optional<kinergy::SceneError> err;
+    try {
+      s = kinergy::solve_scene(kinergy::scene::load_string(text, "bad.yaml"));
+      kinergy::confirm(*s);
+    } catch (const kinergy::SceneError& e) {
+      err = e;
+    }
+    if (r.honoured) {
+      INFO("error: " << (err ? err->what() : ""));
+      REQUIRE_FALSE(err.has_value());
+      REQUIRE(s->confirmed.size() == s->model.analyses.size());
+      for (auto& c : s->confirmed) {
+        INFO("confirmed by '" << c.by << "': " << c.note);
+        if (r.phrase == "residuals") CHECK(!c.by.empty());
+        else CHECK(c.by == "simulation");
+      }
+    } else {
+      REQUIRE(err.has_value());
+      INFO("error: " << err->what());
+      CHECK_THAT(err->problem(), Catch::Contains(r.phrase));
+      // at its line: the effect's, the analysis', or the option's own place
+      const int effect_line = kt_errors::at(text, r.effect).line, analysis_line = kt_errors::at(text, "analyses:").line + 1;
+      CHECK((err->pos().line == effect_line || err->pos().line == analysis_line));
+      kt_errors::check_form(*err, "bad.yaml");
+    }
+  }
+}
