@@ -68,8 +68,11 @@ struct Selector {
     return true;
   }
 
-  // continuity: a rate keeps the sign of the motion between the states of each analysis
-  bool continuous(const solve::Branch& b) const {
+  // continuity: a rate keeps the sign of the motion between the states of each analysis; with
+  // `rates_alone`, where the change of the coordinate is not known, the rate keeps its sign from
+  // one state to the other (a tie-breaker for values no result asks for: a motion that does not
+  // turn back between two times)
+  bool continuous(const solve::Branch& b, bool rates_alone = false) const {
     const exmap& g = given_;
     auto val = [&](const ex& s) -> std::optional<numeric> {
       try {
@@ -93,6 +96,7 @@ struct Selector {
         int sd = sgn(d), s1 = sgn(r1), s2 = sgn(r2);
         if (sd != 0 && s2 != 0 && sd != s2) return false;
         if (sd != 0 && s1 != 0 && sd != s1) return false;
+        if (rates_alone && !d && s1 != 0 && s2 != 0 && s1 != s2) return false;
       }
     return true;
   }
@@ -120,6 +124,12 @@ struct Selector {
       std::vector<solve::Branch> cont;
       for (auto& b : ok)
         if (continuous(b)) cont.push_back(b);
+      if (!cont.empty()) ok = cont;
+    }
+    if (ok.size() > 1) {
+      std::vector<solve::Branch> cont;
+      for (auto& b : ok)
+        if (continuous(b, true)) cont.push_back(b);
       if (!cont.empty()) ok = cont;
     }
     if (ok.size() > 1) {
@@ -345,6 +355,12 @@ private:
     const auto& a = m.analyses[ai];
     add_state(a.from);
     add_state(a.to);
+    // an effect switched inside it does its work up to (or from) its switching state: that state's
+    // positions are in the equation, and its constraints hold there
+    for (auto& e : m.effects)
+      if (e.activity(a) == model::Effect::Activity::Part)
+        for (int st : {e.on, e.off})
+          if (st > std::min(a.from, a.to) && st < std::max(a.from, a.to)) add_state(st);
     try {
       sol_.parts.push_back(a.type->equations(m, a, *know_, sol_));
     } catch (const SceneError&) {

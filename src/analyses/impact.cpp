@@ -32,7 +32,9 @@ public:
       if (!cs->is_list()) throw SceneError(cs->pos, "'contacts' must be a list", "write 'contacts: [hit1, hit2]'");
       for (auto& it : cs->items) names.push_back(&it);
     }
-    bool blows = std::any_of(m.effects.begin(), m.effects.end(), [](const model::Effect& e) { return e.blow() != nullptr; });
+    // a given impulse switched off (or not yet on) at this impact does not strike in it
+    bool blows = std::any_of(m.effects.begin(), m.effects.end(),
+                             [&](const model::Effect& e) { return e.blow() != nullptr && e.activity(a) != model::Effect::Activity::None; });
     if (names.empty() && !blows)
       throw SceneError(ad.pos, "an impact needs a contact or a given impulse",
                        "write 'impact: {from: before, to: after, contact: hit}', or add an effect '{impulse: body.P, J: [Jx, Jy]}'");
@@ -47,6 +49,11 @@ public:
                          near.empty() ? "define it under effects: 'hit: {contact: [A, B], normal: [nx, ny], e: e}'"
                                       : "did you mean '" + near + "'?");
       }
+      if (m.effects[ei].activity(a) == model::Effect::Activity::None)
+        throw SceneError(n->pos, "contact '" + n->scalar + "' is switched " + (m.effects[ei].off >= 0 && m.effects[ei].off <= a.from ? "off" : "on") +
+                                     " at state '" + m.states[m.effects[ei].off >= 0 && m.effects[ei].off <= a.from ? m.effects[ei].off : m.effects[ei].on].name +
+                                     "', so it does not act in the impact " + S1 + " -> " + S2,
+                         "name a contact that acts there, or move its 'on:'/'off:'");
       if (std::find(a.contacts.begin(), a.contacts.end(), ei) != a.contacts.end())
         throw SceneError(n->pos, "contact '" + n->scalar + "' is named twice in this impact", "name each contact once");
       a.contacts.push_back(ei);

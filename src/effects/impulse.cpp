@@ -12,10 +12,14 @@ public:
 
   const model::Blow* blow() const override { return &j; }
 
-  std::pair<ex, ex> impulse(const Model&, int, int) const override { return {j.Jx, j.Jy}; }
+  // (switched off, or not yet on, over the analysis: it does not strike there)
+  std::pair<ex, ex> impulse(const Model& m, int, int ai) const override {
+    if (activity(m.analyses[static_cast<std::size_t>(ai)]) == Activity::None) return {0, 0};
+    return {j.Jx, j.Jy};
+  }
 
-  std::pair<ex, ex> impact_impulse_on(const Model&, int body, int) const override {
-    if (j.at.body != body) return {0, 0};
+  std::pair<ex, ex> impact_impulse_on(const Model& m, int body, int ai) const override {
+    if (j.at.body != body || activity(m.analyses[static_cast<std::size_t>(ai)]) == Activity::None) return {0, 0};
     return {j.Jx, j.Jy};
   }
 

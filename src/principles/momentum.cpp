@@ -463,7 +463,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
     }
     for (auto& e : m.effects) {
       const model::Blow* g = e.blow();
-      if (!g) continue;
+      if (!g || e.activity(a) == Effect::Activity::None) continue;  // switched off: it does not strike
       auto [dx, dy] = m.position_derivative(g->at, q);
       rhs += before(dot(g->Jx, g->Jy, dx, dy));
     }
@@ -528,7 +528,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
   }
   for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
     const Effect& e = m.effects[ei];
-    if (const model::Blow* g = e.blow(); g && g->at.body >= 0) {
+    if (const model::Blow* g = e.blow(); g && g->at.body >= 0 && e.activity(a) != Effect::Activity::None) {
       Push push;
       push.unknown = true;
       push.body = g->at.body;
