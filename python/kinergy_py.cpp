@@ -244,6 +244,24 @@ PYBIND11_MODULE(kinergy, m) {
 
   py::class_<PySolution>(m, "Solution", "A solved scene")
       .def_property_readonly("results", &PySolution::results)
+      .def_property_readonly(
+          "confirmed",
+          [](const PySolution& s) {
+            // how each analysis was confirmed a second way: [{analysis, by, difference, note}]
+            py::list out;
+            for (auto& c : s.s->confirmed) {
+              const auto& a = s.s->model.analyses[static_cast<std::size_t>(c.analysis)];
+              py::dict d;
+              d["analysis"] = a.kind + " " + s.s->model.states[static_cast<std::size_t>(a.from)].name + " -> " +
+                              s.s->model.states[static_cast<std::size_t>(a.to)].name;
+              d["by"] = c.by.empty() ? py::object(py::none()) : py::object(py::str(c.by));
+              d["difference"] = c.difference;
+              d["note"] = c.note;
+              out.append(d);
+            }
+            return out;
+          },
+          "how each analysis was confirmed a second way (empty with solve(confirm=False))")
       .def("__getitem__",
            [](const PySolution& s, const std::string& name) {
              for (auto& r : s.results())

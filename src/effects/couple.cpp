@@ -15,7 +15,7 @@ public:
   ex power(const Model& m) const override { return M * m.omega(body); }  // P = M ω
 
   principles::Work work(const Model& m, int s1, int s2, const Knowledge& k) const override {
-    return principles::generalized_force_work(m, *this, "couple", "U = integral of M dphi", s1, s2, k.fewer_switches);
+    return principles::generalized_force_work(m, *this, "couple", "U = integral of M dphi", s1, s2, &k);
   }
 
   // a curved arrow round the body's centre in the sense of M (counterclockwise when positive)

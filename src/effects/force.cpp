@@ -23,7 +23,7 @@ public:
   }
 
   principles::Work work(const Model& m, int s1, int s2, const Knowledge& k) const override {
-    return principles::generalized_force_work(m, *this, "force", "U = integral of F . dr", s1, s2, k.fewer_switches);
+    return principles::generalized_force_work(m, *this, "force", "U = integral of F . dr", s1, s2, &k);
   }
 
   void pushes(const Model& m, const Analysis& an, const Knowledge&, std::vector<Push>& out) const override {

@@ -198,7 +198,8 @@ static std::optional<std::vector<std::pair<ex, numeric>>> switching_points(const
 /// recorded in `holds` and checked on the solution, where a root that breaks it is dropped.
 /// Nothing when both ends, a switching point or that direction have no value, or g is not linear.
 static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const ex& Q, const model::Coordinate& c, int s1, int s2,
-                                        int fewer, Work& w, std::string& taken) {
+                                        const Knowledge* know, Work& w, std::string& taken) {
+  const int fewer = know ? know->fewer_switches : 0;
   const symbol& s = c.q;
   const exmap given = m.given_values(), env = m.numeric_environment();
   ex A = m.bind(ex(s), s1).subs(given), B = m.bind(ex(s), s2).subs(given);
@@ -209,6 +210,7 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
     if (is_ex_the_function(*it, abs) && it->op(0).has(s)) args.push_back(it->op(0));
   // the switching points: (expression, value)
   std::vector<std::pair<ex, numeric>> switches;
+  std::optional<std::pair<numeric, numeric>> window;  ///< where non-linear switches were looked for
   for (auto& g : args) {
     ex d = g.diff(s);
     if (d.is_zero()) return std::nullopt;
@@ -220,9 +222,21 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
       continue;
     }
     // g not linear in s (a spring under a turning bar, d0 − a sin θ): its zeros between the two
-    // known ends, found numerically and written in closed form where g is linear in sin s or cos s
-    if (!a || !b) return std::nullopt;
-    auto zeros = switching_points(g, s, std::min(*a, *b), std::max(*a, *b), env);
+    // known ends, found numerically and written in closed form where g is linear in sin s or cos s;
+    // toward an unknown end, within a window on the side the motion goes (a turn of an angle, ten
+    // times the known end's size of a length), the unknown end then checked to lie inside it
+    numeric lo, hi;
+    if (a && b) {
+      lo = std::min(*a, *b);
+      hi = std::max(*a, *b);
+    } else {
+      const numeric known = a ? *a : *b;
+      const numeric span = units::si_name(c.dim).empty() ? ex_to<numeric>(evalf(2 * Pi)) : 10 * (abs(known) + 1);
+      lo = known - span;
+      hi = known + span;
+      window = {lo, hi};
+    }
+    auto zeros = switching_points(g, s, lo, hi, env);
     if (!zeros) return std::nullopt;
     switches.insert(switches.end(), zeros->begin(), zeros->end());
   }
@@ -237,10 +251,13 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
     const bool up = *b >= *a;
     std::sort(cuts.begin(), cuts.end(), [&](auto& x, auto& y) { return up ? x.second < y.second : x.second > y.second; });
   } else {
-    // σ: the direction of the motion from s1 to s2, from the sign of a rate given at a state
+    // σ: the direction of the motion from s1 to s2, from the sign of a rate given at a state, or
+    // found by an earlier analysis
     std::optional<int> sigma;
     for (int st : {s1, s2}) {
-      auto v = numerics::evaluate(m.states[st].sym.at(c.name).second.subs(given), env, 40);
+      const ex rate = m.states[st].sym.at(c.name).second;
+      auto v = numerics::evaluate(rate.subs(given), env, 40);
+      if ((!v || v->is_zero()) && know) v = know->value(rate);
       if (!sigma && v && !v->is_zero()) sigma = v->is_positive() ? 1 : -1;
     }
     if (!sigma) return std::nullopt;
@@ -280,6 +297,15 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
                        "give " + c.name + " at state '" + m.states[unknown].name + "', or switch the force off over this analysis ('off:')",
                        e.pos});
     }
+    if (window) {
+      // the switching points were looked for within the window only: the end must lie inside it
+      const numeric edge = side > 0 ? window->second : window->first;
+      w.holds.push_back({(ex(edge) - X) * side,
+                         "the force of '" + e.name + "' was split where it switches within " + c.name + " = " + numerics::format(window->first, 6) +
+                             " .. " + numerics::format(window->second, 6) + ", but the solution puts " + c.name + "@" + m.states[unknown].name +
+                             " {} " + units::si_name(c.dim) + " beyond",
+                         "give " + c.name + " at state '" + m.states[unknown].name + "'", e.pos});
+    }
     cuts.push_back({X, beyond});
     if (!x_is_2) std::reverse(cuts.begin(), cuts.end());
     taken = "; state " + m.states[unknown].name + " taken " +
@@ -306,14 +332,14 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
 }
 
 Work generalized_force_work(const Model& m, const Effect& e, const std::string& what, const std::string& how, int s1,
-                            int s2, int fewer_switches) {
+                            int s2, const Knowledge* k) {
   std::vector<ex> Q;
   for (std::size_t i = 0; i < m.coords.size(); ++i) Q.push_back(e.generalized_force(m, i));
-  return generalized_force_work(m, e, Q, what, how, s1, s2, fewer_switches);
+  return generalized_force_work(m, e, Q, what, how, s1, s2, k);
 }
 
 Work generalized_force_work(const Model& m, const Effect& e, const std::vector<ex>& Q, const std::string& what,
-                            const std::string& how, int s1, int s2, int fewer_switches) {
+                            const std::string& how, int s1, int s2, const Knowledge* k) {
   Work w;
   w.effect = e.name;
   bool timed = false;
@@ -342,7 +368,7 @@ Work generalized_force_work(const Model& m, const Effect& e, const std::vector<e
   // (g(s₀) = 0 between the ends, the switching point) and integrate each piece with |g| = ±g
   if (Qs.has(abs(wild()))) {
     std::string taken;
-    if (auto U = piecewise_work(m, e, Qs, m.coords[p->s], s1, s2, fewer_switches, w, taken)) {
+    if (auto U = piecewise_work(m, e, Qs, m.coords[p->s], s1, s2, k, w, taken)) {
       w.U = *U;
       w.ends_only = true;
       w.how = "U = integral along " + m.coords[p->s].name + ", split where the force switches" + taken;

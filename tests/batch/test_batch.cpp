@@ -79,6 +79,7 @@ TEST_CASE("batch: every way a request can be wrong is an error line", "[batch][e
       {"{\"scene\": \"" + kRod + "\", \"digits\": 0}", "\\\"digits\\\" is not a whole number from 1 to 1000"},
       {"{\"scene\": \"" + kRod + "\", \"digits\": \"many\"}", "\\\"digits\\\" is not a whole number from 1 to 1000"},
       {"{\"scene\": \"" + kRod + "\", \"set\": [1]}", "\\\"set\\\" is not an object"},
+      {"{\"scene\": \"" + kRod + "\", \"confirm\": \"maybe\"}", "\\\"confirm\\\" is not true or false"},
       {"{\"scene\": [1]}", "\\\"scene\\\" is not a string or a number"},
       {"{\"scene\": \"" + kRod + "\", \"id\": [1]}", "\\\"id\\\" is not a string or a number"},
       {"{\"scene\": \"/nonexistent/x.yaml\"}", "the scene file does not exist"},
@@ -117,4 +118,12 @@ TEST_CASE("kinergy batch: standard input or a file, a summary on stderr, exit 1 
   out = kt::run_cli("batch " + (dir / "bad.jsonl").string(), st);
   CHECK(st == 1);
   CHECK(out.find("kinergy batch: 2 requests, 1 ok, 1 failed") != std::string::npos);
+}
+
+TEST_CASE("batch: each request confirmed a second way unless it says \"confirm\": false", "[batch][confirm]") {
+  const std::string on = kinergy::batch::run_line("{\"scene\": \"" + kRod + "\"}", 1);
+  CHECK(on.find("\"confirmed\": [{\"analysis\": \"energy 1 -> 2\", \"by\": \"simulation\"") != std::string::npos);
+  const std::string off = kinergy::batch::run_line("{\"scene\": \"" + kRod + "\", \"confirm\": false}", 1);
+  CHECK(off.find("\"ok\": true") != std::string::npos);
+  CHECK(off.find("\"confirmed\"") == std::string::npos);
 }

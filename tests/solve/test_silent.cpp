@@ -93,6 +93,11 @@ TEST_CASE("finding 5: a force with max or abs of a turning body's angle is split
     CHECK(value(s, "omega2") == Approx(8.53121368151218).epsilon(1e-13));
     CHECK(result(s, "omega2").closed_form);
   }
+  // a bar that meets a spring-loaded plate part-way, and swings on to an angle not given: the
+  // direction toward it from the rate the first analysis found
+  auto s = solve("bar_plate_max.yaml");
+  CHECK(value(s, "omega2") == Approx(3.08625987240219).epsilon(1e-13));
+  CHECK(value(s, "theta3") == Approx(97.8363102893586).epsilon(1e-12));
 }
 
 TEST_CASE("finding 6: a state the motion cannot reach is refused", "[silent]") {

@@ -94,12 +94,14 @@ std::optional<Path> one_dof_path(const model::Model& m, int s1, int s2);
 
 /// The work of a force or couple from its generalized forces Q_i (constant in time):
 /// Φ(q₂) − Φ(q₁) when Σ Q_i dq_i = dΦ, else the integral along the one-coordinate path.
-/// `what` names it in messages ("couple", "force"); `how` is the exact case's formula.
+/// `what` names it in messages ("couple", "force"); `how` is the exact case's formula. `k`: what
+/// is known at the states (the direction of the motion toward an unknown end; how many switching
+/// points to leave out, Knowledge::fewer_switches).
 Work generalized_force_work(const model::Model& m, const model::Effect& e, const std::string& what,
-                            const std::string& how, int s1, int s2, int fewer_switches = 0);
+                            const std::string& how, int s1, int s2, const Knowledge* k = nullptr);
 /// The same for given generalized forces Q_i (one per coordinate).
 Work generalized_force_work(const model::Model& m, const model::Effect& e, const std::vector<ex>& Q, const std::string& what,
-                            const std::string& how, int s1, int s2, int fewer_switches = 0);
+                            const std::string& how, int s1, int s2, const Knowledge* k = nullptr);
 
 /// The work of kinetic friction c whose slip keeps to a fixed line, with slip rate
 /// v = Σ a_i(q) q̇_i along it: when that is the rate of a function of the coordinates (v = df/dt,
