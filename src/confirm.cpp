@@ -115,10 +115,18 @@ void confirm(Solution& s) {
         // the scene leaves out, a conservation claim): no value to compare, not a disagreement
         c.note = "not confirmed by simulation: " + run->worst_what + ", with the effects the scene lists";
       } else if (run) {
-        // a disagreement is an error that shows both numbers, never an answer
+        // a disagreement is an error that shows both numbers, never an answer; where the run met
+        // an impact the analysis does not have, say so (an energy analysis across a bounce)
+        std::string struck;
+        if (!a.instant)
+          for (auto& im : run->run.impacts)
+            for (auto& name : im.contacts)
+              if (struck.find("'" + name + "'") == std::string::npos) struck += (struck.empty() ? "" : ", ") + ("'" + name + "'");
         throw SceneError(a.pos, between + " is not confirmed by a simulation of the same scene: " + run->worst_what +
                                     " (relative difference " + num(run->worst) + ", more than " + num(kConfirmSimulation) + ")" +
-                                    (run->note.empty() ? "" : "; " + run->note),
+                                    (run->note.empty() ? "" : "; " + run->note) +
+                                    (struck.empty() ? "" : "; on the way the simulation strikes at " + struck +
+                                                               ", an impact this analysis does not have (split it there with an impact analysis)"),
                          "check the scene's states and effects against the problem (the simulation runs exactly what the scene says); "
                          "'--no-confirm' prints the closed form without this check");
       }

@@ -519,14 +519,8 @@ private:
     }
   }
 
-  /// Does the motion reach each energy analysis' end state (branch b)?
-  ///  - a coordinate at rest at the end state whose rate at the start is not zero comes to rest
-  ///    the way it moves: (q₂ − q₁) q̇₁ > 0 (to lie the other way it must stop, and turn, first);
-  ///  - with one degree of freedom between the states, the kinetic energy stays ≥ 0 along the way
-  ///    (principles::check_reached).
-  /// Skipped where the kinetic energy between the ends cannot be had (a force that switches,
-  /// split where the end lies; an average force of an isolated set; a parameter without a value).
-  void check_reached(const solve::Branch& b) const {
+  /// Every state symbol branch b gives a number (given or solved), and the parameters' values.
+  exmap numbers_of(const solve::Branch& b) const {
     exmap values = env;
     for (const exmap* part : {static_cast<const exmap*>(&given), static_cast<const exmap*>(&b.sol)})
       for (auto& [k, v] : *part) {
@@ -536,6 +530,18 @@ private:
         } catch (const std::exception&) {
         }
       }
+    return values;
+  }
+
+  /// Does the motion reach each energy analysis' end state (branch b)?
+  ///  - a coordinate at rest at the end state whose rate at the start is not zero comes to rest
+  ///    the way it moves: (q₂ − q₁) q̇₁ > 0 (to lie the other way it must stop, and turn, first);
+  ///  - with one degree of freedom between the states, the kinetic energy stays ≥ 0 along the way
+  ///    (principles::check_reached).
+  /// Skipped where the kinetic energy between the ends cannot be had (a force that switches,
+  /// split where the end lies; an average force of an isolated set; a parameter without a value).
+  void check_reached(const solve::Branch& b) const {
+    const exmap values = numbers_of(b);
     auto value = [&](const ex& e) -> std::optional<numeric> {
       ex x = e.subs(values);
       if (is_a<numeric>(x) && ex_to<numeric>(x).is_real()) return ex_to<numeric>(x);
@@ -545,6 +551,22 @@ private:
       const auto& a = m.analyses[ai];
       if (a.type->impulsive()) continue;  // energy alone keeps a motion going one way
       const auto &S1 = m.states[a.from], &S2 = m.states[a.to];
+      // the end state's place solved to be the start itself (every coordinate and rate the same):
+      // the energy equation holds there trivially and tells nothing of where the motion goes
+      bool same = true, solved = false;
+      for (auto& c : m.coords)
+        for (int part = 0; part < 2 && same; ++part) {
+          const ex x1 = part ? ex(S1.sym.at(c.name).second) : ex(S1.sym.at(c.name).first);
+          const ex x2 = part ? ex(S2.sym.at(c.name).second) : ex(S2.sym.at(c.name).first);
+          auto v1 = value(x1), v2 = value(x2);
+          same = v1 && v2 && abs(*v2 - *v1) <= numerics::tenth(25) * (abs(*v1) + abs(*v2));
+          solved = solved || (part == 0 && !given.count(x2));  // where it ends was solved for, not given
+        }
+      if (same && solved)
+        throw SceneError(a.pos, "this solution puts state '" + S2.name + "' where state '" + S1.name + "' is, with the same rates: the energy "
+                                    "equation holds there trivially, and says nothing of where the motion goes",
+                         "choose the other root ('root:' of the result), or give state '" + S2.name + "' something that tells it apart "
+                         "(a position, a time)");
       for (auto& c : m.coords) {
         auto q1 = value(S1.sym.at(c.name).first), q2 = value(S2.sym.at(c.name).first);
         auto v1 = value(S1.sym.at(c.name).second), v2 = value(S2.sym.at(c.name).second);
@@ -568,15 +590,7 @@ private:
 
   /// What the effects declare holds at every solved state of branch b.
   void check_declared(const solve::Branch& b) const {
-    exmap values = env;
-    for (const exmap* part : {static_cast<const exmap*>(&given), static_cast<const exmap*>(&b.sol)})
-      for (auto& [k, v] : *part) {
-        try {
-          ex x = v.subs(given).subs(b.sol).subs(env).evalf();
-          if (is_a<numeric>(x)) values[k] = x;
-        } catch (const std::exception&) {
-        }
-      }
+    const exmap values = numbers_of(b);
     for (auto& e : m.effects)
       for (std::size_t s = 0; s < m.states.size(); ++s) e.check_state(m, static_cast<int>(s), values);
     // what the equations took for granted (a switching force passed, a declared direction of

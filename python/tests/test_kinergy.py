@@ -123,22 +123,7 @@ def test_solve_confirms_each_analysis_a_second_way():
     assert kinergy.load(ROD).solve(confirm=False).confirmed == []
     # energy alone for a ball rising through half its drop height after a bounce it does not see:
     # the simulation meets h/2 falling, and the disagreement is an error, never an answer
-    ball = """title: Ball rising through half its drop height
-parameters: {m: 0.2 kg, h: 2 m, g: 9.81 m/s^2, e: 0.5}
-coordinates: {y: m}
-bodies:
-  ball: {mass: m, inertia: particle, position: [0, y]}
-effects:
-  gravity: {g: g}
-  floor: {contact: [ground, ball], normal: [0, 1], e: e}
-states:
-  1: {y: h, y_dot: 0}
-  2: {y: h/2}
-analyses:
-  - energy: {from: 1, to: 2}
-find:
-  v2: {value: y_dot@2, root: positive, unit: m/s}
-"""
+    ball = open(os.path.join(ROOT, "tests", "data", "silent", "ball_bounce_energy.yaml")).read()
     with pytest.raises(kinergy.SceneError) as err:
         kinergy.loads(ball, "ball.yaml").solve()
     assert "simulated -4.4294469, closed form 4.4294469" in err.value.message

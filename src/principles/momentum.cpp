@@ -493,6 +493,19 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
                                       "', so they cannot strike each other there",
                            "give positions at '" + SB + "' that bring the two points together");
       }
+    } else {
+      // the ground is the plane through the origin across n̂ (where the simulator measures the
+      // gap from): the other party must be on it, g = (r_b − r_a)·n̂ = 0
+      const ex n = sqrt(e.nx * e.nx + e.ny * e.ny);
+      auto gap = k.value(before(dot(pb.r.first - pa.r.first, pb.r.second - pa.r.second, e.nx, e.ny) / n));
+      numeric scale = 0;
+      for (const ex& c : {pa.r.first, pa.r.second, pb.r.first, pb.r.second})
+        if (auto s = k.value(before(c))) scale = std::max(scale, abs(*s));
+      if (gap && abs(*gap) > numeric(1, 1000000000) * scale)
+        throw SceneError(e.pos, "contact '" + e.name + "': " + (e.a.ground ? e.b.text : e.a.text) + " is " + numerics::format(abs(*gap), 6) +
+                                    " m " + ((gap->is_positive() == e.a.ground) ? "above" : "below") +
+                                    " the ground at state '" + SB + "' (the ground is the line through the origin across the normal), so it cannot strike it there",
+                         "give positions at '" + SB + "' that put it on the ground (at 0 along the normal)");
     }
     // restitution: (v_B′ − v_A′)·n = −e (v_B − v_A)·n
     ex vn_after = dot(pb.v.first - pa.v.first, pb.v.second - pa.v.second, e.nx, e.ny);

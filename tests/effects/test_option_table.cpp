@@ -5,8 +5,10 @@
 // table does not have fails the completeness check, so a new one cannot be half-honoured.
 // The contexts: `energy` (a block on a line coupled to a wheel, one degree of freedom, from
 // state 1 to 2 and 2 to 3; `timed`: the same between given times, for a power drive), `momentum` (the block alone over a duration), `angular` (the wheel
-// alone about its fixed centre over a duration), `impact` (the block striking a fixed stop), and
-// `across` (energy from 1 to 3 with the effect switched at 2).
+// alone about its fixed centre over a duration), `impact` (the block striking a fixed stop),
+// `across` (energy from 1 to 3 with the effect switched at 2), `least` (the least speed at state
+// 1 for which state 2 is reached) and `extreme` (the greatest kinetic energy over the positions of
+// state 2).
 #include <catch2/catch.hpp>
 
 #include <map>
@@ -116,6 +118,13 @@ const std::vector<Row> kTable = {
   {"constraint", "off", "across", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], off: 2}", false, "switched off at state '2', inside this energy analysis"},
   {"track", "off", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, off: 2}", true, ""},
   {"track", "on", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, on: 2}", true, ""},
+  // least values and extremes (no one motion to simulate: confirmed by the residuals)
+  {"friction", "mu", "least", "e: {friction: block, mu: mu, normal: m*g}", true, "residuals"},
+  {"friction", "off", "least", "e: {friction: block, mu: mu, normal: m*g, off: 1}", false, "is reached for every value of 'u0'"},
+  {"spring", "acts", "least", "e: {spring: [block, A], k: k, free_length: a/2, acts: tension}", true, "residuals"},
+  {"gravity", "direction", "least", "e: {gravity: g, direction: [-1, 0]}", true, "residuals"},
+  {"spring", "k", "extreme", "e: {spring: [block, A], k: k, free_length: 3*a/2}", true, "residuals"},
+  {"force", "on", "extreme", "e: {force: block, F: [F0, 0], on: 2}", true, "residuals"},
   {"torsion_spring", "on", "energy", "e: {torsion_spring: wheel, k: kt, on: 2}", true, ""},
   {"torsion_damper", "off", "energy", "e: {torsion_damper: wheel, c: ct, off: 1}", true, ""},
   {"damper", "on", "energy", "e: {damper: [block, A], c: c, on: 3}", true, ""},
@@ -154,6 +163,25 @@ std::string scene_of(const Row& r, const std::string& analyses = "") {
     if (r.context != "across") s += "analyses:\n  - energy: {from: 1, to: 2}\n  - energy: {from: 2, to: 3}\n";
     else s += "analyses:\n  - energy: {from: 1, to: 3}\n";
     s += "find:\n  v3: {value: x_dot@3, root: positive, unit: m/s}\n";
+  } else if (r.context == "least" || r.context == "extreme") {
+    // the least speed at state 1 for which state 2 is reached (T@2 >= 0), or the greatest kinetic
+    // energy over the positions of state 2: a parameter without a value in a state
+    s = std::string(s).replace(s.find("J0: 3 N*s"), 9, "J0: 3 N*s, u0: m/s, p: m");
+    s += "coordinates: {x: m, phi: rad}\n"
+         "bodies:\n"
+         "  block: {mass: m, inertia: particle, position: [x, 0]}\n"
+         "  wheel: {mass: m, inertia: {disk: r}, position: [0, h], angle: phi}\n"
+         "constraints:\n  - x - r*phi = 0\n";
+    s += effect;
+    if (r.context == "least") {
+      s += "states:\n  1: {x: 0, x_dot: u0}\n  2: {x: d}\n";
+      s += "analyses:\n  - energy: {from: 1, to: 2}\n";
+      s += "find:\n  u0_min: {least: u0, reaches: 2, unit: m/s}\n";
+    } else {
+      s += "states:\n  1: {x: 0, x_dot: v0}\n  2: {x: p}\n";
+      s += "analyses:\n  - energy: {from: 1, to: 2}\n";
+      s += "find:\n  T_max: {value: T@2, max: p, over: [0, 4*d], unit: J}\n";
+    }
   } else if (r.context == "momentum") {
     s += "coordinates: {x: m}\nbodies:\n  block: {mass: m, inertia: particle, position: [x, 0]}\n";
     s += effect;

@@ -149,5 +149,22 @@ U = quad(lambda p: M0 * exp(-((p / phi0) ** 2)), [0, phi2])
 assert abs(U - M0 * phi0 * sqrt(pi) / 2 * erf(phi2 / phi0)) < mpf(10) ** -40
 out("wheel_cam_couple_variant.yaml", "omega2", sqrt(2 * U / (m * k**2)))
 
+# 7b'. wheel_step_limit.yaml: the same least speed, as the speed that just reaches the top at rest --
+m, r, h, g = mpf(8), mpf("0.3"), mpf("0.1"), mpf("9.81")
+out("wheel_step_limit.yaml", "v0_min", sqrt(4 * g * h / 3))
+
+# ball_bounce_energy.yaml: what energy alone says (sqrt(g h) up at h/2), and what the motion does
+# (it meets h/2 falling at -sqrt(g h); after the bounce it rises to e^2 h = h/4 only)
+g, h, e = mpf("9.81"), mpf(2), mpf("0.5")
+out("ball_bounce_energy.yaml", "v2", sqrt(g * h))
+out("ball_bounce_energy.yaml", "#v_at_h/2_falling", -sqrt(g * h))
+out("ball_bounce_energy.yaml", "#rise_after_bounce", e**2 * h)
+
+# pendulum_pin_friction.yaml: m g (L/2)(cos(beta) - cos(theta0)) = Mf (theta0 + beta), beta in (0, pi/2)
+
+m, L, g, Mf, th0 = mpf(2), mpf(1), mpf("9.81"), mpf("0.5"), 60 * degree
+beta = findroot(lambda b: m * g * L / 2 * (cos(b) - cos(th0)) - Mf * (th0 + b), mpf("0.9"))
+out("pendulum_pin_friction.yaml", "beta", beta / degree)  # deg
+
 if __name__ == "__main__":
     print("\n".join(OUT))
