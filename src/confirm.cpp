@@ -110,9 +110,11 @@ void confirm(Solution& s) {
         c.note = run->note;
       } else if (run && run->worst_what.rfind("no solved value", 0) == 0) {
         c.note = "not simulated: " + run->worst_what;
-      } else if (run && run->worst_what.rfind("the simulation does not reach", 0) == 0) {
-        // the scene's effects alone do not take the motion there (balls drawn in by a mechanism
-        // the scene leaves out, a conservation claim): no value to compare, not a disagreement
+      } else if (run && run->worst_what.rfind("the simulation does not reach", 0) == 0 && a.type->impulsive()) {
+        // over a duration the scene's effects alone may not take the motion there (balls drawn in
+        // by a mechanism the scene leaves out, under a conservation claim): no value to compare,
+        // not a disagreement. (An energy analysis has every effect that works in it: a state its
+        // motion does not reach is a disagreement, below.)
         c.note = "not confirmed by simulation: " + run->worst_what + ", with the effects the scene lists";
       } else if (run) {
         // a disagreement is an error that shows both numbers, never an answer; where the run met

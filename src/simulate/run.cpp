@@ -297,8 +297,9 @@ private:
         throw SimulationError("the run took more than " + std::to_string(p_.o.max_steps) + " steps and stopped at t = " + num(t_) + " s",
                               "loosen --tol, shorten --until, or raise the step limit");
       double remaining = stop_.until - t_;
-      bool last = dt >= remaining;
-      double h = last ? remaining : dt;
+      const double capped = p_.o.max_dt > 0 ? std::min(dt, p_.o.max_dt) : dt;
+      bool last = capped >= remaining;
+      double h = last ? remaining : capped;
       y = y_;
       double t = t_, hh = h;
       // a step's first call is at its start, the state accepted last: its T is taken there

@@ -41,6 +41,9 @@ struct Options {
   Method method = Method::Dopri5;
   double tol = 1e-10;        ///< absolute and relative tolerance of the adaptive methods
   double atol = -1;          ///< the absolute one apart (< 0: tol): a motion's own size times tol
+  /// > 0: no adaptive step longer than this (a stop condition crossed twice within one long step
+  /// — a ball passing a height just below its top and falling back through it — is not seen)
+  double max_dt = 0;
   double step = 0;           ///< fixed step of symplectic and rk4 (0: span/10⁴)
   bool native = true;        ///< right-hand side as machine code (else the tape, same doubles)
   bool record = true;        ///< keep samples (every accepted step, or every `sample_dt`)
