@@ -265,10 +265,10 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
   Options own = o;
   own.effects_on.clear();
   for (auto& e : m.effects) own.effects_on.push_back(e.activity(m.analyses[leg.analysis]) != model::Effect::Activity::None);
-  // the motion's own size: the coordinates' change and the rates (a time scale of 1 s), so that
-  // the absolute tolerance is relative to it (never larger than tol)
-  // (the smallest of the coordinates' changes and rates that are not zero, so that each keeps its
-  // relative accuracy — a rate of 6e-5 among positions of 1 — but not below 1e-9 of the largest)
+  // the motion's own size, so that the absolute tolerance is relative to it (never larger than
+  // tol): the smallest of the coordinates' changes and rates that are not zero (a time scale of
+  // 1 s), so that each keeps its relative accuracy — a rate of 6e-5 among positions of 1 — but not
+  // below 1e-9 of the largest
   double lo = 0, hi = 0;
   const State end = state_values(s, leg.to);
   for (std::size_t i = 0; i < m.coords.size(); ++i)
@@ -279,7 +279,8 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
       }
   const double size = std::max(lo, 1e-9 * hi);
   if (size > 0 && size < 1) own.atol = o.tol * size;
-  Simulator sim(m, simulation_values(s), own);
+  const GiNaC::exmap values = simulation_values(s);
+  Simulator sim(m, values, own);
   c.run = sim.run(leg.start, leg.stop);
   // not reached: run longer; from rest on an equilibrium (nothing moved), nudged toward the end
   Stop longer = leg.stop;
@@ -296,7 +297,7 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
       // the run's estimated span
       Options short_steps = own;
       short_steps.max_dt = (leg.stop.until - leg.start.t) / 1000;
-      Simulator fine(m, simulation_values(s), short_steps);
+      Simulator fine(m, values, short_steps);
       Run again = fine.run(start, leg.stop);
       if (again.stopped) {
         c.run = std::move(again);
