@@ -50,17 +50,6 @@ inline Dimension force_dim() {
 }
 inline Dimension energy_dim() { return force_dim() * Dimension::length(); }
 
-/// ∫F dt over the interval of analysis a, for a force free of the motion (constant or of t).
-/// @throws InputError when it changes with the motion or has no closed form in t.
-std::pair<ex, ex> force_impulse(const Model& m, const Effect& e, const ex& Fx, const ex& Fy, const Analysis& a);
-
-/// An element whose force changes with the motion (a spring, a damper) has no impulse over a
-/// duration: refused when it acts across the body set (one end in, `in_a`, the other not).
-void refuse_elastic_push(const Effect& e, bool in_a, bool in_b);
-
-/// A viscous damper's work depends on the speeds all along the motion: refused.
-[[noreturn]] void refuse_speed_dependent_work(const Model& m, const Effect& e, int s1, int s2);
-
 /// `KIND: [A, B]`: the two points an element joins (refused with `problem` and `fix` otherwise).
 inline std::pair<PointRef, PointRef> two_points(EffectReader& r, const EffectDef& ed, const std::string& problem,
                                                 const std::string& fix) {
@@ -104,13 +93,38 @@ inline std::vector<GiNaC::exmap> random_positions(const Model& m, const GiNaC::e
 /// Is body b (≥ 0) in the analysis' set?
 inline bool acts_on(const Analysis& a, int b) { return b >= 0 && principles::in_set(a.bodies, b); }
 
+/// Body b's mass centre as a place loads act at (−1: the ground).
+inline PointRef centre_of(const Model& m, int b) {
+  PointRef p;
+  p.body = b;
+  p.ground = b < 0;
+  p.text = b >= 0 ? m.bodies[static_cast<std::size_t>(b)].name : "ground";
+  return p;
+}
+
+/// A couple M on body b; with `other` ≥ 0 (or the ground, −1, when `reacted`), −M on that one.
+inline model::Load couple_on(const Model& m, int b, const ex& M, std::optional<int> other = std::nullopt) {
+  model::Load l;
+  l.at = centre_of(m, b);
+  l.M = M;
+  if (other) l.partner = centre_of(m, *other);
+  return l;
+}
+
+/// A force F at point `at`; with a partner, −F at that point (an interaction).
+inline model::Load force_at(const PointRef& at, const ex& Fx, const ex& Fy, std::optional<PointRef> partner = std::nullopt) {
+  model::Load l;
+  l.at = at;
+  l.Fx = Fx;
+  l.Fy = Fy;
+  l.partner = std::move(partner);
+  return l;
+}
+
 /// An effect on one body (a couple, a friction couple, a drive).
 class BodyEffect : public Effect {
 public:
   int body = -1;
-  std::vector<int> bodies_acted(const Model&) const override { return {body}; }
-  /// Does it act on the bodies of analysis a?
-  bool on(const Analysis& a) const { return acts_on(a, body); }
 };
 
 // --- pictures ----------------------------------------------------------------------------

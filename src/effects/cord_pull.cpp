@@ -23,7 +23,13 @@ public:
     if (L > 0) f.arrow(x1, y1, x1 + (x2 - x1) / L * std::min(g, L), y1 + (y2 - y1) / L * std::min(g, L), Ink::Force);
     f.label(x1, y1, name);
   }
-  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
+  // on A: P toward B, F = P (r_B − r_A)/L; −F on B
+  std::vector<model::Load> loads(const Model& m) const override {
+    auto [xa, ya] = m.position(a);
+    auto [xb, yb] = m.position(b);
+    ex L = m.spring_length(model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2)));
+    return {force_at(a, P * (xb - xa) / L, P * (yb - ya) / L, b)};
+  }
 
   bool conservative() const override { return true; }
 
@@ -32,10 +38,6 @@ public:
     auto [xa, ya] = m.position(a);
     auto [xb, yb] = m.position(b);
     return P * m.spring_length(model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2)));
-  }
-
-  void pushes(const Model&, const Analysis& an, const Knowledge&, std::vector<Push>&) const override {
-    refuse_elastic_push(*this, acts_on(an, a.body), acts_on(an, b.body));
   }
 };
 

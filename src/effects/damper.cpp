@@ -25,7 +25,6 @@ public:
     f.polyline({at_s(0.6, 0), {x2, y2}}, Ink::Spring);
     f.label((x1 + x2) / 2, (y1 + y2) / 2, name);
   }
-  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
   /// d = r_B − r_A
   std::pair<ex, ex> span(const Model& m) const {
@@ -34,32 +33,15 @@ public:
     return {xb - xa, yb - ya};
   }
 
-  ex power(const Model& m) const override {
-    // P = −c (d·ḋ)²/|d|²,  d = r_B − r_A  (c times the square of the rate of the length)
+  // along the line of its ends, d = r_B − r_A: the force on A is c (d·ḋ/|d|²) d (−that on B),
+  // the rate of its length d·ḋ/|d| times c, along the unit vector d/|d| (no root: it appears twice)
+  std::vector<model::Load> loads(const Model& m) const override {
     auto [dx, dy] = span(m);
-    ex dd = m.rate(dx) * dx + m.rate(dy) * dy;
-    return -c * pow(model::collect_simplify(dd, m.rates()), 2) / model::trig_simplify(dx * dx + dy * dy);
-  }
-
-  principles::Work work(const Model& m, int s1, int s2, const Knowledge&) const override {
-    refuse_speed_dependent_work(m, *this, s1, s2);
-  }
-
-  void pushes(const Model&, const Analysis& an, const Knowledge&, std::vector<Push>&) const override {
-    refuse_elastic_push(*this, acts_on(an, a.body), acts_on(an, b.body));
-  }
-
-  void motion(const Model& m, int self, simulate::Equations& eq) const override {
-    // along the line of its ends: the force on B is −c (d·ḋ/|d|²) d, so
-    // Q_i = −c (d·ḋ)(d·∂d/∂q_i)/|d|²  (no root: the unit vector appears twice)
-    auto [dx, dy] = span(m);
-    ex dd = m.rate(dx) * dx + m.rate(dy) * dy;
+    ex dd = model::collect_simplify(m.rate(dx) * dx + m.rate(dy) * dy, m.rates());
     ex d2 = model::trig_simplify(dx * dx + dy * dy);
-    std::vector<ex> Q;
-    for (auto& co : m.coords)
-      Q.push_back(model::collect_simplify(-c * dd * (dx * dx.diff(co.q) + dy * dy.diff(co.q)) / d2, m.rates()));
-    eq.forces.push_back(simulate::force_term(m, self, Q, false));
+    return {force_at(a, c * dd / d2 * dx, c * dd / d2 * dy, b)};
   }
+
 };
 
 }  // namespace

@@ -31,21 +31,32 @@ std::pair<int, int> Effect::active_span(const Analysis& a) const {
 
 ex Effect::generalized_force(const Model& m, std::size_t i) const {
   if (conservative()) return -potential(m).diff(m.coords[i].q);  // Q_i = −∂V/∂q_i
-  return 0;
+  ex Q = 0;                                                       // Q_i = Σ over its loads
+  for (const Load& l : loads(m)) Q += model::generalized_force(m, l, i);
+  return Q;
 }
 
 ex Effect::power(const Model& m) const {
-  ex P = 0;  // conservative: P = −dV/dt
-  if (conservative()) P = -m.rate(potential(m));
-  return collect_simplify(P, m.rates());
+  if (conservative()) return collect_simplify(-m.rate(potential(m)), m.rates());  // P = −dV/dt
+  ex P = 0;                                                                        // P = Σ over its loads
+  for (const Load& l : loads(m)) P += model::power(m, l);
+  return P;
 }
 
-principles::Work Effect::work(const Model&, int, int, const principles::Knowledge&) const {
-  principles::Work w;
-  w.effect = name;
-  w.U = 0;
-  w.how = "no work";
-  return w;
+std::vector<int> Effect::bodies_acted(const Model& m) const {
+  std::vector<int> out;
+  auto add = [&](const PointRef& p) {
+    if (p.body >= 0 && !p.ground && std::find(out.begin(), out.end(), p.body) == out.end()) out.push_back(p.body);
+  };
+  for (const Load& l : loads(m)) {
+    add(l.at);
+    if (l.partner) add(*l.partner);
+  }
+  return out;
+}
+
+principles::Work Effect::work(const Model& m, int s1, int s2, const principles::Knowledge& k) const {
+  return principles::load_work(m, *this, s1, s2, k);
 }
 
 principles::Work Effect::work_across(const Model& m, const Analysis& a, const principles::Knowledge&) const {
@@ -56,14 +67,11 @@ principles::Work Effect::work_across(const Model& m, const Analysis& a, const pr
                    "('NAME: {constraint: \"…\", between: [A, B], at: [x, y]}') so that its average force is an unknown");
 }
 
-void Effect::pushes(const Model&, const Analysis&, const principles::Knowledge&, std::vector<principles::Push>&) const {}
-
-std::pair<ex, ex> Effect::impulse(const Model& m, int, int ai) const {
-  const Analysis& a = m.analyses[ai];
-  throw InputError("effect '" + name + "' (" + kind + ") has no impulse to report between states " + m.states[a.from].name +
-                       " and " + m.states[a.to].name,
-                   "ask for the impulse of a contact, a pin, a given impulse, or a force over a momentum analysis");
+void Effect::pushes(const Model& m, const Analysis& a, const principles::Knowledge& k, std::vector<principles::Push>& out) const {
+  principles::load_pushes(m, *this, a, k, out);
 }
+
+std::pair<ex, ex> Effect::impulse(const Model& m, int, int ai) const { return principles::load_impulse(m, *this, ai); }
 
 ex Effect::impulse_size(const Model&, int, const ex& x, const ex& y) const { return sqrt(x * x + y * y); }
 
@@ -71,14 +79,6 @@ ex Effect::impact_loss(const Model&, int) const {
   throw InputError("'loss' takes a contact and the two states of its impact", "write loss(hit, before, after)");
 }
 
-void Effect::motion(const Model& m, int self, simulate::Equations& eq) const {
-  // a potential's generalized force Q_i = −∂V/∂q_i
-  if (conservative()) {
-    eq.forces.push_back(simulate::force_term(m, *this, self));
-    return;
-  }
-  throw SceneError(pos, "effect '" + name + "' of kind '" + kind + "' cannot be simulated",
-                   "remove it from the scene to simulate the rest");
-}
+void Effect::motion(const Model& m, int self, simulate::Equations& eq) const { simulate::load_terms(m, *this, self, eq); }
 
 }  // namespace kinergy::model

@@ -32,7 +32,17 @@ public:
     }
     f.label(x, y, name);
   }
-  std::vector<int> bodies_acted(const Model&) const override { return b ? bodies_of({a.body, b->body}) : bodies_of({a.body}); }
+
+  // μN at A against its slip over B (or the ground), −that on B
+  std::vector<model::Load> loads(const Model&) const override {
+    model::Load l;
+    l.kind = model::Load::Kind::Slide;
+    l.at = a;
+    l.partner = b;
+    l.size = mu * normal;
+    l.direction = direction;
+    return {l};
+  }
 
   /// The slip: v_rel = v_A − v_B (B the other body's material point there; the ground: 0).
   std::pair<ex, ex> slip(const Model& m) const {
@@ -40,35 +50,6 @@ public:
     if (!b) return {vx, vy};
     auto [ux, uy] = m.velocity(*b);
     return {vx - ux, vy - uy};
-  }
-
-  ex power(const Model& m) const override {
-    // P = −μ N |v_rel|: F·v_A on the one plus (−F)·v_B on the other
-    auto [vx, vy] = slip(m);
-    return -mu * normal * sqrt(model::trig_simplify(vx * vx + vy * vy));
-  }
-
-  principles::Work work(const Model& m, int s1, int s2, const Knowledge& k) const override {
-    // a slip along a fixed line that is the rate of a function of the coordinates: U = −μN σ Δf
-    auto [sx, sy] = slip(m);
-    const bool along_x = principles::vanishes(m, sy), along_y = principles::vanishes(m, sx);
-    if (along_x != along_y)
-      if (auto w = principles::exact_slip_work(m, *this, direction, mu * normal, along_x ? sx : sy,
-                                               "U = -mu N * distance slid" + std::string(b ? " (of one body over the other)" : ""), s1, s2, k))
-        return *w;
-    // distance slid: dℓ/ds = |∂r_P/∂s|, the velocity at ṡ = 1 with the others following
-    auto slid = [&](const principles::Path& p) {
-      const GiNaC::symbol& s = m.coords[p.s].q;
-      auto [x, y] = slip(m);
-      GiNaC::exmap rates;
-      for (std::size_t j = 0; j < m.coords.size(); ++j) {
-        ex qj = j == p.s ? ex(s) : m.coords[j].q.subs(p.q_of_s);
-        rates[m.coords[j].qd] = qj.diff(s);
-      }
-      ex vx = x.subs(rates).subs(p.q_of_s), vy = y.subs(rates).subs(p.q_of_s);
-      return sqrt(model::trig_simplify(vx * vx + vy * vy));
-    };
-    return principles::friction_work(m, *this, direction, mu * normal, slid, "U = -mu N * distance", s1, s2, k);
   }
 
   // across an energy analysis of a set holding one of the two bodies: the work of the friction on
@@ -93,48 +74,6 @@ public:
     return *w;
   }
 
-  /// The friction force on A over analysis an: −μN û, û the direction of A's slip (over B) along
-  /// its fixed line at the first state.
-  std::pair<ex, ex> force_on_a(const Model& m, const Analysis& an, const Knowledge& k,
-                               std::vector<principles::Condition>* holds = nullptr) const {
-    auto [vx, vy] = slip(m);
-    bool x0 = principles::vanishes(m, vy), y0 = principles::vanishes(m, vx);
-    if (x0 && !y0) return {-mu * normal * principles::motion_direction(m, *this, direction, vx, an, k, "sliding", holds), 0};
-    if (y0 && !x0) return {0, -mu * normal * principles::motion_direction(m, *this, direction, vy, an, k, "sliding", holds)};
-    throw SceneError(pos, "friction '" + name + "' slides along a changing direction; its impulse needs the motion in time",
-                     "use friction whose contact slides along a fixed line (x or y)");
-  }
-
-  void pushes(const Model& m, const Analysis& an, const Knowledge& k, std::vector<Push>& out) const override {
-    const bool on_a = acts_on(an, a.body), on_b = b && acts_on(an, b->body);
-    if (!on_a && !on_b) return;
-    if (on_a && on_b) return;  // between two bodies of the set: equal and opposite at one place
-    // kinetic friction −μN û on A against its slip over B at the first state (+μN û on B)
-    Push p;
-    auto [Fx, Fy] = force_on_a(m, an, k, &p.holds);
-    const int sign = on_a ? 1 : -1;
-    p.Fx = sign * Fx;
-    p.Fy = sign * Fy;
-    auto [x, y] = m.position(a);
-    p.arm_x = x;
-    p.arm_y = y;
-    out.push_back(p);
-  }
-
-  // ∫F dt on A over a momentum analysis: the constant −μN û times t₂ − t₁
-  std::pair<ex, ex> impulse(const Model& m, int self, int ai) const override {
-    const Analysis& an = m.analyses[static_cast<std::size_t>(ai)];
-    if (an.instant) return Effect::impulse(m, self, ai);
-    auto [Fx, Fy] = force_on_a(m, an, Knowledge(m));
-    return force_impulse(m, *this, Fx, Fy, an);
-  }
-
-  void motion(const Model& m, int self, simulate::Equations& eq) const override {
-    // the slip velocity of the material point under the friction (over the other body's): the
-    // force −μN û on A and +μN û on B give Q = −μN (∂v_rel/∂q̇)ᵀ û
-    auto [vx, vy] = slip(m);
-    eq.friction.push_back({self, false, simulate::linear_rate(m, vx), simulate::linear_rate(m, vy), mu * normal});
-  }
 };
 
 }  // namespace

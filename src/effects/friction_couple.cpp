@@ -13,27 +13,15 @@ public:
   void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Support, name, 1.2); }
   std::optional<int> direction;  ///< the sign of the rotation it opposes, if declared
 
-  ex power(const Model& m) const override { return -M * abs(m.omega(body)); }  // P = −M |ω|
-
-  principles::Work work(const Model& m, int s1, int s2, const Knowledge& k) const override {
-    // angle turned: dℓ/ds = |∂φ/∂s| along the path
-    auto turned = [&](const principles::Path& p) {
-      ex phi = m.bodies[body].angle.subs(p.q_of_s);
-      return sqrt(model::trig_simplify(pow(phi.diff(m.coords[p.s].q), 2)));
-    };
-    return principles::friction_work(m, *this, direction, M, turned, "U = -M * angle turned", s1, s2, k);
+  // M against the body's turning, its reaction on the ground (a bearing, a brake's frame)
+  std::vector<model::Load> loads(const Model& m) const override {
+    model::Load l = couple_on(m, body, 0, -1);
+    l.kind = model::Load::Kind::Turn;
+    l.size = M;
+    l.direction = direction;
+    return {l};
   }
 
-  void pushes(const Model& m, const Analysis& a, const Knowledge& k, std::vector<Push>& out) const override {
-    if (!on(a)) return;
-    Push p;
-    p.M = -M * principles::motion_direction(m, *this, direction, m.omega(body), a, k, "rotation", &p.holds);
-    out.push_back(p);
-  }
-
-  void motion(const Model& m, int self, simulate::Equations& eq) const override {
-    eq.friction.push_back({self, true, simulate::linear_rate(m, m.omega(body)), {}, M});
-  }
 };
 
 }  // namespace

@@ -21,10 +21,14 @@ public:
 
   bool conservative() const override { return true; }
 
-  std::vector<int> bodies_acted(const Model& m) const override {
-    std::vector<int> all;
-    for (std::size_t b = 0; b < m.bodies.size(); ++b) all.push_back(static_cast<int>(b));
-    return all;
+  // the weight m g ĝ of each body at its mass centre (the earth is not a body of the scene)
+  std::vector<model::Load> loads(const Model& m) const override {
+    std::vector<model::Load> out;
+    for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+      const ex W = m.bodies[b].mass * g;
+      out.push_back(force_at(centre_of(m, static_cast<int>(b)), W * dir_x, W * dir_y));
+    }
+    return out;
   }
 
   ex potential(const Model& m) const override {
@@ -43,30 +47,6 @@ public:
     w.U = model::trig_simplify(-(m.bind(V, a.to) - m.bind(V, a.from)));
     w.how = "U = -(change of m g h) of the bodies analysed";
     return w;
-  }
-
-  void pushes(const Model& m, const Analysis& a, const Knowledge&, std::vector<Push>& out) const override {
-    // the weight m g ĝ of each body of the set, at its mass centre
-    for (int b : a.bodies) {
-      Push p;
-      p.Fx = m.bodies[b].mass * g * dir_x;
-      p.Fy = m.bodies[b].mass * g * dir_y;
-      p.arm_x = m.bodies[b].x;
-      p.arm_y = m.bodies[b].y;
-      out.push_back(p);
-    }
-  }
-
-  std::pair<ex, ex> impulse(const Model& m, int self, int ai) const override {
-    const Analysis& a = m.analyses[ai];
-    if (a.instant) return Effect::impulse(m, self, ai);
-    // ∫ Σ m g ĝ dt over the analysis' bodies
-    ex Fx = 0, Fy = 0;
-    for (int b : a.bodies) {
-      Fx += m.bodies[b].mass * g * dir_x;
-      Fy += m.bodies[b].mass * g * dir_y;
-    }
-    return force_impulse(m, *this, Fx, Fy, a);
   }
 };
 

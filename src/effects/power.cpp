@@ -9,34 +9,15 @@ class Power : public BodyEffect {
 public:
   ex P = 0;
 
+  // the couple P/ω on the body, its reaction on the ground (the drive's frame)
+  std::vector<model::Load> loads(const Model& m) const override {
+    model::Load l = couple_on(m, body, P / m.omega(body), -1);
+    l.singular = " (power drive '" + name + "' gives the couple P/omega: it is infinite at omega = 0)";
+    return {l};
+  }
+
   // a curved arrow round the body's centre: the drive (in the sense of the motion it drives)
   void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 1, Ink::Force, name + " (P)"); }
-
-  ex power(const Model&) const override { return P; }
-
-  principles::Work work(const Model& m, int s1, int s2, const Knowledge&) const override {
-    // U = P (t₂ − t₁)
-    principles::Work w;
-    w.effect = name;
-    w.U = P * (m.states[s2].t - m.states[s1].t);
-    w.how = "U = P (t2 - t1)";
-    return w;
-  }
-
-  void pushes(const Model&, const Analysis& a, const Knowledge&, std::vector<Push>&) const override {
-    if (!on(a)) return;
-    throw SceneError(pos, "a power drive '" + name + "' has no impulse of its own",
-                     "give the drive as a couple or a force, or use an energy analysis");
-  }
-
-  void motion(const Model& m, int self, simulate::Equations& eq) const override {
-    // the couple P/ω on the body: Q_i = (P/ω) ∂φ/∂q_i
-    simulate::ForceTerm f{self, {}, false, P, ""};
-    f.singular = " (power drive '" + name + "' gives the couple P/omega: it is infinite at omega = 0)";
-    ex w = m.omega(body);
-    for (auto& co : m.coords) f.Q.push_back(P * m.bodies[body].angle.diff(co.q) / w);
-    eq.forces.push_back(f);
-  }
 
   std::string start_problem(const Model& m, const GiNaC::exmap& at) const override {
     // its couple P/ω is infinite at ω = 0

@@ -16,8 +16,6 @@ public:
   /// 0: pushes and pulls; −1: only when compressed (a bumper, a stop, a launcher left behind);
   /// +1: only when stretched (an elastic cord)
   int side = 0;
-  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
-
   bool conservative() const override { return side == 0; }
 
   /// Its stretch δ = |r_A − r_B| − L₀ (generic).
@@ -28,6 +26,17 @@ public:
     return m.spring_length(d2) - free;
   }
 
+  // on A: F = −k f(δ) (r_A − r_B)/L, L = |r_A − r_B|, f(δ) = δ, or (δ + σ|δ|)/2 when it acts only
+  // stretched (σ = 1) or compressed (σ = −1); −F on B
+  std::vector<model::Load> loads(const Model& m) const override {
+    auto [xa, ya] = m.position(a);
+    auto [xb, yb] = m.position(b);
+    ex L = m.spring_length(model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2)));
+    ex d = L - free;
+    ex f = side == 0 ? d : (d + side * abs(d)) / 2;
+    return {force_at(a, -k * f * (xa - xb) / L, -k * f * (ya - yb) / L, b)};
+  }
+
   ex potential(const Model& m) const override {
     if (side != 0) return 0;  // one-sided: no potential of q alone (its work is taken part by part)
     // V = ½ k (|r_A − r_B| − L₀)²
@@ -36,29 +45,6 @@ public:
     ex d2 = model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2));
     if (free.is_zero()) return k * d2 / 2;
     return k * pow(m.spring_length(d2) - free, 2) / 2;
-  }
-
-  // one-sided: Q_i = −k g(δ) ∂δ/∂q_i with g(δ) = (δ − |δ|)/2 = min(δ, 0) (compression only) or
-  // (δ + |δ|)/2 = max(δ, 0) (tension only)
-  ex generalized_force(const Model& m, std::size_t i) const override {
-    if (side == 0) return Effect::generalized_force(m, i);
-    ex d = stretch(m);
-    return -k * (d + side * abs(d)) / 2 * d.diff(m.coords[i].q);
-  }
-
-  ex power(const Model& m) const override {
-    if (side == 0) return Effect::power(m);
-    // P = Σ Q_i q̇_i
-    ex P = 0;
-    for (std::size_t i = 0; i < m.coords.size(); ++i) P += generalized_force(m, i) * m.coords[i].qd;
-    return model::collect_simplify(P, m.rates());
-  }
-
-  void motion(const Model& m, int self, simulate::Equations& eq) const override {
-    if (side == 0) return Effect::motion(m, self, eq);
-    std::vector<ex> Q;
-    for (std::size_t i = 0; i < m.coords.size(); ++i) Q.push_back(generalized_force(m, i));
-    eq.forces.push_back(simulate::force_term(m, self, Q, false));
   }
 
   /// Is it engaged at state s (its δ of the acting sign)? nothing when δ there is not known yet.
@@ -123,10 +109,6 @@ public:
                        assumed ? "the body stops (or turns) before the spring: remove it from this analysis ('off:'), or check the state"
                                : "give the position at state '" + m.states[s].name + "' so that it is known whether the spring acts there");
     }
-  }
-
-  void pushes(const Model&, const Analysis& an, const Knowledge&, std::vector<Push>&) const override {
-    refuse_elastic_push(*this, acts_on(an, a.body), acts_on(an, b.body));
   }
 
   // a zigzag from P1 to P2: straight ends, eight teeth between, its name at the middle

@@ -10,38 +10,15 @@ public:
   int body = -1, body2 = -1;
   ex c = 0;
 
+  // the couple −c (ω₁ − ω₂) on the body, its reaction on the second (or the ground)
+  std::vector<model::Load> loads(const Model& m) const override {
+    ex w = m.omega(body) - (body2 >= 0 ? m.omega(body2) : ex(0));
+    return {couple_on(m, body, -c * w, body2)};
+  }
+
   // an arc round the (first) body's centre
   void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Hidden, name, 1.3); }
-  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({body, body2}); }
 
-  /// φ₁ − φ₂ (the body's angle alone when there is no second body)
-  ex relative_angle(const Model& m) const {
-    return m.bodies[body].angle - (body2 >= 0 ? m.bodies[body2].angle : ex(0));
-  }
-
-  ex power(const Model& m) const override {
-    // P = −c (ω₁ − ω₂)²
-    ex w = m.omega(body) - (body2 >= 0 ? m.omega(body2) : ex(0));
-    return model::collect_simplify(-c * w * w, m.rates());
-  }
-
-  principles::Work work(const Model& m, int s1, int s2, const Knowledge&) const override {
-    refuse_speed_dependent_work(m, *this, s1, s2);
-  }
-
-  void pushes(const Model&, const Analysis& a, const Knowledge&, std::vector<Push>&) const override {
-    refuse_elastic_push(*this, acts_on(a, body), acts_on(a, body2));
-  }
-
-  void motion(const Model& m, int self, simulate::Equations& eq) const override {
-    // couple −c (ω₁ − ω₂) on the body (and its reaction on the second),
-    // Q_i = −c (ω₁ − ω₂) ∂(φ₁ − φ₂)/∂q_i
-    ex rel = relative_angle(m);
-    ex w = m.rate(rel);
-    std::vector<ex> Q;
-    for (auto& co : m.coords) Q.push_back(model::collect_simplify(-c * w * rel.diff(co.q), m.rates()));
-    eq.forces.push_back(simulate::force_term(m, self, Q, false));
-  }
 };
 
 }  // namespace

@@ -12,7 +12,11 @@ public:
 
   // a coil round the (first) body's centre
   void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Spring, name, 1.0); }
-  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({body, body2}); }
+  // the couple −k (φ₁ − φ₂ − φ₀) on the body, its reaction on the second (or the ground)
+  std::vector<model::Load> loads(const Model& m) const override {
+    ex phi = m.bodies[body].angle - (body2 >= 0 ? m.bodies[body2].angle : ex(0));
+    return {couple_on(m, body, -k * (phi - free), body2)};
+  }
 
   bool conservative() const override { return true; }
 
@@ -20,10 +24,6 @@ public:
     // V = ½ k (φ − φ₀)²,  φ the body's angle (or relative to a second body)
     ex phi = m.bodies[body].angle - (body2 >= 0 ? m.bodies[body2].angle : ex(0));
     return k * pow(phi - free, 2) / 2;
-  }
-
-  void pushes(const Model&, const Analysis& a, const Knowledge&, std::vector<Push>&) const override {
-    refuse_elastic_push(*this, acts_on(a, body), acts_on(a, body2));
   }
 };
 

@@ -41,6 +41,42 @@ ForceTerm force_term(const model::Model& m, const model::Effect& e, int self) {
   return force_term(m, self, std::move(Q), e.conservative());
 }
 
+void load_terms(const model::Model& m, const model::Effect& e, int self, Equations& eq) {
+  if (e.conservative()) {
+    // a potential's generalized force Q_i = −∂V/∂q_i (a support without one, V = 0, gives none)
+    if (!e.potential(m).is_zero()) eq.forces.push_back(force_term(m, e, self));
+    return;
+  }
+  std::vector<ex> Q(m.coords.size(), 0);
+  bool given = false;
+  std::string singular;
+  for (const model::Load& l : e.loads(m)) {
+    switch (l.kind) {
+      case model::Load::Kind::Given:
+        // Q_i = F·∂(r − r_partner)/∂q_i + M ∂(φ − φ_partner)/∂q_i
+        given = true;
+        for (std::size_t i = 0; i < Q.size(); ++i) Q[i] += model::generalized_force(m, l, i);
+        if (!l.singular.empty()) singular = l.singular;
+        break;
+      case model::Load::Kind::Slide: {
+        // the slip of its point over the partner's: the force −μN û there and +μN û on the
+        // partner give Q = −μN (∂v_rel/∂q̇)ᵀ û
+        auto [vx, vy] = model::relative_velocity(m, l);
+        eq.friction.push_back({self, false, linear_rate(m, vx), linear_rate(m, vy), l.size});
+        break;
+      }
+      case model::Load::Kind::Turn:
+        eq.friction.push_back({self, true, linear_rate(m, model::relative_omega(m, l)), {}, l.size});
+        break;
+    }
+  }
+  if (!given) return;
+  for (auto& q : Q) q = collect_simplify(q, m.rates());
+  ForceTerm f = force_term(m, self, std::move(Q), false);
+  f.singular = singular;
+  eq.forces.push_back(f);
+}
+
 Equations equations_of_motion(const model::Model& m, const std::vector<bool>& on) {
   Equations eq;
   const std::size_t n = m.coords.size();

@@ -49,6 +49,43 @@ struct PointRef {
   ex wx = 0, wy = 0;      ///< fixed point / world place
 };
 
+/// One load an effect puts on a body at a state, as expressions of q, q̇ and t: what its force
+/// law says it does. Principles derive from its loads, once, the effect's generalized force,
+/// power, work, impulse over a duration and terms of the equations of motion.
+///   Given: a force F at `at` (a body point, its mass centre, or its material point at a place)
+///          and a couple M on at's body.
+///   Slide: kinetic friction, a force of size `size` at `at` against its slip over `partner`
+///          (the ground when there is none): F = −size v̂_rel.
+///   Turn:  a friction couple of size `size` on at's body against its turning (relative to
+///          partner's body): M = −size sgn ω_rel.
+/// An interaction names its other party (`partner`): −F acts at that point, −M on its body
+/// (Newton's third law, written once here); a party that is a fixed point or the ground is
+/// not a body, and takes the reaction out of the scene. A load without a partner comes from
+/// outside the bodies (a field, a push the scene gives).
+struct Load {
+  enum class Kind { Given, Slide, Turn };
+  Kind kind = Kind::Given;
+  PointRef at;
+  ex Fx = 0, Fy = 0, M = 0;
+  ex size = 0;
+  std::optional<PointRef> partner;
+  std::optional<int> direction;  ///< Slide/Turn: the declared sign of the motion it opposes
+  std::string singular;          ///< why its value may be undefined (a drive's P/ω at ω = 0), or ""
+};
+
+/// The kinematics a load's force and couple work along (src/model/loads.cpp):
+/// v_rel = v_at − v_partner (the partner's point, 0 for a fixed party or none).
+std::pair<ex, ex> relative_velocity(const Model& m, const Load& l);
+/// ω_rel = ω of at's body − ω of the partner's body (0 for a fixed party or none).
+ex relative_omega(const Model& m, const Load& l);
+/// Q_i = F·∂(r_at − r_partner)/∂q_i + M ∂(φ_at − φ_partner)/∂q_i; Slide: −size v̂_rel·∂v_rel/∂q̇_i;
+/// Turn: −size sgn(ω_rel) ∂ω_rel/∂q̇_i.
+ex generalized_force(const Model& m, const Load& l, std::size_t i);
+/// P = F·v_rel + M ω_rel; Slide: −size |v_rel|; Turn: −size |ω_rel|.
+ex power(const Model& m, const Load& l);
+/// Does it change with the motion (its value holds a coordinate or a rate)?
+bool changes_with_motion(const Model& m, const Load& l);
+
 /// A given impulse J at a point: it acts only in impacts.
 struct Blow {
   PointRef at;
@@ -113,19 +150,21 @@ public:
 
   virtual ~Effect() = default;
 
+  /// What it does to the bodies at a state (none: a support, a contact, a blow).
+  virtual std::vector<Load> loads(const Model&) const { return {}; }
+
   // --- energy ---
   /// V (generic); effects that are not conservative have none.
   virtual bool conservative() const { return false; }
   virtual ex potential(const Model&) const { return 0; }
-  /// Q_i along coordinate i: −∂V/∂q_i for conservative effects, else 0 unless overridden.
-  /// (Friction needs velocities and is not covered here.)
-  virtual ex generalized_force(const Model& m, std::size_t i) const;
-  /// P = Σ Q_i q̇_i (conservative: −dV/dt).
-  virtual ex power(const Model& m) const;
+  /// Q_i along coordinate i: −∂V/∂q_i for conservative effects, else from its loads.
+  ex generalized_force(const Model& m, std::size_t i) const;
+  /// P = Σ Q_i q̇_i (conservative: −dV/dt), else from its loads.
+  ex power(const Model& m) const;
   /// The work of a non-conservative effect between two states (state symbols).
   virtual principles::Work work(const Model& m, int s1, int s2, const principles::Knowledge& k) const;
-  /// The bodies it acts on (a fixed party is not a body; gravity: every body).
-  virtual std::vector<int> bodies_acted(const Model&) const { return {}; }
+  /// The bodies it acts on (a fixed party is not a body; gravity: every body): its loads' by default.
+  virtual std::vector<int> bodies_acted(const Model& m) const;
   /// Its work on the bodies of energy analysis `a` when it acts on some of them and on bodies
   /// outside too (a weight: the set's own; a constraint: its unknown average force times the
   /// distance its point moves along it). @throws SceneError when that work is not known.

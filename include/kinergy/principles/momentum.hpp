@@ -41,6 +41,16 @@ bool motion_free(const model::Model& m, const ex& e);
 int motion_direction(const model::Model& m, const model::Effect& e, std::optional<int> declared, const ex& generic,
                      const model::Analysis& a, const Knowledge& k, const std::string& what, std::vector<Condition>* holds = nullptr);
 
+/// The pushes of an effect's loads on the bodies of a momentum analysis (src/principles/loads.cpp):
+/// each load on a body of the set (its partner's reaction, when only the partner is in the set);
+/// none for an interaction inside the set; kinetic friction in the sense against the motion at
+/// the first state. @throws SceneError for an interaction whose load changes with the motion.
+void load_pushes(const model::Model& m, const model::Effect& e, const model::Analysis& a, const Knowledge& k,
+                 std::vector<Push>& out);
+/// ∫F dt over analysis `ai` of the effect's forces on its bodies (those on the analysis' set,
+/// where it has some). @throws InputError in an impact, or when a force changes with the motion.
+std::pair<ex, ex> load_impulse(const model::Model& m, const model::Effect& e, int ai);
+
 /// One external impulse in a component equation.
 struct ImpulseTerm {
   std::string effect;

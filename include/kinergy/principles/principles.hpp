@@ -92,6 +92,12 @@ struct Path {
 };
 std::optional<Path> one_dof_path(const model::Model& m, int s1, int s2);
 
+/// The work of an effect between two states from its loads (src/principles/loads.cpp): a force or
+/// couple by its generalized forces; a drive of given power P, ∫P dt; kinetic friction, −μN
+/// times the distance slid (a friction couple: −M times the angle turned). @throws SceneError
+/// when it depends on the speeds along the way (a damper).
+Work load_work(const model::Model& m, const model::Effect& e, int s1, int s2, const Knowledge& k);
+
 /// The work of a force or couple from its generalized forces Q_i (constant in time):
 /// Φ(q₂) − Φ(q₁) when Σ Q_i dq_i = dΦ, else the integral along the one-coordinate path.
 /// `what` names it in messages ("couple", "force"); `how` is the exact case's formula. `k`: what

@@ -87,6 +87,9 @@ LinearRate linear_rate(const model::Model& m, const ex& v);
 /// The term of an effect from its generalized forces Q_i = e.generalized_force(i) (with its power
 /// when it is not conservative).
 ForceTerm force_term(const model::Model& m, const model::Effect& e, int self);
+/// The terms of an effect from its loads (a conservative one: Q = −∂V/∂q; kinetic friction: its
+/// slip and limit; the rest: Q_i from the loads, with their power).
+void load_terms(const model::Model& m, const model::Effect& e, int self, Equations& eq);
 /// The term of effect `self` with the given Q_i.
 ForceTerm force_term(const model::Model& m, int self, std::vector<ex> Q, bool conservative);
 

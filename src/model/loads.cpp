@@ -1,0 +1,91 @@
+// The kinematics of a load: what its force and couple do work along, once for every effect kind.
+#include <cmath>
+
+#include "kinergy/model/model.hpp"
+#include "kinergy/model/simplify.hpp"
+
+namespace kinergy::model {
+
+namespace {
+
+/// The angle of a party's body, 0 for a fixed party.
+ex angle_of(const Model& m, const PointRef& p) { return p.body >= 0 && !p.ground ? m.bodies[p.body].angle : ex(0); }
+
+std::pair<ex, ex> velocity_of(const Model& m, const PointRef& p) {
+  if (p.body < 0 || p.ground) return {0, 0};
+  return m.velocity(p);
+}
+
+}  // namespace
+
+std::pair<ex, ex> relative_velocity(const Model& m, const Load& l) {
+  // v_rel = v_at − v_partner
+  auto [vx, vy] = velocity_of(m, l.at);
+  if (!l.partner) return {vx, vy};
+  auto [ux, uy] = velocity_of(m, *l.partner);
+  return {vx - ux, vy - uy};
+}
+
+ex relative_omega(const Model& m, const Load& l) {
+  // ω_rel = dφ_at/dt − dφ_partner/dt
+  return m.rate(angle_of(m, l.at) - (l.partner ? angle_of(m, *l.partner) : ex(0)));
+}
+
+ex generalized_force(const Model& m, const Load& l, std::size_t i) {
+  const GiNaC::symbol& q = m.coords[i].q;
+  switch (l.kind) {
+    case Load::Kind::Given: {
+      // Q_i = F·∂(r_at − r_partner)/∂q_i + M ∂(φ_at − φ_partner)/∂q_i
+      auto [dx, dy] = m.position_derivative(l.at, q);
+      ex dphi = angle_of(m, l.at).diff(q);
+      if (l.partner) {
+        auto [px, py] = m.position_derivative(*l.partner, q);
+        dx -= px;
+        dy -= py;
+        dphi -= angle_of(m, *l.partner).diff(q);
+      }
+      return l.Fx * dx + l.Fy * dy + l.M * dphi;
+    }
+    case Load::Kind::Slide: {
+      // F = −size v̂_rel:  Q_i = −size (v_rel·∂v_rel/∂q̇_i)/|v_rel|
+      auto [vx, vy] = relative_velocity(m, l);
+      const GiNaC::symbol& qd = m.coords[i].qd;
+      return -l.size * (vx * vx.diff(qd) + vy * vy.diff(qd)) / sqrt(trig_simplify(vx * vx + vy * vy));
+    }
+    case Load::Kind::Turn: {
+      // M = −size sgn ω_rel:  Q_i = −size ω_rel/|ω_rel| ∂ω_rel/∂q̇_i
+      ex w = relative_omega(m, l);
+      return -l.size * w / abs(w) * w.diff(m.coords[i].qd);
+    }
+  }
+  return 0;
+}
+
+ex power(const Model& m, const Load& l) {
+  switch (l.kind) {
+    case Load::Kind::Given: {
+      // P = F·v_rel + M ω_rel
+      auto [vx, vy] = relative_velocity(m, l);
+      ex P = l.Fx * vx + l.Fy * vy;
+      if (!l.M.is_zero()) P += l.M * relative_omega(m, l);
+      return P;
+    }
+    case Load::Kind::Slide: {
+      // P = −size |v_rel|: F·v_at on the one plus (−F)·v_partner on the other
+      auto [vx, vy] = relative_velocity(m, l);
+      return -l.size * sqrt(trig_simplify(vx * vx + vy * vy));
+    }
+    case Load::Kind::Turn:
+      return -l.size * abs(relative_omega(m, l));  // P = −size |ω_rel|
+  }
+  return 0;
+}
+
+bool changes_with_motion(const Model& m, const Load& l) {
+  for (auto& c : m.coords)
+    for (const ex& e : {l.Fx, l.Fy, l.M, l.size})
+      if (e.has(c.q) || e.has(c.qd)) return true;
+  return false;
+}
+
+}  // namespace kinergy::model
