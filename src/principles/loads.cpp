@@ -151,14 +151,14 @@ Work load_work(const Model& m, const Effect& e, int s1, int s2, const Knowledge&
                                    "U = -mu N * distance slid" + std::string(two ? " (of one body over the other)" : ""), s1, s2, k))
         return *w;
     // distance slid: dℓ/ds = |v_rel| at ṡ = 1 with the others following
-    auto slid = [&](const Path& p) {
+    auto slid = [&, slip_x = sx, slip_y = sy](const Path& p) {
       const GiNaC::symbol& s = m.coords[p.s].q;
       GiNaC::exmap rates;
       for (std::size_t j = 0; j < m.coords.size(); ++j) {
         ex qj = j == p.s ? ex(s) : m.coords[j].q.subs(p.q_of_s);
         rates[m.coords[j].qd] = qj.diff(s);
       }
-      ex vx = sx.subs(rates).subs(p.q_of_s), vy = sy.subs(rates).subs(p.q_of_s);
+      ex vx = slip_x.subs(rates).subs(p.q_of_s), vy = slip_y.subs(rates).subs(p.q_of_s);
       return sqrt(model::trig_simplify(vx * vx + vy * vy));
     };
     return friction_work(m, e, l.direction, l.size, slid, "U = -mu N * distance", s1, s2, k);
