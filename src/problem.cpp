@@ -592,7 +592,7 @@ private:
   void check_declared(const solve::Branch& b) const {
     const exmap values = numbers_of(b);
     for (auto& e : m.effects)
-      for (std::size_t s = 0; s < m.states.size(); ++s) e.check_state(m, static_cast<int>(s), values);
+      for (std::size_t s = 0; s < m.states.size(); ++s) e.check(m, static_cast<int>(s), values);
     // what the equations took for granted (a switching force passed, a declared direction of
     // sliding): e ≥ 0
     auto hold = [&](const principles::Condition& c) {

@@ -46,7 +46,6 @@ public:
   }
   std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
-  bool conservative() const override { return true; }  // V = 0: workless on the whole system
   bool carries(std::size_t k) const override { return k == index; }
 
   bool reaction_across(const std::vector<int>& set) const override {
@@ -145,6 +144,7 @@ void place(EffectReader& r, PointRef& p, const scene::Node& at) {
 
 std::shared_ptr<Effect> read_constraint(EffectReader& r, const EffectDef& ed) {
   auto e = make<Constraint>(ed);
+  e->has_potential = true;  // V = 0: workless on the whole system
   r.only(ed, {"between", "at"});
   const Model& m = r.model();
   scene::Text rel = r.text_of(ed.arg, "constraint", "\"rA*phiA + rB*phiB = 0\"");

@@ -31,8 +31,6 @@ public:
     return {force_at(a, P * (xb - xa) / L, P * (yb - ya) / L, b)};
   }
 
-  bool conservative() const override { return true; }
-
   ex potential(const Model& m) const override {
     // V = P |r_A − r_B|  (the work of the pull is −ΔV = P (L₁ − L₂))
     auto [xa, ya] = m.position(a);
@@ -45,6 +43,7 @@ public:
 
 std::shared_ptr<Effect> read_cord_pull(EffectReader& r, const EffectDef& ed) {
   auto e = make<CordPull>(ed);
+  e->has_potential = true;
   r.only(ed, {"P"});
   std::tie(e->a, e->b) = two_points(r, ed, "a cord pull runs between two points",
                                      "write 'cord_pull: [collar, D]' (the point pulled, then the guide)");

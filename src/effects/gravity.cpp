@@ -19,8 +19,6 @@ public:
     }
   }
 
-  bool conservative() const override { return true; }
-
   // the weight m g ĝ of each body at its mass centre (the earth is not a body of the scene)
   std::vector<model::Load> loads(const Model& m) const override {
     std::vector<model::Load> out;
@@ -55,6 +53,7 @@ public:
 std::shared_ptr<Effect> read_gravity(EffectReader& r, const EffectDef& ed) {
   const Dimension L = Dimension::length(), T = Dimension::time();
   auto e = make<Gravity>(ed);
+  e->has_potential = true;
   r.only(ed, {"g", "direction"});
   scene::Node gnode = ed.arg.is_scalar() ? ed.arg : r.option(ed, "g", "g");
   if (ed.arg.is_scalar() && ed.options.get("g"))

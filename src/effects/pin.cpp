@@ -13,8 +13,6 @@ public:
   PointRef a, b;
   std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
-  bool conservative() const override { return true; }  // V = 0
-
   bool holds(int body) const override { return a.body == body || b.body == body; }
 
   bool reaction_across(const std::vector<int>& set) const override {
@@ -152,6 +150,7 @@ void check_pin(const Model& m, const Pin& e, const SourcePos& pos) {
 
 std::shared_ptr<Effect> read_pin(EffectReader& r, const EffectDef& ed) {
   auto e = make<Pin>(ed);
+  e->has_potential = true;  // V = 0: it does no work
   r.only(ed, {});
   std::tie(e->a, e->b) = two_points(r, ed, "a pin joins two points", "write 'pin: [O, bar.O]'");
   check_pin(r.model(), *e, ed.arg.pos);

@@ -12,20 +12,12 @@ public:
   // the couple P/ω on the body, its reaction on the ground (the drive's frame)
   std::vector<model::Load> loads(const Model& m) const override {
     model::Load l = couple_on(m, body, P / m.omega(body), -1);
-    l.singular = " (power drive '" + name + "' gives the couple P/omega: it is infinite at omega = 0)";
+    l.singular = "power drive '" + name + "' gives the couple P/omega: it is infinite at omega = 0";
     return {l};
   }
 
   // a curved arrow round the body's centre: the drive (in the sense of the motion it drives)
   void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 1, Ink::Force, name + " (P)"); }
-
-  std::string start_problem(const Model& m, const GiNaC::exmap& at) const override {
-    // its couple P/ω is infinite at ω = 0
-    ex w = m.omega(body).subs(at).evalf();
-    if (GiNaC::is_a<GiNaC::numeric>(w) && GiNaC::ex_to<GiNaC::numeric>(w).is_zero())
-      return "power drive '" + name + "' starts from rest, where its couple P/omega is infinite";
-    return "";
-  }
 };
 
 }  // namespace

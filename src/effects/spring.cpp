@@ -16,8 +16,6 @@ public:
   /// 0: pushes and pulls; −1: only when compressed (a bumper, a stop, a launcher left behind);
   /// +1: only when stretched (an elastic cord)
   int side = 0;
-  bool conservative() const override { return side == 0; }
-
   /// Its stretch δ = |r_A − r_B| − L₀ (generic).
   ex stretch(const Model& m) const {
     auto [xa, ya] = m.position(a);
@@ -85,8 +83,8 @@ public:
   }
 
   // the states solved as the energy equations took them: engaged where assumed
-  void check_state(const Model& m, int s, const GiNaC::exmap& values) const override {
-    if (side == 0) return;
+  void check(const Model& m, int s, const GiNaC::exmap& values) const override {
+    if (s < 0 || side == 0) return;
     Knowledge before(m);
     for (auto& an : m.analyses) {
       if (an.type->impulsive() || (an.from != s && an.to != s) || activity(an) == Activity::None) continue;
@@ -134,6 +132,7 @@ public:
 
 std::shared_ptr<Effect> read_spring(EffectReader& r, const EffectDef& ed) {
   auto e = make<Spring>(ed);
+  e->has_potential = true;  // V = ½ k δ² (one-sided: none of q alone, below)
   r.only(ed, {"k", "free_length", "acts"});
   std::tie(e->a, e->b) = two_points(r, ed, "a spring joins two points", "write 'spring: [A, bar.B]'");
   const scene::Node& kn = r.option(ed, "k", "k");
@@ -150,6 +149,7 @@ std::shared_ptr<Effect> read_spring(EffectReader& r, const EffectDef& ed) {
       throw SceneError(acts->pos, "'acts' must be compression, tension or both",
                        "write 'acts: compression' for a bumper or a launcher the body leaves");
     e->side = acts->scalar == "compression" ? -1 : acts->scalar == "tension" ? 1 : 0;
+    e->has_potential = e->side == 0;
     if (e->side != 0 && e->free.is_zero())
       throw SceneError(acts->pos, "a spring that acts only in " + acts->scalar + " needs its free length",
                        "add 'free_length: L0'");

@@ -18,8 +18,6 @@ public:
     return {couple_on(m, body, -k * (phi - free), body2)};
   }
 
-  bool conservative() const override { return true; }
-
   ex potential(const Model& m) const override {
     // V = ½ k (φ − φ₀)²,  φ the body's angle (or relative to a second body)
     ex phi = m.bodies[body].angle - (body2 >= 0 ? m.bodies[body2].angle : ex(0));
@@ -31,6 +29,7 @@ public:
 
 std::shared_ptr<Effect> read_torsion_spring(EffectReader& r, const EffectDef& ed) {
   auto e = make<TorsionSpring>(ed);
+  e->has_potential = true;
   r.only(ed, {"k", "free_angle"});
   std::tie(e->body, e->body2) = r.one_or_two_bodies(ed, "a torsion spring");
   e->k = r.quantity(r.text_of(r.option(ed, "k", "k_t"), "k", "k_t"), false, energy_dim(), "k",

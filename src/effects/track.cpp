@@ -28,7 +28,6 @@ public:
   std::string shape;  ///< "the line through [..] along [..]", "the circle of centre [..] and radius R"
   SourcePos arg_pos;  ///< where its point is named
 
-  bool conservative() const override { return true; }  // V = 0: a smooth track does no work
   std::vector<int> bodies_acted(const Model&) const override { return bodies_of({p.body}); }
 
   bool reaction_across(const std::vector<int>& set) const override { return p.body >= 0 && principles::in_set(set, p.body); }
@@ -114,7 +113,12 @@ public:
   }
 
   // for every value of the coordinates, when no constraint relates them (else: at the states)
-  void check_model(const Model& m) const override {
+  void check(const Model& m, int state, const GiNaC::exmap& values) const override {
+    if (state < 0) check_everywhere(m);
+    else check_at(m, state, values);
+  }
+
+  void check_everywhere(const Model& m) const {
     if (!m.constraints.empty()) return;
     for (GiNaC::exmap& at : random_positions(m, m.numeric_environment(), 4242)) {
       std::string off = off_track(m, at);
@@ -128,7 +132,7 @@ public:
     }
   }
 
-  void check_state(const Model& m, int state, const GiNaC::exmap& values) const override {
+  void check_at(const Model& m, int state, const GiNaC::exmap& values) const {
     GiNaC::exmap at = values;
     for (auto& c : m.coords) {
       auto it = values.find(m.states[state].sym.at(c.name).first);
@@ -148,6 +152,7 @@ public:
 
 std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
   auto e = make<Track>(ed);
+  e->has_potential = true;  // V = 0: a smooth track does no work
   r.only(ed, {"line", "circle", "offset"});
   e->p = r.point_ref(ed.arg, ed.kind);
   e->arg_pos = ed.arg.pos;

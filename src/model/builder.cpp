@@ -485,7 +485,7 @@ private:
         throw SceneError(ed.pos, "effect '" + e->name + "' is defined twice", "rename one");
       m_.effects.push_back(e);
     }
-    for (auto& e : m_.effects) e.check_model(m_);
+    for (auto& e : m_.effects) e.check(m_, -1, {});
   }
 
   void states() {

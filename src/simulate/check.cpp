@@ -202,8 +202,20 @@ std::vector<Leg> legs(const Solution& s) {
         at[m.coords[i].q] = numerics::exact(leg.start.q[i]);
         at[m.coords[i].qd] = numerics::exact(leg.start.qd[i]);
       }
+      at[m.t] = numerics::exact(leg.start.t);
+      // a load that may be undefined (it says why) and has no value at the start
+      auto undefined = [&](const ex& v) {
+        try {
+          ex x = v.subs(at).evalf();
+          return !GiNaC::is_a<GiNaC::numeric>(x) || !std::isfinite(GiNaC::ex_to<GiNaC::numeric>(x).to_double());
+        } catch (const std::exception&) {
+          return true;  // (a division by zero)
+        }
+      };
       for (auto& e : m.effects)
-        if (leg.why_not.empty()) leg.why_not = e.start_problem(m, at);
+        for (const model::Load& l : e.loads(m))
+          if (leg.why_not.empty() && !l.singular.empty() && (undefined(l.Fx) || undefined(l.Fy) || undefined(l.M)))
+            leg.why_not = l.singular + ", and the run would start there";
     }
     out.push_back(leg);
   }

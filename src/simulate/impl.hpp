@@ -565,7 +565,7 @@ struct Simulator::Impl {
     SourcePos at;
     for (auto& F : eq.forces)
       if (!F.singular.empty()) {
-        who = F.singular;
+        who = " (" + F.singular + ")";
         at = m.effects[F.effect].pos;
       }
     throw SimulationError("the acceleration is not a number at t = " + num(t) + " s" + who,

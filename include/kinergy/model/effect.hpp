@@ -140,6 +140,9 @@ public:
   /// Acts from state `on` to state `off` (indices in the order the states are listed; −1: from
   /// the first, to the last): a motor disconnected at 2, a brake applied from 2 on.
   int on = -1, off = -1;
+  /// It has a potential V (`potential`), set by its kind: its work is −ΔV, its Q_i = −∂V/∂q_i (a
+  /// support that does no work has V = 0).
+  bool has_potential = false;
 
   /// How it acts over an analysis: throughout, not at all, or in part (switched inside it).
   enum class Activity { Whole, None, Part };
@@ -155,7 +158,7 @@ public:
 
   // --- energy ---
   /// V (generic); effects that are not conservative have none.
-  virtual bool conservative() const { return false; }
+  bool conservative() const { return has_potential; }
   virtual ex potential(const Model&) const { return 0; }
   /// Q_i along coordinate i: −∂V/∂q_i for conservative effects, else from its loads.
   ex generalized_force(const Model& m, std::size_t i) const;
@@ -212,14 +215,11 @@ public:
   /// Draw itself into a figure of the scene at a state (`at` gives numbers of expressions
   /// there): a pin as a joint, a spring as a zigzag, a force as an arrow … Nothing by default.
   virtual void draw(const Model& /*m*/, const draw::At& /*at*/, draw::Figure& /*f*/) const {}
-  /// Check what it declares for every value of the coordinates, once every effect is read (the
-  /// constraints complete). @throws SceneError when it does not hold.
-  virtual void check_model(const Model&) const {}
-  /// Check what it declares at a solved state (`values`: state symbols and parameters → numbers).
-  /// @throws SceneError when the state breaks it (a point off its track).
-  virtual void check_state(const Model&, int /*state*/, const GiNaC::exmap& /*values*/) const {}
-  /// Why a simulation cannot start at these values of q, q̇ (parameters included), or "".
-  virtual std::string start_problem(const Model&, const GiNaC::exmap& /*at*/) const { return ""; }
+  /// Check what it declares: with `state` −1, for every value of the coordinates, once every
+  /// effect is read (the constraints complete); else at that solved state (`values`: state
+  /// symbols and parameters → numbers). @throws SceneError when it does not hold (a point off its
+  /// track).
+  virtual void check(const Model&, int /*state*/, const GiNaC::exmap& /*values*/) const {}
 };
 
 /// The effects of a model, iterated as `const Effect&`.
