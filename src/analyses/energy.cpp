@@ -1,5 +1,6 @@
 // Work–energy between two states: T₁ + V₁ + Σ U₁→₂ = T₂ + V₂ (conservation when no work is done).
 #include "common.hpp"
+#include "kinergy/principles/momentum.hpp"
 
 namespace kinergy::analyses {
 
@@ -20,7 +21,8 @@ public:
     const model::Model& m = r.model();
     const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;
     for (auto& e : m.effects) {
-      if (!e.reaction_across(a.bodies) || !e.works_across(m, a.bodies)) continue;
+      auto rea = e.reaction(m);
+      if (!rea || !principles::works_across(m, *rea, a.bodies)) continue;
       GiNaC::ex F = r.unknown("F_" + e.name + "[" + S1 + "," + S2 + "]", units::Dimension::mass() * units::Dimension::length() /
                                                                      (units::Dimension::time() * units::Dimension::time()));
       a.reactions[e.name] = {F};

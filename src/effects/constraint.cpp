@@ -44,84 +44,20 @@ public:
       f.label((x1 + x2) / 2, (y1 + y2) / 2, name);
     }
   }
-  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({a.body, b.body}); }
 
-  bool carries(std::size_t k) const override { return k == index; }
-
-  bool reaction_across(const std::vector<int>& set) const override {
-    auto in = [&](int x) { return x >= 0 && principles::in_set(set, x); };
-    return in(a.body) != in(b.body);
+  // J û on party a, −J û on party b: the force of the relation's multiplier, λ f
+  std::optional<model::Reaction> reaction(const Model&) const override {
+    model::Reaction r;
+    r.kind = model::Reaction::Kind::Relation;
+    r.a = a;
+    r.b = b;
+    r.dir_x = ux;
+    r.dir_y = uy;
+    r.fx = fx;
+    r.fy = fy;
+    r.constraint = index;
+    return r;
   }
-  std::vector<std::string> reaction_parts() const override { return {"J"}; }
-
-  /// How its impulse is named in a derivation: on which party, along which direction.
-  std::string along(bool on_a) const {
-    const PointRef& p = on_a ? a : b;
-    return "on " + p.text + ", along " + (on_a ? "" : "-") + "[" + model::text(ux) + ", " + model::text(uy) + "]";
-  }
-
-  void pushes(const Model& m, const Analysis& an, const Knowledge&, std::vector<Push>& out) const override {
-    bool ia = acts_on(an, a.body), ib = acts_on(an, b.body);
-    if (ia == ib) return;  // internal to the set, or not acting on it
-    auto it = an.reactions.find(name);
-    if (it == an.reactions.end()) return;
-    // on party a: J û; on party b: −J û
-    ex J = ia ? it->second[0] : -it->second[0];
-    Push p;
-    p.unknown = true;
-    p.reaction = true;
-    p.Rx = J * ux;
-    p.Ry = J * uy;
-    auto [x, y] = m.position(ia ? a : b);
-    p.arm_x = x;
-    p.arm_y = y;
-    p.what = "reaction impulse (unknown) " + along(ia);
-    out.push_back(p);
-  }
-
-  std::pair<ex, ex> impulse(const Model& m, int, int ai) const override {
-    const Analysis& an = m.analyses[ai];
-    if (an.instant) {
-      // the impulsive reaction λ of the relation: Λ f on party a
-      const ex& lam = an.lambdas.at(index);
-      return {lam * m.bind(fx, an.from), lam * m.bind(fy, an.from)};
-    }
-    auto it = an.reactions.find(name);
-    if (it == an.reactions.end())
-      throw InputError("constraint '" + name + "' does not join the bodies of the analysis between states " + m.states[an.from].name +
-                           " and " + m.states[an.to].name + " to the rest",
-                       "list in 'bodies' one of its parties (" + a.text + ", " + b.text + ") and not the other");
-    if (!principles::motion_free(m, ux) || !principles::motion_free(m, uy))
-      throw InputError("the force of constraint '" + name + "' turns with the motion (along [" + model::text(ux) + ", " +
-                           model::text(uy) + "]), so its impulse has no components fixed by the analysis",
-                       "ask for its impulse in an impact, or for the angular impulse it gives");
-    return {it->second[0] * ux, it->second[0] * uy};
-  }
-
-  bool works_across(const Model&, const std::vector<int>& set) const override { return reaction_across(set); }
-
-  // Its work on the set: the force F̄ û on the party inside (−F̄ û for the second party), at its
-  // point P: U = F̄ ∫ ±û·dr_P, F̄ the average force over the distance, an unknown. As generalized
-  // forces per unit F̄: Q_i = ±û·∂r_P/∂q_i.
-  principles::Work work_across(const Model& m, const Analysis& an, const Knowledge&) const override {
-    bool ia = acts_on(an, a.body);
-    auto it = an.reactions.find(name);
-    if (it == an.reactions.end()) throw std::logic_error("constraint '" + name + "' has no unknown in this energy analysis");
-    const PointRef& p = ia ? a : b;
-    ex sign = ia ? 1 : -1;
-    std::vector<ex> Q;
-    for (auto& co : m.coords) {
-      auto [dx, dy] = m.position_derivative(p, co.q);
-      Q.push_back(model::trig_simplify(sign * (ux * dx + uy * dy)));
-    }
-    principles::Work w = principles::generalized_force_work(m, *this, Q, "constraint force", "", an.from, an.to);
-    w.U = it->second[0] * w.U;
-    w.how = "U = F (average) times the distance " + p.text + " moves along " + (ia ? "" : "-") + "[" + model::text(ux) + ", " +
-            model::text(uy) + "]";
-    return w;
-  }
-
-  void motion(const Model&, int, simulate::Equations&) const override {}  // the relation is among the constraints
 };
 
 /// A party named by a bare body name, to be placed at `at`.

@@ -18,21 +18,16 @@ const Contact& contact(const Model& m, int i) {
 
 const Contact* as_contact(const Effect& e) { return dynamic_cast<const Contact*>(&e); }
 
-std::pair<ex, ex> Contact::impulse(const Model& m, int, int ai) const {
-  const Analysis& an = m.analyses[ai];
-  auto it = an.contact_impulses.find(name);
-  if (it == an.contact_impulses.end())
-    throw InputError("contact '" + name + "' takes no part in an impact between states " + m.states[an.from].name + " and " +
-                         m.states[an.to].name,
-                     "name it in the impact's 'contact' or 'contacts'");
-  // P = J n + Jt t,  t = (−n_y, n_x)
-  auto [J, Jt] = it->second;
-  return {J * nx - Jt * ny, J * ny + Jt * nx};
-}
-
-// `impulse(hit, S1, S2)` of a contact is J, its impulse along n
-ex Contact::impulse_size(const Model& m, int ai, const ex&, const ex&) const {
-  return m.analyses[ai].contact_impulses.at(name).first;
+std::optional<model::Reaction> Contact::reaction(const Model&) const {
+  model::Reaction r;
+  r.kind = model::Reaction::Kind::Contact;
+  r.a = a;
+  r.b = b;
+  r.dir_x = nx;
+  r.dir_y = ny;
+  r.e = e;
+  r.stick = stick;
+  return r;
 }
 
 // the contact: its surface (a line across n̂ through the first party's point) and n̂ as a short
@@ -51,49 +46,6 @@ void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
   f.arrow(x, y, x + ux * g * 2, y + uy * g * 2, draw::Ink::Thin);
   f.label(x + ux * g * 2, y + uy * g * 2, name + " n");
 }
-
-std::pair<ex, ex> Contact::impact_impulse_on(const Model& m, int body, int ai) const {
-  if (!m.analyses[ai].contact_impulses.count(name)) return {0, 0};
-  // P acts on the second party, −P on the first
-  auto [Px, Py] = impulse(m, -1, ai);
-  int sign = (b.body == body ? 1 : 0) - (a.body == body ? 1 : 0);
-  return {sign * Px, sign * Py};
-}
-
-ex Contact::impact_loss(const Model& m, int ai) const {
-  const Analysis& an = m.analyses[ai];
-  if (!an.instant) return Effect::impact_loss(m, ai);
-  auto it = an.contact_impulses.find(name);
-  if (it == an.contact_impulses.end())
-    throw InputError("contact '" + name + "' takes no part in that impact", "name it in the impact's contacts");
-  auto [J, Jt] = it->second;
-  auto vel = [&](const PointRef& p) -> std::pair<ex, ex> {
-    if (p.ground) return {0, 0};
-    return m.velocity(p);
-  };
-  auto [vbx, vby] = vel(b);
-  auto [vax, vay] = vel(a);
-  ex vn = m.bind((vbx - vax) * nx + (vby - vay) * ny, an.from);
-  ex vt = m.bind(-(vbx - vax) * ny + (vby - vay) * nx, an.from);
-  // T⁺ − T⁻ = Σ P·(v⁻ + v⁺)/2 with v_n⁺ = −e v_n⁻ and (stick) v_t⁺ = 0:
-  //   lost = −½ [(1 − e) J v_n⁻ + Jt v_t⁻]
-  return -((1 - e) * J * vn + (stick ? ex(Jt * vt) : ex(0))) / 2;
-}
-
-void Contact::motion(const Model& m, int self, simulate::Equations& eq) const {
-  // gap along the normal from party a into party b: g = (r_b − r_a)·n̂ (the plane through a
-  // perpendicular to n̂); its rate is the normal approach speed
-  auto [xa, ya] = m.position(a);
-  auto [xb, yb] = m.position(b);
-  simulate::ContactTerm c{self, model::trig_simplify((xb - xa) * nx + (yb - ya) * ny), {}, {}, e, stick};
-  auto [vax, vay] = m.velocity(a);
-  auto [vbx, vby] = m.velocity(b);
-  c.normal = simulate::linear_rate(m, (vbx - vax) * nx + (vby - vay) * ny);
-  c.tangent = simulate::linear_rate(m, -(vbx - vax) * ny + (vby - vay) * nx);
-  eq.contacts.push_back(c);
-}
-
-std::vector<int> Contact::bodies_acted(const Model&) const { return bodies_of({a.body, b.body}); }
 
 std::shared_ptr<Effect> Contact::read(EffectReader& r, const EffectDef& ed) {
   auto c = make<Contact>(ed);

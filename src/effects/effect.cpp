@@ -1,4 +1,5 @@
-// What an effect answers when its kind says nothing else: no potential, no work, no impulse.
+// What every effect answers the same way, from what its kind declares (its loads, its potential,
+// its reaction, a given impulse): the principles' derivations, once.
 #include "kinergy/model/effect.hpp"
 
 #include <algorithm>
@@ -45,13 +46,19 @@ ex Effect::power(const Model& m) const {
 
 std::vector<int> Effect::bodies_acted(const Model& m) const {
   std::vector<int> out;
+  auto add_body = [&](int b) {
+    if (b >= 0 && std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
+  };
   auto add = [&](const PointRef& p) {
-    if (p.body >= 0 && !p.ground && std::find(out.begin(), out.end(), p.body) == out.end()) out.push_back(p.body);
+    if (!p.ground) add_body(p.body);
   };
   for (const Load& l : loads(m)) {
     add(l.at);
     if (l.partner) add(*l.partner);
   }
+  if (auto r = reaction(m))
+    for (int b : r->bodies()) add_body(b);
+  if (const Blow* j = blow()) add(j->at);
   return out;
 }
 
@@ -60,23 +67,74 @@ principles::Work Effect::work(const Model& m, int s1, int s2, const principles::
 }
 
 principles::Work Effect::work_across(const Model& m, const Analysis& a, const principles::Knowledge&) const {
-  std::string all;
-  for (int b : bodies_acted(m)) all += (all.empty() ? "" : ", ") + m.bodies[b].name;
-  throw SceneError(a.pos, "effect '" + name + "' (" + kind + ") acts on bodies inside this energy analysis' set and outside it; its work on the set alone is not known",
-                   "list in 'bodies' every body it acts on (" + all + "), or name the interaction as a constraint effect "
-                   "('NAME: {constraint: \"…\", between: [A, B], at: [x, y]}') so that its average force is an unknown");
+  auto r = reaction(m);
+  return principles::reaction_work_across(m, *this, r ? &*r : nullptr, a);
 }
 
 void Effect::pushes(const Model& m, const Analysis& a, const principles::Knowledge& k, std::vector<principles::Push>& out) const {
   principles::load_pushes(m, *this, a, k, out);
+  if (auto r = reaction(m)) principles::reaction_pushes(m, *this, *r, a, out);
+  if (const Blow* j = blow(); j && j->at.body >= 0 && principles::in_set(a.bodies, j->at.body)) {
+    principles::Push p;  // the impulse itself (no time integral)
+    p.Rx = j->Jx;
+    p.Ry = j->Jy;
+    p.unknown = true;
+    std::tie(p.arm_x, p.arm_y) = m.position(j->at);
+    out.push_back(p);
+  }
 }
 
-std::pair<ex, ex> Effect::impulse(const Model& m, int, int ai) const { return principles::load_impulse(m, *this, ai); }
+std::pair<ex, ex> Effect::impulse(const Model& m, int self, int ai) const {
+  if (auto r = reaction(m)) return principles::reaction_impulse(m, *this, *r, self, ai);
+  if (const Blow* j = blow()) {
+    // (switched off, or not yet on, over the analysis: it does not strike there)
+    if (activity(m.analyses[static_cast<std::size_t>(ai)]) == Activity::None) return {0, 0};
+    return {j->Jx, j->Jy};
+  }
+  return principles::load_impulse(m, *this, ai);
+}
 
-ex Effect::impulse_size(const Model&, int, const ex& x, const ex& y) const { return sqrt(x * x + y * y); }
+ex Effect::impulse_size(const Model& m, int ai, const ex& x, const ex& y) const {
+  // a contact's is J, its impulse along its normal
+  auto r = reaction(m);
+  if (r && r->kind == Reaction::Kind::Contact) return m.analyses[static_cast<std::size_t>(ai)].contact_impulses.at(name).first;
+  return sqrt(x * x + y * y);
+}
 
-ex Effect::impact_loss(const Model&, int) const {
-  throw InputError("'loss' takes a contact and the two states of its impact", "write loss(hit, before, after)");
+std::pair<ex, ex> Effect::impact_impulse_on(const Model& m, int body, int ai) const {
+  const Analysis& a = m.analyses[static_cast<std::size_t>(ai)];
+  if (const Blow* j = blow()) {
+    if (j->at.body != body || activity(a) == Activity::None) return {0, 0};
+    return {j->Jx, j->Jy};
+  }
+  auto r = reaction(m);
+  if (!r || r->kind != Reaction::Kind::Contact || !a.contact_impulses.count(name)) return {0, 0};
+  // P acts on the second party, −P on the first
+  auto [Px, Py] = impulse(m, -1, ai);
+  int sign = (r->b.body == body ? 1 : 0) - (r->a.body == body ? 1 : 0);
+  return {sign * Px, sign * Py};
+}
+
+ex Effect::impact_loss(const Model& m, int ai) const {
+  const Analysis& an = m.analyses[static_cast<std::size_t>(ai)];
+  auto r = reaction(m);
+  if (!r || r->kind != Reaction::Kind::Contact || !an.instant)
+    throw InputError("'loss' takes a contact and the two states of its impact", "write loss(hit, before, after)");
+  auto it = an.contact_impulses.find(name);
+  if (it == an.contact_impulses.end())
+    throw InputError("contact '" + name + "' takes no part in that impact", "name it in the impact's contacts");
+  auto [J, Jt] = it->second;
+  auto vel = [&](const PointRef& p) -> std::pair<ex, ex> {
+    if (p.ground) return {0, 0};
+    return m.velocity(p);
+  };
+  auto [vbx, vby] = vel(r->b);
+  auto [vax, vay] = vel(r->a);
+  ex vn = m.bind((vbx - vax) * r->dir_x + (vby - vay) * r->dir_y, an.from);
+  ex vt = m.bind(-(vbx - vax) * r->dir_y + (vby - vay) * r->dir_x, an.from);
+  // T⁺ − T⁻ = Σ P·(v⁻ + v⁺)/2 with v_n⁺ = −e v_n⁻ and (stick) v_t⁺ = 0:
+  //   lost = −½ [(1 − e) J v_n⁻ + Jt v_t⁻]
+  return -((1 - r->e) * J * vn + (r->stick ? ex(Jt * vt) : ex(0))) / 2;
 }
 
 void Effect::motion(const Model& m, int self, simulate::Equations& eq) const { simulate::load_terms(m, *this, self, eq); }

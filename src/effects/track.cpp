@@ -28,10 +28,15 @@ public:
   std::string shape;  ///< "the line through [..] along [..]", "the circle of centre [..] and radius R"
   SourcePos arg_pos;  ///< where its point is named
 
-  std::vector<int> bodies_acted(const Model&) const override { return bodies_of({p.body}); }
 
-  bool reaction_across(const std::vector<int>& set) const override { return p.body >= 0 && principles::in_set(set, p.body); }
-  std::vector<std::string> reaction_parts() const override { return {"N"}; }
+  // N n̂ on the point: the coordinates keep it on the track
+  std::optional<model::Reaction> reaction(const Model& m) const override {
+    model::Reaction r;
+    r.kind = model::Reaction::Kind::Track;
+    r.a = p;
+    std::tie(r.dir_x, r.dir_y) = normal(m);
+    return r;
+  }
 
   /// The unit normal n̂ at the point (generic): the line's normal k × t̂, or the circle's radius.
   std::pair<ex, ex> normal(const Model& m) const {
@@ -47,37 +52,6 @@ public:
     if (!circle) return model::trig_simplify((x - x0) * -ty + (y - y0) * tx - offset);
     return sqrt(pow(x - x0, 2) + pow(y - y0, 2)) - (R + offset);
   }
-
-  void pushes(const Model& m, const Analysis& an, const Knowledge&, std::vector<Push>& out) const override {
-    if (!acts_on(an, p.body)) return;
-    auto it = an.reactions.find(name);
-    if (it == an.reactions.end()) return;
-    auto [nx, ny] = normal(m);
-    Push q;
-    q.unknown = true;
-    q.reaction = true;
-    q.implied = true;
-    q.Rx = it->second[0] * nx;
-    q.Ry = it->second[0] * ny;
-    auto [x, y] = m.position(p);
-    q.arm_x = x;
-    q.arm_y = y;
-    q.what = "normal reaction impulse (unknown) of the track on " + p.text;
-    out.push_back(q);
-  }
-
-  std::pair<ex, ex> impulse(const Model& m, int self, int ai) const override {
-    const Analysis& an = m.analyses[ai];
-    auto it = an.reactions.find(name);
-    if (an.instant || it == an.reactions.end()) return Effect::impulse(m, self, ai);
-    auto [nx, ny] = normal(m);
-    if (!principles::motion_free(m, model::trig_simplify(nx)) || !principles::motion_free(m, model::trig_simplify(ny)))
-      throw InputError("the normal of track '" + name + "' turns with the motion, so its impulse has no fixed components",
-                       "ask for the impulse of a straight track, or for its moment");
-    return {it->second[0] * nx, it->second[0] * ny};
-  }
-
-  void motion(const Model&, int, simulate::Equations&) const override {}  // the coordinates keep the point on it
 
   // the guide: a dashed stretch of its line about the point, or its circle (at the offset, the
   // surface itself: the line moved back along its normal, the circle's radius R)

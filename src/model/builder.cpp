@@ -655,10 +655,11 @@ private:
       if (a.type->takes_reactions()) {
         // supports between the body set and the rest (pins, constraints) carry unknown reactions
         for (auto& e : m_.effects) {
-          if (!e.reaction_across(a.bodies) || e.activity(a) == Effect::Activity::None) continue;
+          auto r = e.reaction(m_);
+          if (!r || !r->across(a.bodies) || e.activity(a) == Effect::Activity::None) continue;
           std::string key = e.name + "|" + S1 + "|" + S2;
           if (!known_reactions.count(key))
-            for (auto& part : e.reaction_parts())
+            for (auto& part : r->parts())
               known_reactions[key].push_back(impulse_symbol(part + "_" + e.name + "[" + S1 + "," + S2 + "]", P));
           a.reactions[e.name] = known_reactions[key];
           for (auto& u : known_reactions[key]) a.unknowns.push_back(u);

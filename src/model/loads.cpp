@@ -1,4 +1,5 @@
 // The kinematics of a load: what its force and couple do work along, once for every effect kind.
+#include <algorithm>
 #include <cmath>
 
 #include "kinergy/model/model.hpp"
@@ -86,6 +87,46 @@ bool changes_with_motion(const Model& m, const Load& l) {
     for (const ex& e : {l.Fx, l.Fy, l.M, l.size})
       if (e.has(c.q) || e.has(c.qd)) return true;
   return false;
+}
+
+}  // namespace kinergy::model
+
+namespace kinergy::model {
+
+std::vector<std::string> Reaction::parts() const {
+  switch (kind) {
+    case Kind::Pin:
+      return {"Rx", "Ry"};
+    case Kind::Track:
+      return {"N"};
+    case Kind::Relation:
+      return {"J"};
+    case Kind::Contact:
+      break;
+  }
+  return {};
+}
+
+bool Reaction::across(const std::vector<int>& set) const {
+  auto in = [&](const PointRef& p) { return p.body >= 0 && !p.ground && std::find(set.begin(), set.end(), p.body) != set.end(); };
+  switch (kind) {
+    case Kind::Track:
+      return in(a);  // the track is fixed: outside every set
+    case Kind::Pin:
+    case Kind::Relation:
+      return in(a) != in(b);
+    case Kind::Contact:
+      break;
+  }
+  return false;
+}
+
+std::vector<int> Reaction::bodies() const {
+  std::vector<int> out;
+  for (const PointRef* p : {&a, &b})
+    if (p->body >= 0 && !p->ground && std::find(out.begin(), out.end(), p->body) == out.end() && (kind != Kind::Track || p == &a))
+      out.push_back(p->body);
+  return out;
 }
 
 }  // namespace kinergy::model

@@ -277,7 +277,7 @@ int Model::body_index(const std::string& n) const {
 
 const Effect* Model::carrier(std::size_t k) const {
   for (auto& e : effects)
-    if (e.carries(k)) return &e;
+    if (auto r = e.reaction(*this); r && r->kind == Reaction::Kind::Relation && r->constraint == k) return &e;
   return nullptr;
 }
 

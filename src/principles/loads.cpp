@@ -1,6 +1,7 @@
 // What the principles derive from an effect's loads, once for every kind: the work between two
 // states, the pushes on a body set over a duration, and the impulse ∫F dt.
 #include <algorithm>
+#include <tuple>
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
@@ -197,6 +198,209 @@ Work load_work(const Model& m, const Effect& e, int s1, int s2, const Knowledge&
   }
   return couples_only ? generalized_force_work(m, e, "couple", "U = integral of M dphi", s1, s2, &k)
                       : generalized_force_work(m, e, "force", "U = integral of F . dr", s1, s2, &k);
+}
+
+// ---------------------------------------------------------------- reactions
+
+namespace {
+
+bool inside(const Analysis& a, const model::PointRef& p) { return p.body >= 0 && !p.ground && in_set(a.bodies, p.body); }
+
+[[noreturn]] void no_impulse(const Model& m, const Effect& e, const Analysis& a) {
+  throw InputError("effect '" + e.name + "' (" + e.kind + ") has no impulse to report between states " + m.states[a.from].name + " and " +
+                       m.states[a.to].name,
+                   "ask for the impulse of a contact, a pin, a given impulse, or a force over a momentum analysis");
+}
+
+/// How a relation's impulse is named in a derivation: on which party, along which direction.
+std::string along(const model::Reaction& r, bool on_a) {
+  const model::PointRef& p = on_a ? r.a : r.b;
+  return "on " + p.text + ", along " + (on_a ? "" : "-") + "[" + model::text(r.dir_x) + ", " + model::text(r.dir_y) + "]";
+}
+
+/// The fixed line the point of a pin's party inside `set` moves along: x (0) or y (1).
+std::optional<int> line_inside(const Model& m, const model::Reaction& r, const std::vector<int>& set) {
+  const model::PointRef& p = in_set(set, r.a.body) ? r.a : r.b;
+  auto [vx, vy] = m.velocity(p);
+  const bool x = vanishes(m, vy), y = vanishes(m, vx);
+  if (x == y) return std::nullopt;
+  return x ? 0 : 1;
+}
+
+}  // namespace
+
+bool holds(const Model& m, const Effect& e, int body) {
+  auto r = e.reaction(m);
+  return r && r->kind == model::Reaction::Kind::Pin && (r->a.body == body || r->b.body == body);
+}
+
+bool works_across(const Model& m, const model::Reaction& r, const std::vector<int>& set) {
+  if (!r.across(set)) return false;
+  switch (r.kind) {
+    case model::Reaction::Kind::Pin:
+      // a collar on its rod: the reaction's component along the pinned point's fixed line works
+      return r.a.body >= 0 && r.b.body >= 0 && line_inside(m, r, set).has_value();
+    case model::Reaction::Kind::Relation:
+      return true;
+    default:
+      return false;
+  }
+}
+
+void reaction_pushes(const Model& m, const Effect& e, const model::Reaction& r, const Analysis& a, std::vector<Push>& out) {
+  auto it = a.reactions.find(e.name);
+  if (r.kind == model::Reaction::Kind::Contact || !r.across(a.bodies) || it == a.reactions.end()) return;
+  // the unknown impulse on the party inside the set, at its point
+  const bool on_a = inside(a, r.a);
+  Push p;
+  p.unknown = true;
+  p.reaction = true;
+  switch (r.kind) {
+    case model::Reaction::Kind::Pin:
+      p.implied = true;
+      p.Rx = it->second[0];
+      p.Ry = it->second[1];
+      break;
+    case model::Reaction::Kind::Track:
+      // N n̂ on the point
+      p.implied = true;
+      p.Rx = it->second[0] * r.dir_x;
+      p.Ry = it->second[0] * r.dir_y;
+      p.what = "normal reaction impulse (unknown) of the track on " + r.a.text;
+      break;
+    default: {
+      // a relation: J û on party a, −J û on party b
+      ex J = on_a ? it->second[0] : -it->second[0];
+      p.Rx = J * r.dir_x;
+      p.Ry = J * r.dir_y;
+      p.what = "reaction impulse (unknown) " + along(r, on_a);
+      break;
+    }
+  }
+  std::tie(p.arm_x, p.arm_y) = m.position(on_a ? r.a : r.b);
+  out.push_back(p);
+}
+
+/// A pin's impulse in an impact: the pinned body's momentum change less the other impulses on it.
+static std::pair<ex, ex> pin_impact_impulse(const Model& m, const Effect& e, const model::Reaction& r, int self, int ai) {
+  const Analysis& an = m.analyses[static_cast<std::size_t>(ai)];
+  int bi = r.b.body >= 0 ? r.b.body : r.a.body;
+  if (bi < 0) throw InputError("pin '" + e.name + "' joins no body", "pin a body point to a point");
+  const model::Body& B = m.bodies[static_cast<std::size_t>(bi)];
+  for (auto& c : m.constraints)
+    for (auto& co : m.coords)
+      if (c.first.has(co.q) && (B.x.has(co.q) || B.y.has(co.q) || B.angle.has(co.q)))
+        throw InputError("the impulse of pin '" + e.name + "' cannot be told apart from the constraint impulses on '" + B.name + "'",
+                         "describe the body's motion with coordinates that need no constraint");
+  for (std::size_t j = 0; j < m.effects.size(); ++j) {
+    const Effect& o = m.effects[j];
+    if (static_cast<int>(j) != self && holds(m, o, bi))
+      throw InputError("body '" + B.name + "' has two pins, '" + e.name + "' and '" + o.name + "'; their impulses cannot be told apart",
+                       "ask for the impulse of a pin that holds a body alone");
+  }
+  // R = m (v̄⁺ − v̄⁻) − Σ P (contact impulses and given blows on the body)
+  ex vx = m.rate(B.x), vy = m.rate(B.y);
+  ex Rx = B.mass * (m.bind_mixed(vx, an.from, an.to) - m.bind(vx, an.from));
+  ex Ry = B.mass * (m.bind_mixed(vy, an.from, an.to) - m.bind(vy, an.from));
+  for (auto& o : m.effects) {
+    auto [Px, Py] = o.impact_impulse_on(m, bi, ai);
+    Rx -= Px;
+    Ry -= Py;
+  }
+  return {Rx, Ry};
+}
+
+std::pair<ex, ex> reaction_impulse(const Model& m, const Effect& e, const model::Reaction& r, int self, int ai) {
+  const Analysis& an = m.analyses[static_cast<std::size_t>(ai)];
+  auto it = an.reactions.find(e.name);
+  switch (r.kind) {
+    case model::Reaction::Kind::Contact: {
+      auto c = an.contact_impulses.find(e.name);
+      if (c == an.contact_impulses.end())
+        throw InputError("contact '" + e.name + "' takes no part in an impact between states " + m.states[an.from].name + " and " +
+                             m.states[an.to].name,
+                         "name it in the impact's 'contact' or 'contacts'");
+      // P = J n + Jt t,  t = (−n_y, n_x)
+      auto [J, Jt] = c->second;
+      return {J * r.dir_x - Jt * r.dir_y, J * r.dir_y + Jt * r.dir_x};
+    }
+    case model::Reaction::Kind::Pin:
+      if (an.instant) return pin_impact_impulse(m, e, r, self, ai);
+      if (it == an.reactions.end())
+        throw InputError("pin '" + e.name + "' is not external to the bodies of the analysis between states " + m.states[an.from].name +
+                             " and " + m.states[an.to].name,
+                         "list in 'bodies' the body the pin holds, and not the body on its other side");
+      return {it->second[0], it->second[1]};
+    case model::Reaction::Kind::Track:
+      if (an.instant || it == an.reactions.end()) no_impulse(m, e, an);
+      if (!motion_free(m, model::trig_simplify(r.dir_x)) || !motion_free(m, model::trig_simplify(r.dir_y)))
+        throw InputError("the normal of track '" + e.name + "' turns with the motion, so its impulse has no fixed components",
+                         "ask for the impulse of a straight track, or for its moment");
+      return {it->second[0] * r.dir_x, it->second[0] * r.dir_y};
+    case model::Reaction::Kind::Relation:
+      if (an.instant) {
+        // the impulsive reaction Λ of the relation: Λ f on party a
+        const ex& lam = an.lambdas.at(r.constraint);
+        return {lam * m.bind(r.fx, an.from), lam * m.bind(r.fy, an.from)};
+      }
+      if (it == an.reactions.end())
+        throw InputError("constraint '" + e.name + "' does not join the bodies of the analysis between states " + m.states[an.from].name +
+                             " and " + m.states[an.to].name + " to the rest",
+                         "list in 'bodies' one of its parties (" + r.a.text + ", " + r.b.text + ") and not the other");
+      if (!motion_free(m, r.dir_x) || !motion_free(m, r.dir_y))
+        throw InputError("the force of constraint '" + e.name + "' turns with the motion (along [" + model::text(r.dir_x) + ", " +
+                             model::text(r.dir_y) + "]), so its impulse has no components fixed by the analysis",
+                         "ask for its impulse in an impact, or for the angular impulse it gives");
+      return {it->second[0] * r.dir_x, it->second[0] * r.dir_y};
+  }
+  no_impulse(m, e, an);
+}
+
+Work reaction_work_across(const Model& m, const Effect& e, const model::Reaction* rp, const Analysis& an) {
+  auto it = an.reactions.find(e.name);
+  if (rp && rp->kind == model::Reaction::Kind::Pin) {
+    const model::Reaction& r = *rp;
+    // U = F̄ Δs: F̄ the average force on the party inside along +x (or +y) over the distance, s
+    // that coordinate of its point
+    if (it == an.reactions.end() || !works_across(m, r, an.bodies))
+      throw SceneError(an.pos, "pin '" + e.name + "' joins a body of this energy analysis to one outside it, and the pinned point does not "
+                                   "keep to a fixed line (x or y): the work of its reaction is not one unknown force times a distance",
+                       "list both bodies it joins in 'bodies', or take its reaction from an impulse-momentum analysis of the body");
+    const model::PointRef& p = inside(an, r.a) ? r.a : r.b;
+    const int line = *line_inside(m, r, an.bodies);
+    auto [x, y] = m.position(p);
+    const ex s = line == 0 ? x : y;
+    Work w;
+    w.effect = e.name;
+    w.U = it->second[0] * model::trig_simplify(m.bind(s, an.to) - m.bind(s, an.from));
+    w.how = "U = F (average, on " + p.text + " along " + (line == 0 ? "x" : "y") + ") times the distance " + p.text + " moves along it";
+    return w;
+  }
+  if (rp && rp->kind == model::Reaction::Kind::Relation) {
+    const model::Reaction& r = *rp;
+    // the force F̄ û on the party inside (−F̄ û for the second party), at its point P:
+    // U = F̄ ∫ ±û·dr_P, F̄ the average force over the distance, an unknown; as generalized forces
+    // per unit F̄: Q_i = ±û·∂r_P/∂q_i
+    if (it == an.reactions.end()) throw std::logic_error("constraint '" + e.name + "' has no unknown in this energy analysis");
+    const bool ia = inside(an, r.a);
+    const model::PointRef& p = ia ? r.a : r.b;
+    ex sign = ia ? 1 : -1;
+    std::vector<ex> Q;
+    for (auto& co : m.coords) {
+      auto [dx, dy] = m.position_derivative(p, co.q);
+      Q.push_back(model::trig_simplify(sign * (r.dir_x * dx + r.dir_y * dy)));
+    }
+    Work w = generalized_force_work(m, e, Q, "constraint force", "", an.from, an.to);
+    w.U = it->second[0] * w.U;
+    w.how = "U = F (average) times the distance " + p.text + " moves along " + (ia ? "" : "-") + "[" + model::text(r.dir_x) + ", " +
+            model::text(r.dir_y) + "]";
+    return w;
+  }
+  std::string all;
+  for (int b : e.bodies_acted(m)) all += (all.empty() ? "" : ", ") + m.bodies[static_cast<std::size_t>(b)].name;
+  throw SceneError(an.pos, "effect '" + e.name + "' (" + e.kind + ") acts on bodies inside this energy analysis' set and outside it; its work on the set alone is not known",
+                   "list in 'bodies' every body it acts on (" + all + "), or name the interaction as a constraint effect "
+                   "('NAME: {constraint: \"…\", between: [A, B], at: [x, y]}') so that its average force is an unknown");
 }
 
 }  // namespace kinergy::principles

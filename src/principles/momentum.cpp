@@ -203,7 +203,7 @@ void check_constraints(const Model& m, const Analysis& a) {
     const auto& [c, pos] = m.constraints[ci];
     if (m.constraint_activity(ci, a) == model::Effect::Activity::None) continue;  // switched off over it
     // held by a named effect: its reaction is that effect's unknown
-    if (std::any_of(m.effects.begin(), m.effects.end(), [&](const Effect& e) { return e.carries(ci); })) continue;
+    if (m.carrier(ci)) continue;
     std::vector<int> coupled;
     for (std::size_t b = 0; b < m.bodies.size(); ++b)
       for (auto& co : m.coords)
@@ -556,7 +556,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
     const int ai = static_cast<int>(&a - m.analyses.data());
     if (ai < 0 || ai >= static_cast<int>(m.analyses.size())) continue;
     for (std::size_t b = 0; b < m.bodies.size(); ++b) {
-      if (!e.holds(static_cast<int>(b)) || acted.size() != 1) continue;
+      if (!holds(m, e, static_cast<int>(b)) || acted.size() != 1) continue;
       Push push;
       push.unknown = push.reaction = true;
       push.body = static_cast<int>(b);

@@ -42,6 +42,28 @@ ForceTerm force_term(const model::Model& m, const model::Effect& e, int self) {
 }
 
 void load_terms(const model::Model& m, const model::Effect& e, int self, Equations& eq) {
+  if (auto r = e.reaction(m); r && r->kind == model::Reaction::Kind::Contact) {
+    // gap along the normal from party a into party b: g = (r_b − r_a)·n̂ (the plane through a
+    // perpendicular to n̂); its rate is the normal approach speed
+    auto [xa, ya] = m.position(r->a);
+    auto [xb, yb] = m.position(r->b);
+    ContactTerm c{self, model::trig_simplify((xb - xa) * r->dir_x + (yb - ya) * r->dir_y), {}, {}, r->e, r->stick};
+    auto [vax, vay] = m.velocity(r->a);
+    auto [vbx, vby] = m.velocity(r->b);
+    c.normal = linear_rate(m, (vbx - vax) * r->dir_x + (vby - vay) * r->dir_y);
+    c.tangent = linear_rate(m, -(vbx - vax) * r->dir_y + (vby - vay) * r->dir_x);
+    eq.contacts.push_back(c);
+  }
+  if (const model::Blow* j = e.blow()) {
+    // a given impulse: P_i = J · ∂r_P/∂q_i
+    ImpulseTerm im{self, {}};
+    for (auto& co : m.coords) {
+      auto [dx, dy] = m.position_derivative(j->at, co.q);
+      im.P.push_back(trig_simplify(j->Jx * dx + j->Jy * dy));
+    }
+    eq.impulses.push_back(im);
+  }
+  // (a support the coordinates or the constraint rows imply gives no term of its own)
   if (e.conservative()) {
     // a potential's generalized force Q_i = −∂V/∂q_i (a support without one, V = 0, gives none)
     if (!e.potential(m).is_zero()) eq.forces.push_back(force_term(m, e, self));
@@ -113,7 +135,7 @@ Equations equations_of_motion(const model::Model& m, const std::vector<bool>& on
   for (std::size_t r = 0; r < m.constraints.size(); ++r) {
     bool acts = true;
     for (std::size_t k = 0; k < m.effects.size(); ++k)
-      if (m.effects[k].carries(r) && !on.empty() && !on[k]) acts = false;
+      if (m.carrier(r) == &m.effects[k] && !on.empty() && !on[k]) acts = false;
     if (acts) rows.push_back(r);
   }
   const std::size_t nc = rows.size();

@@ -13,13 +13,9 @@ public:
   bool stick = false;        ///< rough: no sliding after the impact
 
   static std::shared_ptr<model::Effect> read(model::EffectReader& r, const scene::EffectDef& ed);
-  std::vector<int> bodies_acted(const model::Model&) const override;
-  std::pair<GiNaC::ex, GiNaC::ex> impulse(const model::Model& m, int self, int ai) const override;
-  GiNaC::ex impulse_size(const model::Model& m, int ai, const GiNaC::ex& x, const GiNaC::ex& y) const override;
-  std::pair<GiNaC::ex, GiNaC::ex> impact_impulse_on(const model::Model& m, int b, int ai) const override;
-  GiNaC::ex impact_loss(const model::Model& m, int ai) const override;
+  /// J n̂ + Jt t̂ on b, −that on a, in impacts
+  std::optional<model::Reaction> reaction(const model::Model&) const override;
   void draw(const model::Model& m, const draw::At& at, draw::Figure& f) const override;
-  void motion(const model::Model& m, int self, simulate::Equations& eq) const override;
 };
 
 /// Effect `i` of the model, which must be a contact (checked when the model was built).

@@ -73,6 +73,36 @@ struct Load {
   std::string singular;          ///< why its value may be undefined (a drive's P/ω at ω = 0), or ""
 };
 
+/// The reaction of a support, or the impulse of a contact: what it can push with (unknown until an
+/// analysis solves for it), along which directions, and where. The principles make from this,
+/// once, its unknowns in each analysis that isolates a body it holds, its pushes, impulses and
+/// work across a body set, and its part in an impact.
+///   Pin:      R = (Rx, Ry) on party a at a, −R on party b: the coordinates keep a and b together.
+///   Track:    N n̂ on party a (n̂ = dir, generic): the coordinates keep a on the track.
+///   Relation: J û on party a, −J û on party b (û = dir): constraint `constraint` of the model
+///             held by their touching (a mesh, a cord, rolling), its multiplier's force λ f
+///             (f = (fx, fy)) on a.
+///   Contact:  J n̂ + Jt t̂ on party b, −that on party a, in impacts only (n̂ = dir, from a into
+///             b; t̂ = (−n_y, n_x)); restitution e, `stick`: it does not slide after the impact.
+struct Reaction {
+  enum class Kind { Pin, Track, Relation, Contact };
+  Kind kind = Kind::Pin;
+  PointRef a, b;
+  ex dir_x = 0, dir_y = 0;
+  ex fx = 0, fy = 0;
+  std::size_t constraint = 0;
+  ex e = 0;
+  bool stick = false;
+  /// The names of its unknowns over a duration: Rx, Ry (pin), N (track), J (relation); a
+  /// contact has none (it acts in impacts only).
+  std::vector<std::string> parts() const;
+  /// Does it join a body of `set` to a party outside it (a fixed party, the ground, a body not in
+  /// the set) with a reaction over a duration? (A contact acts only in impacts: no.)
+  bool across(const std::vector<int>& set) const;
+  /// The bodies it joins (a fixed party is not a body).
+  std::vector<int> bodies() const;
+};
+
 /// The kinematics a load's force and couple work along (src/model/loads.cpp):
 /// v_rel = v_at − v_partner (the partner's point, 0 for a fixed party or none).
 std::pair<ex, ex> relative_velocity(const Model& m, const Load& l);
@@ -153,63 +183,47 @@ public:
 
   virtual ~Effect() = default;
 
+  // --- what it is: every principle derives what it needs from these -------------------------
   /// What it does to the bodies at a state (none: a support, a contact, a blow).
   virtual std::vector<Load> loads(const Model&) const { return {}; }
-
-  // --- energy ---
-  /// V (generic); effects that are not conservative have none.
-  bool conservative() const { return has_potential; }
+  /// V (generic), where it has one (`has_potential`; a support that does no work: 0).
   virtual ex potential(const Model&) const { return 0; }
+  /// The unknown reaction of a support, or a contact's impulse (none for the rest).
+  virtual std::optional<Reaction> reaction(const Model&) const { return std::nullopt; }
+  /// A given impulse, for effects that are one.
+  virtual const Blow* blow() const { return nullptr; }
+
+  // --- what a kind may answer itself, when the general rule does not fit (said in its file) ---
+  /// The work between two states (state symbols): from its loads by default (principles::load_work).
+  virtual principles::Work work(const Model& m, int s1, int s2, const principles::Knowledge& k) const;
+  /// Its work on the bodies of energy analysis `a` when it acts on some of them and on bodies
+  /// outside too (a weight: the set's own; a reaction: its unknown average force times the
+  /// distance its point moves along it). @throws SceneError when that work is not known.
+  virtual principles::Work work_across(const Model& m, const Analysis& a, const principles::Knowledge& k) const;
+
+  // --- derived, the same for every kind (src/effects/effect.cpp) -----------------------------
+  bool conservative() const { return has_potential; }
   /// Q_i along coordinate i: −∂V/∂q_i for conservative effects, else from its loads.
   ex generalized_force(const Model& m, std::size_t i) const;
   /// P = Σ Q_i q̇_i (conservative: −dV/dt), else from its loads.
   ex power(const Model& m) const;
-  /// The work of a non-conservative effect between two states (state symbols).
-  virtual principles::Work work(const Model& m, int s1, int s2, const principles::Knowledge& k) const;
-  /// The bodies it acts on (a fixed party is not a body; gravity: every body): its loads' by default.
-  virtual std::vector<int> bodies_acted(const Model& m) const;
-  /// Its work on the bodies of energy analysis `a` when it acts on some of them and on bodies
-  /// outside too (a weight: the set's own; a constraint: its unknown average force times the
-  /// distance its point moves along it). @throws SceneError when that work is not known.
-  virtual principles::Work work_across(const Model& m, const Analysis& a, const principles::Knowledge& k) const;
-  /// Does an energy analysis of a body set it joins to the rest need its average force as an
-  /// unknown (a constraint between the set and a moving body outside, or the ground)?
-  virtual bool works_across(const Model&, const std::vector<int>& /*bodies*/) const { return false; }
-
-  // --- impulse and momentum ---
+  /// The bodies it acts on (a fixed party is not a body; gravity: every body).
+  std::vector<int> bodies_acted(const Model& m) const;
   /// The forces (or unknown reactions, given impulses) this effect exerts on the bodies of a
   /// momentum analysis over its duration. @throws SceneError when they cannot be integrated.
-  virtual void pushes(const Model& m, const Analysis& a, const principles::Knowledge& k,
-                      std::vector<principles::Push>& out) const;
-  /// Does this effect join the body set to the rest with an unknown reaction (a pin, a constraint
-  /// between a body of the set and one outside it)?
-  virtual bool reaction_across(const std::vector<int>& /*bodies*/) const { return false; }
-  /// The names of the parts of that unknown reaction impulse (a pin: its components; a
-  /// constraint: its size along the direction it acts in).
-  virtual std::vector<std::string> reaction_parts() const { return {"Rx", "Ry"}; }
-  /// Does this effect hold constraint k of the model (so that its reaction is this effect's)?
-  virtual bool carries(std::size_t /*constraint*/) const { return false; }
-  /// Is it a support holding body b with an unknown reaction (a pin at one of b's points)?
-  virtual bool holds(int /*b*/) const { return false; }
+  void pushes(const Model& m, const Analysis& a, const principles::Knowledge& k, std::vector<principles::Push>& out) const;
   /// Impulse (x, y) over analysis `ai` (`impulse_x`, `impulse_y`); `self` is this effect's index.
   /// @throws InputError when it has none there.
-  virtual std::pair<ex, ex> impulse(const Model& m, int self, int ai) const;
-  /// `impulse(effect, S1, S2)`: the size of that impulse.
-  virtual ex impulse_size(const Model& m, int ai, const ex& x, const ex& y) const;
-
-  // --- impacts ---
-  /// A given impulse, for effects that are one.
-  virtual const Blow* blow() const { return nullptr; }
+  std::pair<ex, ex> impulse(const Model& m, int self, int ai) const;
+  /// `impulse(effect, S1, S2)`: the size of that impulse (a contact's: J, along its normal).
+  ex impulse_size(const Model& m, int ai, const ex& x, const ex& y) const;
   /// The impulse this effect gives body `b` in impact `ai` (a contact's, a blow's), known
   /// or as unknowns: a pin's reaction is the momentum change less these.
-  virtual std::pair<ex, ex> impact_impulse_on(const Model&, int /*b*/, int /*ai*/) const { return {0, 0}; }
+  std::pair<ex, ex> impact_impulse_on(const Model& m, int b, int ai) const;
   /// Energy lost at this effect in impact `ai` (a contact). @throws InputError otherwise.
-  virtual ex impact_loss(const Model& m, int ai) const;
-
-  // --- simulation ---
-  /// Add this effect's terms to the equations of motion (`self`: its index); by default a
-  /// conservative effect's Q_i = −∂V/∂q_i. @throws SceneError when it cannot be simulated.
-  virtual void motion(const Model& m, int self, simulate::Equations& eq) const;
+  ex impact_loss(const Model& m, int ai) const;
+  /// Add this effect's terms to the equations of motion (`self`: its index).
+  void motion(const Model& m, int self, simulate::Equations& eq) const;
 
   // --- pictures ---
   /// Draw itself into a figure of the scene at a state (`at` gives numbers of expressions

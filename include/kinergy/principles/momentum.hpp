@@ -51,6 +51,25 @@ void load_pushes(const model::Model& m, const model::Effect& e, const model::Ana
 /// where it has some). @throws InputError in an impact, or when a force changes with the motion.
 std::pair<ex, ex> load_impulse(const model::Model& m, const model::Effect& e, int ai);
 
+/// Is it a pin holding body `body` (so that the body's momentum change less the other impulses in
+/// an impact is its impulse)?
+bool holds(const model::Model& m, const model::Effect& e, int body);
+/// Does an energy analysis of `set` need the reaction's average force as an unknown (a relation
+/// between the set and a body outside or the ground; a pin whose point inside keeps to a fixed
+/// line)?
+bool works_across(const model::Model& m, const model::Reaction& r, const std::vector<int>& set);
+/// The unknown reaction impulse of a support joining the set to the rest, on the party inside.
+void reaction_pushes(const model::Model& m, const model::Effect& e, const model::Reaction& r, const model::Analysis& a,
+                     std::vector<Push>& out);
+/// The impulse of a support or a contact over analysis `ai`: its unknowns there, a contact's
+/// J n̂ + Jt t̂, in an impact a pin's as the pinned body's momentum change less the other impulses
+/// on it and a relation's as its multiplier's Λ f. @throws InputError when it has none there.
+std::pair<ex, ex> reaction_impulse(const model::Model& m, const model::Effect& e, const model::Reaction& r, int self, int ai);
+/// Its work across an energy analysis' set: the unknown average force times the distance its
+/// point moves along it (`r`: the effect's reaction, or none). @throws SceneError when that is not
+/// one unknown times a distance.
+Work reaction_work_across(const model::Model& m, const model::Effect& e, const model::Reaction* r, const model::Analysis& a);
+
 /// One external impulse in a component equation.
 struct ImpulseTerm {
   std::string effect;
