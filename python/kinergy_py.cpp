@@ -12,7 +12,7 @@
 #include <memory>
 
 #include "kinergy/common/error.hpp"
-#include "kinergy/confirm.hpp"
+#include "kinergy/confirm/confirm.hpp"
 #include "kinergy/common/markup.hpp"
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/derive.hpp"
@@ -22,7 +22,7 @@
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/scene/scene.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 #include "kinergy/simulate/simulate.hpp"
 #include "kinergy/verify/verify.hpp"
 

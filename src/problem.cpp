@@ -1,6 +1,5 @@
 #include "kinergy/problem.hpp"
 
-#include "kinergy/effects/contact.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,6 @@
 // An impact: positions and time kept, velocities jump; generalized impulse–momentum along each
 // coordinate with the contact impulses (J along n, Jt along the tangent when rough), given blows and
 // one impulsive reaction per constraint; restitution at each contact.
-#include "kinergy/effects/contact.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "common.hpp"
 
@@ -40,10 +39,10 @@ public:
                        "write 'impact: {from: before, to: after, contact: hit}', or add an effect '{impulse: body.P, J: [Jx, Jy]}'");
     for (auto* n : names) {
       int ei = n->is_scalar() ? m.effect_index(n->scalar) : -1;
-      if (ei < 0 || !effects::as_contact(m.effects[ei])) {
+      if (ei < 0 || !m.is_contact(m.effects[ei])) {
         std::vector<std::string> contacts;
         for (auto& e : m.effects)
-          if (effects::as_contact(e)) contacts.push_back(e.name);
+          if (m.is_contact(e)) contacts.push_back(e.name);
         std::string near = n->is_scalar() ? scene::closest(n->scalar, contacts) : "";
         throw SceneError(n->pos, "'" + (n->is_scalar() ? n->scalar : std::string("?")) + "' is not a contact effect",
                          near.empty() ? "define it under effects: 'hit: {contact: [A, B], normal: [nx, ny], e: e}'"
@@ -57,13 +56,14 @@ public:
       if (std::find(a.contacts.begin(), a.contacts.end(), ei) != a.contacts.end())
         throw SceneError(n->pos, "contact '" + n->scalar + "' is named twice in this impact", "name each contact once");
       a.contacts.push_back(ei);
-      const effects::Contact& e = effects::contact(m, ei);
+      const model::Effect& e = m.effects[ei];
+      const bool stick = m.contact(ei).stick;
       // unknown impulses: J along n (and Jt along the tangent when rough)
       ex J = r.unknown("J_" + e.name + "[" + S1 + "," + S2 + "]", P);
-      ex Jt = e.stick ? r.unknown("Jt_" + e.name + "[" + S1 + "," + S2 + "]", P) : ex(0);
+      ex Jt = stick ? r.unknown("Jt_" + e.name + "[" + S1 + "," + S2 + "]", P) : ex(0);
       a.contact_impulses[e.name] = {J, Jt};
       a.unknowns.push_back(J);
-      if (e.stick) a.unknowns.push_back(Jt);
+      if (stick) a.unknowns.push_back(Jt);
     }
     // one impulsive reaction per constraint: its generalized impulse λ ∂c/∂q has the
     // dimension of (kg·m²/s) / [q], so λ has (kg·m²/s) / [c]
@@ -84,13 +84,13 @@ public:
              const GiNaC::exmap& env) const override {
     // a contact can only push: J ≥ 0 along its normal
     for (int ci : a.contacts) {
-      const auto& e = effects::contact(m, ci);
+      const model::Model::Contact e = m.contact(ci), &c = e;
       ex J = a.contact_impulses.at(e.name).first.subs(given).subs(b.sol);
       auto v = numerics::evaluate(J, env, 30);
       if (v && v->is_negative())
         throw SceneError(e.pos, "contact '" + e.name + "' would have to pull (impulse " + numerics::format(*v, 6) +
                                     " N*s along its normal) in the impact " + m.states[a.from].name + " -> " + m.states[a.to].name,
-                         "check the normal: it points from the first party (" + e.a.text + ") into the second (" + e.b.text + ")");
+                         "check the normal: it points from the first party (" + c.a.text + ") into the second (" + c.b.text + ")");
     }
   }
 };

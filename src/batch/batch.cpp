@@ -1,7 +1,7 @@
 // Many scenes in one process: JSON Lines of requests in, JSON Lines of results out.
 #include "kinergy/batch/batch.hpp"
 
-#include "kinergy/confirm.hpp"
+#include "kinergy/confirm/confirm.hpp"
 
 #include <istream>
 #include <ostream>

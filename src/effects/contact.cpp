@@ -1,7 +1,5 @@
 // A contact: two parties (body points, bodies, fixed points or the ground) that may strike along
 // a normal n̂ (from the first into the second) with restitution e, smooth or rough.
-#include "kinergy/effects/contact.hpp"
-
 #include <cmath>
 
 #include "kinergy/draw/figure.hpp"
@@ -10,13 +8,19 @@
 
 namespace kinergy::effects {
 
-const Contact& contact(const Model& m, int i) {
-  const Contact* c = as_contact(m.effects[static_cast<std::size_t>(i)]);
-  if (!c) throw std::logic_error("effect '" + m.effects[static_cast<std::size_t>(i)].name + "' is not a contact");
-  return *c;
-}
+namespace {
 
-const Contact* as_contact(const Effect& e) { return dynamic_cast<const Contact*>(&e); }
+class Contact : public Effect {
+public:
+  PointRef a, b;   ///< parties: body points, bodies, fixed points or ground
+  ex nx = 0, ny = 0;  ///< unit normal from a into b
+  ex e = 0;           ///< coefficient of restitution
+  bool stick = false;  ///< rough: no sliding after the impact
+
+  /// J n̂ + Jt t̂ on b, −that on a, in impacts
+  std::optional<model::Reaction> reaction(const Model&) const override;
+  void draw(const Model& m, const draw::At& at, draw::Figure& f) const override;
+};
 
 std::optional<model::Reaction> Contact::reaction(const Model&) const {
   model::Reaction r;
@@ -47,7 +51,9 @@ void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
   f.label(x + ux * g * 2, y + uy * g * 2, name + " n");
 }
 
-std::shared_ptr<Effect> Contact::read(EffectReader& r, const EffectDef& ed) {
+}  // namespace
+
+std::shared_ptr<Effect> read_contact(EffectReader& r, const EffectDef& ed) {
   auto c = make<Contact>(ed);
   r.only(ed, {"normal", "e", "tangential"});
   if (!ed.arg.is_list() || ed.arg.items.size() != 2)
@@ -84,6 +90,5 @@ std::shared_ptr<Effect> Contact::read(EffectReader& r, const EffectDef& ed) {
   return c;
 }
 
-std::shared_ptr<Effect> read_contact(EffectReader& r, const EffectDef& ed) { return Contact::read(r, ed); }
 
 }  // namespace kinergy::effects

@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "figures.hpp"
-#include "kinergy/effects/contact.hpp"
 #include "kinergy/emit/sections.hpp"
 #include "kinergy/model/inertia.hpp"
 #include "kinergy/model/simplify.hpp"
@@ -610,7 +609,7 @@ private:
                   " has the positions of " + SB + "), and only impulsive forces act: ")};
     bool any = false;
     for (int ci : a.contacts) {
-      const auto& e = effects::contact(m_, ci);
+      const auto e = m_.contact(ci);
       if (any) intro.push_back(W("; "));
       any = true;
       intro.push_back(W("the contact " + e.name + " between " + e.a.text + " and " + e.b.text + ", normal "));

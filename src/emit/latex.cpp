@@ -3,7 +3,7 @@
 // GiNaC's own term order changes from run to run, so the order of terms and factors is decided
 // here, by the text the plain printer gives them (itself independent of GiNaC's order).
 #include "kinergy/emit/latex.hpp"
-#include "factors.hpp"
+#include "kinergy/print/factors.hpp"
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,6 @@
 #include <set>
 
 #include "kinergy/common/error.hpp"
-#include "kinergy/effects/contact.hpp"
 #include "kinergy/expr/parser.hpp"
 #include "kinergy/model/inertia.hpp"
 #include "kinergy/model/simplify.hpp"

@@ -275,6 +275,18 @@ int Model::body_index(const std::string& n) const {
   return -1;
 }
 
+Model::Contact Model::contact(int i) const {
+  const Effect& e = effects[static_cast<std::size_t>(i)];
+  auto r = e.reaction(*this);
+  if (!r || r->kind != Reaction::Kind::Contact) throw std::logic_error("effect '" + e.name + "' is not a contact");
+  return {e.name, e.pos, r->a, r->b, r->dir_x, r->dir_y, r->e, r->stick};
+}
+
+bool Model::is_contact(const Effect& e) const {
+  auto r = e.reaction(*this);
+  return r && r->kind == Reaction::Kind::Contact;
+}
+
 const Effect* Model::carrier(std::size_t k) const {
   for (auto& e : effects)
     if (auto r = e.reaction(*this); r && r->kind == Reaction::Kind::Relation && r->constraint == k) return &e;

@@ -10,7 +10,6 @@
 #include <Eigen/Dense>
 
 #include "kinergy/common/error.hpp"
-#include "kinergy/effects/contact.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
@@ -449,7 +448,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
     }
     ex rhs = 0;
     for (int ci : a.contacts) {
-      const effects::Contact& e = effects::contact(m, ci);
+      const Model::Contact e = m.contact(ci);
       const auto& [J, Jt] = a.contact_impulses.at(e.name);
       auto dr = [&](const PointRef& p) -> std::pair<ex, ex> {
         if (p.ground || p.body < 0) return {0, 0};
@@ -476,7 +475,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
   }
 
   for (int ci : a.contacts) {
-    const effects::Contact& e = effects::contact(m, ci);
+    const Model::Contact e = m.contact(ci);
     Party pa = party(e.a), pb = party(e.b);
     // the parties must touch at the impact
     if (!e.a.ground && !e.b.ground) {
@@ -525,7 +524,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
   // what each body's diagram shows: P = J n (+ Jt t) on the second party at the contact, −P on
   // the first; the given blows; a pin's impulse (its body's momentum change less the others)
   for (int ci : a.contacts) {
-    const effects::Contact& e = effects::contact(m, ci);
+    const Model::Contact e = m.contact(ci);
     const auto& [J, Jt] = a.contact_impulses.at(e.name);
     for (const PointRef* p : {&e.b, &e.a}) {
       if (p->ground || p->body < 0) continue;

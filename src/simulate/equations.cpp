@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "kinergy/common/error.hpp"
-#include "kinergy/emit/emit.hpp"
+#include "kinergy/print/plain.hpp"
 #include "kinergy/model/simplify.hpp"
 
 namespace kinergy::simulate {

@@ -3,7 +3,7 @@
 #include <random>
 #include <sstream>
 
-#include "kinergy/emit/emit.hpp"
+#include "kinergy/print/plain.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/roots.hpp"

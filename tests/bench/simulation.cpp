@@ -48,7 +48,7 @@
 #include "kinergy/numeric/tape.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/scene/scene.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 #include "kinergy/simulate/simulate.hpp"
 
 using mp50 = boost::multiprecision::cpp_bin_float_50;

@@ -13,7 +13,7 @@
 #include "../support/helpers.hpp"
 #include "kinergy/draw/animation.hpp"
 #include "kinergy/problem.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 #include "kinergy/simulate/simulate.hpp"
 
 namespace sim = kinergy::simulate;

@@ -11,7 +11,7 @@
 #include "../../src/emit/figures.hpp"
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/problem.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/problem.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 #include "kinergy/simulate/simulate.hpp"
 
 namespace fs = std::filesystem;

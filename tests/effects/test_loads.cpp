@@ -25,7 +25,7 @@
 #include "kinergy/numeric/tape.hpp"
 #include "kinergy/principles/momentum.hpp"
 #include "kinergy/principles/principles.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 #include "kinergy/simulate/equations.hpp"
 
 namespace fs = std::filesystem;

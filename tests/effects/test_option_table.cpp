@@ -17,7 +17,7 @@
 
 #include "../support/helpers.hpp"
 #include "../support/scene_errors.hpp"
-#include "kinergy/confirm.hpp"
+#include "kinergy/confirm/confirm.hpp"
 #include "kinergy/model/analysis.hpp"
 #include "kinergy/model/effect.hpp"
 

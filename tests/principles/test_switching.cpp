@@ -7,7 +7,7 @@
 #include "../support/helpers.hpp"
 #include "kinergy/common/error.hpp"
 #include "kinergy/problem.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 
 using GiNaC::ex;
 

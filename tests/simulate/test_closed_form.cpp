@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "../support/helpers.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 
 namespace fs = std::filesystem;
 namespace sim = kinergy::simulate;

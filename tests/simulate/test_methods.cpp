@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "../support/helpers.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 
 namespace sim = kinergy::simulate;
 

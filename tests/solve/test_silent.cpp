@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include "../support/helpers.hpp"
-#include "kinergy/confirm.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/confirm.hpp"
+#include "kinergy/confirm/check.hpp"
 #include "../support/scene_errors.hpp"
 
 namespace {

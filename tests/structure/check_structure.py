@@ -26,7 +26,6 @@ KNOWN = {
     "function src/problem.cpp reach": 173,
     "function src/principles/momentum.cpp impact": 165,
     "function src/principles/work.cpp piecewise_work": 133,
-    "cycle": 9,
 }
 
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "kinergy/print/plain.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/verify/verify.hpp"
 
@@ -17,15 +18,6 @@ struct Options {
   bool guaranteed = false;
 };
 
-/// Texts to print in place of symbols (a parameter's value with its unit, say).
-using SymbolTexts = std::map<GiNaC::ex, std::string, GiNaC::ex_is_less>;
-
-/// A closed form in plain text, as a person writes it ("sqrt(3*g*sin(theta2)/l)").
-std::string plain(const GiNaC::ex& e);
-
-/// The same with some symbols replaced by texts ("sqrt(3*(9.81 m/s^2)*sin(30 deg)/(1.2 m))");
-/// terms and factors keep the order of the form without the replacements.
-std::string plain(const GiNaC::ex& e, const SymbolTexts& names);
 
 /// Each result's closed form and value with its unit.
 std::string text(const Solution& s, const Options& o);

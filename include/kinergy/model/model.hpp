@@ -187,6 +187,19 @@ public:
   /// Kinetic energy lost at a contact in an impact, −½[(1 − e) J v_n⁻ + Jt v_t⁻]
   /// (= ½(1 − e²) m_eff v_n⁻² for one smooth contact), free of the cancellation of T₁ − T₂.
   ex impact_loss(int contact, int analysis) const;
+  /// An impact party as the impact principle reads it: effect i, which must be a contact
+  /// (checked when the model was built), with its reaction's parties, normal n̂ from a into b,
+  /// restitution e and whether it sticks.
+  struct Contact {
+    std::string name;
+    SourcePos pos;
+    PointRef a, b;
+    ex nx, ny, e;
+    bool stick = false;
+  };
+  Contact contact(int i) const;
+  /// Is effect e a contact (an impact party)?
+  bool is_contact(const Effect& e) const;
   /// The effect that holds constraint k (a `constraint` effect), or nullptr (`constraints:`).
   const Effect* carrier(std::size_t k) const;
   /// Does constraint k hold at state s (its positions; with `rate`, its rates too)? A constraint

@@ -1,5 +1,5 @@
 // A solved scene's states as numbers; each analysis run as a simulation and compared.
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <sstream>
 
-#include "kinergy/emit/emit.hpp"
-#include "factors.hpp"
+#include "kinergy/print/plain.hpp"
+
+#include "kinergy/print/factors.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
 namespace kinergy::emit {

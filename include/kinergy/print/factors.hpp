@@ -1,4 +1,4 @@
-/// @file factors.hpp  (internal to emit) How the printers split a product: numerator,
+/// @file factors.hpp  (the printers' own) How the printers split a product: numerator,
 /// denominator and square-root groups, with sums oriented so that r − R and −(R − r) print alike.
 /// One rule for the plain and the LaTeX printer, so their forms agree.
 #pragma once

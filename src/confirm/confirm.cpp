@@ -1,5 +1,5 @@
 // Every answer confirmed a second way before it is printed (see confirm.hpp).
-#include "kinergy/confirm.hpp"
+#include "kinergy/confirm/confirm.hpp"
 
 #include <cmath>
 #include <limits>
@@ -7,7 +7,7 @@
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/numeric/evaluate.hpp"
-#include "kinergy/simulate/check.hpp"
+#include "kinergy/confirm/check.hpp"
 
 namespace kinergy {
 
