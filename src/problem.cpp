@@ -731,6 +731,85 @@ private:
     return std::nullopt;
   }
 
+  /// The kinetic energy at the state must depend on the parameter, and every other parameter in
+  /// it needs a value. @throws SceneError naming the one that does not.
+  void check_reach(const ex& K, const model::Find::Reach& x, const std::string& S, const std::string& what) const {
+    if (!K.has(x.p))
+      throw SceneError(x.pos, "the kinetic energy at state '" + S + "' does not depend on '" + x.p_name + "' (" + model::text(K) + ")",
+                       "name the parameter that sets the motion toward state '" + S + "' (a speed or position at an earlier state)");
+    for (auto& q : m.params)
+      if (!q.value && !q.unknown && K.has(q.sym) && !q.sym.is_equal(x.p) && !(x.along && q.sym.is_equal(*x.along)))
+        throw SceneError(q.pos, "parameter '" + q.name + "' has no value, but the " + what + " value of '" + x.p_name + "' needs numbers",
+                         "give '" + q.name + "' a value with its unit" +
+                             (x.along ? std::string() : ", or name it with 'along:' if it places state '" + S + "' on the path"));
+  }
+
+  /// A stationary binding position exactly: a simple rational (or a rational multiple of π,
+  /// denominator ≤ 360) at which ∂K/∂along vanishes to 40 digits, if there is one.
+  std::optional<ex> exact_position(const ex& K, const model::Find::Reach& x, const numeric& s_bind, const numeric& p_star, int digits,
+                                   const std::function<std::optional<numeric>(const ex&, const numeric&, const numeric&)>& K_at) const {
+    std::optional<ex> exact_s;
+    ex dK = K.diff(ex_to<symbol>(*x.along));
+    numeric scale = abs(*K_at(K.diff(ex_to<symbol>(x.p)), s_bind, p_star)) + 1;
+    for (const ex& unit : {ex(1), ex(Pi)})
+      for (int den = 1; den <= 360 && !exact_s; ++den) {
+        numeric u = *numerics::evaluate(unit, env, digits);
+        numeric k(cln::round1(cln::the<cln::cl_R>(ex_to<numeric>(s_bind * den / u).to_cl_N())));
+        ex cand = unit * k / den;
+        auto c = numerics::evaluate(cand, env, digits);
+        auto d = c ? K_at(dK, *c, p_star) : std::nullopt;
+        if (d && abs(*c - s_bind) < numerics::tenth(30) * (abs(s_bind) + 1) &&
+            abs(*d) < scale * numerics::tenth(40))
+          exact_s = cand;
+      }
+    return exact_s;
+  }
+
+  /// The bound in closed form where the binding position is exact: K(s, p) = 0 of degree ≤ 2 in
+  /// p, the root that is the number found (to 30 digits).
+  std::optional<ex> reach_closed(const ex& K, const model::Find::Reach& x, const std::optional<ex>& exact_s, const numeric& p_star,
+                                 int digits) const {
+    std::optional<ex> closed;
+    ex e = K;
+    if (x.along) e = e.subs(*x.along == *exact_s);
+    e = model::tidy(e);
+    ex num_e = e.normal().numer();
+    if (num_e.is_polynomial(x.p) && num_e.degree(x.p) >= 1 && num_e.degree(x.p) <= 2) {
+      ex p2 = num_e.coeff(x.p, 2), p1 = num_e.coeff(x.p, 1), p0 = num_e.coeff(x.p, 0);
+      std::vector<ex> roots;
+      if (p2.is_zero()) {
+        roots.push_back(-p0 / p1);
+      } else if (p1.is_zero()) {
+        roots.push_back(sqrt(-p0 / p2));
+      } else {
+        ex d = sqrt(p1 * p1 - 4 * p2 * p0);
+        roots = {(-p1 + d) / (2 * p2), (-p1 - d) / (2 * p2)};
+      }
+      for (auto& c : roots) {
+        ex t = model::factored(model::root_simplify(model::tidy(c), [this](const ex& y) { return m.fixed_sign(y); }));
+        auto v = numerics::evaluate(t, env, digits);
+        if (v && v->is_real() && abs(*v - p_star) <= abs(p_star) * numerics::tenth(30)) {
+          closed = t;
+          break;
+        }
+      }
+    }
+    return closed;
+  }
+
+  /// How the bound was found, for the derivation.
+  static std::string reach_note(const model::Find::Reach& x, const std::string& S, const std::string& path, const numeric& s_bind,
+                                bool at_end, const numeric& p_star) {
+    std::ostringstream note;
+    note << "it is " << (x.along ? "least over the path" : "taken at the state itself");
+    if (x.along)
+      note << " at " << x.along_name << " = " << numerics::format(s_bind, 8) << (at_end ? " (an end of the path)" : " (where its derivative along the path is zero)");
+    note << ", and zero there for " << x.p_name << " = " << numerics::format(p_star, 8) << "; state " << S << " is reached" << path
+         << " for " << x.p_name << (x.least ? " above " : " below ") << numerics::format(p_star, 8)
+         << " (at that value itself its kinetic energy there is zero: it comes to rest at that place, or only creeps up to it)";
+    return note.str();
+  }
+
   /// The least (greatest) value of f's parameter p for which its state S is reached: the
   /// kinetic energy K = T@S from the solution must be ≥ 0 at S, and — when a parameter `along`
   /// places S — at every position of the path, along ∈ [lo, hi]:
@@ -746,14 +825,7 @@ private:
     const std::string S = m.states[x.state].name;
     const std::string what = x.least ? "least" : "greatest";
     ex K = r.closed;
-    if (!K.has(x.p))
-      throw SceneError(x.pos, "the kinetic energy at state '" + S + "' does not depend on '" + x.p_name + "' (" + model::text(K) + ")",
-                       "name the parameter that sets the motion toward state '" + S + "' (a speed or position at an earlier state)");
-    for (auto& q : m.params)
-      if (!q.value && !q.unknown && K.has(q.sym) && !q.sym.is_equal(x.p) && !(x.along && q.sym.is_equal(*x.along)))
-        throw SceneError(q.pos, "parameter '" + q.name + "' has no value, but the " + what + " value of '" + x.p_name + "' needs numbers",
-                         "give '" + q.name + "' a value with its unit" +
-                             (x.along ? std::string() : ", or name it with 'along:' if it places state '" + S + "' on the path"));
+    check_reach(K, x, S, what);
     auto two_to = [](int k) { return ex_to<numeric>(pow(numeric(2), k)); };
     exmap at = env;
     auto K_at = [&](const ex& e, const numeric& s, const numeric& p) -> std::optional<numeric> {
@@ -857,57 +929,11 @@ private:
     // rational multiple of π, denominator ≤ 360) at which ∂K/∂along vanishes to 40 digits
     std::optional<ex> exact_s;
     if (x.along && at_end) exact_s = bind->i == 0 ? x.lo : x.hi;
-    if (x.along && !at_end) {
-      ex dK = K.diff(ex_to<symbol>(*x.along));
-      numeric scale = abs(*K_at(K.diff(ex_to<symbol>(x.p)), s_bind, p_star)) + 1;
-      for (const ex& unit : {ex(1), ex(Pi)})
-        for (int den = 1; den <= 360 && !exact_s; ++den) {
-          numeric u = *numerics::evaluate(unit, env, digits);
-          numeric k(cln::round1(cln::the<cln::cl_R>(ex_to<numeric>(s_bind * den / u).to_cl_N())));
-          ex cand = unit * k / den;
-          auto c = numerics::evaluate(cand, env, digits);
-          auto d = c ? K_at(dK, *c, p_star) : std::nullopt;
-          if (d && abs(*c - s_bind) < numerics::tenth(30) * (abs(s_bind) + 1) &&
-              abs(*d) < scale * numerics::tenth(40))
-            exact_s = cand;
-        }
-    }
+    if (x.along && !at_end) exact_s = exact_position(K, x, s_bind, p_star, digits, K_at);
     // the closed form, where the binding position is exact: K(s, p) = 0 of degree ≤ 2 in p
     std::optional<ex> closed;
-    if (!x.along || exact_s) {
-      ex e = K;
-      if (x.along) e = e.subs(*x.along == *exact_s);
-      e = model::tidy(e);
-      ex num_e = e.normal().numer();
-      if (num_e.is_polynomial(x.p) && num_e.degree(x.p) >= 1 && num_e.degree(x.p) <= 2) {
-        ex p2 = num_e.coeff(x.p, 2), p1 = num_e.coeff(x.p, 1), p0 = num_e.coeff(x.p, 0);
-        std::vector<ex> roots;
-        if (p2.is_zero()) {
-          roots.push_back(-p0 / p1);
-        } else if (p1.is_zero()) {
-          roots.push_back(sqrt(-p0 / p2));
-        } else {
-          ex d = sqrt(p1 * p1 - 4 * p2 * p0);
-          roots = {(-p1 + d) / (2 * p2), (-p1 - d) / (2 * p2)};
-        }
-        for (auto& c : roots) {
-          ex t = model::factored(model::root_simplify(model::tidy(c), [this](const ex& y) { return m.fixed_sign(y); }));
-          auto v = numerics::evaluate(t, env, digits);
-          if (v && v->is_real() && abs(*v - p_star) <= abs(p_star) * numerics::tenth(30)) {
-            closed = t;
-            break;
-          }
-        }
-      }
-    }
-    std::ostringstream note;
-    note << "it is " << (x.along ? "least over the path" : "taken at the state itself");
-    if (x.along)
-      note << " at " << x.along_name << " = " << numerics::format(s_bind, 8) << (at_end ? " (an end of the path)" : " (where its derivative along the path is zero)");
-    note << ", and zero there for " << x.p_name << " = " << numerics::format(p_star, 8) << "; state " << S << " is reached" << path
-         << " for " << x.p_name << (x.least ? " above " : " below ") << numerics::format(p_star, 8)
-         << " (at that value itself its kinetic energy there is zero: it comes to rest at that place, or only creeps up to it)";
-    r.extreme_note = note.str();
+    if (!x.along || exact_s) closed = reach_closed(K, x, exact_s, p_star, digits);
+    r.extreme_note = reach_note(x, S, path, s_bind, at_end, p_star);
     r.extreme_of = K;
     r.extreme_what = "the kinetic energy at state " + S + " as a function of " + x.p_name + (x.along ? " and " + x.along_name : "");
     r.closed = closed ? *closed : ex(p_star);

@@ -104,115 +104,23 @@ struct Loaded {
   const kinergy::model::Model& model() const { return sol ? sol->model : *bare; }
 };
 
-}  // namespace
 
-int main(int argc, char** argv) {
-  CLI::App app{"kinergy: plane rigid-body motion by energy and momentum, in closed form", "kinergy"};
-  app.require_subcommand(1);
-#ifndef KINERGY_VERSION
-#define KINERGY_VERSION "unknown"
-#endif
-  app.set_version_flag("--version", std::string("kinergy ") + KINERGY_VERSION);
-  int digits = 15;
-  bool as_json = false;
+/// `kinergy solve`: each unknown in closed form and its value.
+struct SolveCommand {
   std::string scene;
-  std::vector<std::string> scenes;
+  int digits = 15;
+  bool as_json = false, no_confirm = false;
+  CLI::App* solve = nullptr;
 
-  auto* solve = app.add_subcommand("solve", "solve a scene: each unknown in closed form and its value");
-  solve->add_option("SCENE", scene, "scene file (YAML)")->required();
-  solve->add_option("--digits", digits, "significant digits, proven: ball arithmetic (Arb) from the exact inputs, the precision raised until the ball fixes them; JSON adds the ball (default: 15 from the compiled double evaluator when its error bound fixes them, not proven)")->check(CLI::Range(1, 10000));
-  solve->add_flag("--json", as_json, "print JSON for tools");
-  bool no_confirm = false;
-  solve->add_flag("--no-confirm", no_confirm, "do not confirm each analysis a second way (by a simulation of the same scene, else by the equations' residuals at 50 digits) before printing");
-
-  std::string tex_out, pdf_out;
-  int derive_digits = 4;
-  bool no_checks = false;
-  auto* derive = app.add_subcommand("derive", "the worked solution step by step: text, LaTeX, PDF, or one HTML page");
-  derive->add_option("SCENE", scene, "scene file (YAML)")->required();
-  derive->add_option("--latex", tex_out, "write a standalone LaTeX document to FILE ('-': standard output)");
-  derive->add_option("--pdf", pdf_out, "write a PDF (runs pdflatex in a temporary directory)");
-  std::string html_out;
-  derive->add_option("--html", html_out, "write one self-contained HTML page: the mathematics typeset by KaTeX, the figures, "
-                                         "and the motion of each analysis that can be simulated, animated")
-      ->check(writable_file());
-  derive->add_option("--digits", derive_digits, "significant digits of the numbers (default 4)")->check(CLI::Range(1, 1000));
-  derive->add_flag("--no-checks", no_checks, "leave out the checks of the scene's 'expect' claims");
-  derive->add_flag("--no-confirm", no_confirm, "do not confirm each analysis a second way before deriving");
-
-  auto* verify = app.add_subcommand("verify", "check every 'expect' claim of the scenes");
-  verify->add_option("SCENE", scenes, "scene files (YAML)")->required();
-  verify->add_flag("--json", as_json, "print JSON for tools");
-  double rtol = 0;
-  verify->add_option("--rtol", rtol, "accept a value within this relative difference of the derived one (e.g. 0.005: books round on the way)")
-      ->check(finite_in(0, 1, true, "a relative tolerance such as 0.005"));
-  verify->add_flag("--no-confirm", no_confirm, "do not confirm each analysis a second way before checking the claims");
-
-  std::string draw_state, draw_out;
-  auto* draw = app.add_subcommand("draw", "draw the scene at a state from its model: bodies, points, supports, springs, forces");
-  draw->add_option("SCENE", scene, "scene file (YAML)")->required();
-  draw->add_option("--state", draw_state, "the state to draw (default: the first; 'all': every state side by side)");
-  int draw_figure = 0;
-  draw->add_option("--figure", draw_figure, "figure N of the worked solution (kinergy derive --pdf numbers them): the scene at its states, "
-                                            "an impulse-momentum diagram")
-      ->check(CLI::Range(1, 1000000));
-  draw->add_option("-o,--output", draw_out, "FILE.svg, FILE.pdf, FILE.png or FILE.tex (a TikZ picture) (default: SVG on standard output)");
-
-  double until = 0, tol = 1e-10, step = 0;
-  std::string method = "dopri5", from, csv_out, plot_out;
-  bool equations = false, check = false, no_native = false;
-  std::string batch_in = "-";
-  auto* batch = app.add_subcommand("batch", "many scenes in one process: JSON Lines of requests in (a file, or '-' for standard input), "
-                                            "JSON Lines of results out; a failing request is a result too, and never stops the batch");
-  batch->add_option("REQUESTS", batch_in, "JSON Lines file of requests ({\"scene\": FILE} or {\"yaml\": TEXT}, with id, set, "
-                                          "produce, digits; see docs/batch.md), '-' for standard input (the default)");
-
-  std::vector<std::string> sweep_sets;
-  std::string sweep_csv, sweep_json, sweep_plot;
-  auto* sweep = app.add_subcommand("sweep", "solve a scene over a grid of parameter values: CSV, JSON, a plot");
-  sweep->add_option("SCENE", scene, "scene file (YAML)")->required();
-  sweep->add_option("--set", sweep_sets, "NAME=LO..HI:COUNT, COUNT values from LO to HI in the unit the scene writes NAME in "
-                                         "(repeat it for a grid; the last varies fastest)")->required();
-  sweep->add_option("--csv", sweep_csv, "write the grid and each result to FILE.csv ('-': standard output, the default without --json)");
-  sweep->add_option("--json", sweep_json, "write it as JSON to FILE ('-': standard output)");
-  sweep->add_option("--plot", sweep_plot, "draw each result against the first parameter into FILE.svg or FILE.png (gnuplot)");
-
-  auto* simulate = app.add_subcommand("simulate", "integrate the scene's motion in time from a state, with only the effects it lists");
-  simulate->add_option("SCENE", scene, "scene file (YAML)")->required();
-  simulate->add_option("--until", until, "end time in s (absolute, the start state's t is the origin)")
-      ->check(finite_in(-1e300, 1e300, false, "a finite end time in s"));
-  simulate->add_option("--from", from, "the state to start from (default: the first)");
-  simulate->add_option("--tol", tol, "absolute and relative tolerance of the adaptive methods (default 1e-10)")->check(finite_in(1e-15, 1e-1, false, "a tolerance from 1e-15 to 0.1"));
-  simulate->add_option("--method", method, "dopri5 (default), rkf78, bs (Bulirsch-Stoer), symplectic (fixed step, separable energy), rk4 (fixed step)");
-  simulate->add_option("--step", step, "fixed step of symplectic and rk4 in s (default: span/10000)")
-      ->check(finite_in(0, 1e300, true, "a positive step in s"));
-  std::string animate_out;
-  simulate->add_option("--animate", animate_out, "draw the motion into FILE.svg (plays by itself), FILE.html (play/pause, a time slider, "
-                                                 "the impacts marked) or FILE.gif (gnuplot), at the samples of --samples/--dt")
-      ->check(writable_file());
-  simulate->add_option("--csv", csv_out, "write t, q, q_dot, T, V, E per step to FILE")->check(writable_file());
-  simulate->add_option("--plot", plot_out, "draw coordinates and energy against time into FILE.svg or FILE.png (gnuplot)")
-      ->check(writable_file());
-  int samples = 1000;
-  double sample_dt = 0;
-  simulate->add_option("--samples", samples,
-                       "for --csv and --plot: this many samples at regular times over the run, from the integrator's dense output, "
-                       "with every event exactly (default 1000; 0: the accepted steps themselves)")
-      ->check(CLI::Range(0, 10000000));
-  simulate->add_option("--dt", sample_dt, "for --csv and --plot: a sample every DT seconds instead of --samples")
-      ->check(finite_in(0, 1e300, false, "a positive interval in s"));
-  simulate->add_flag("--equations", equations, "print the equations of motion");
-  simulate->add_flag("--check", check, "run every analysis of the scene as a simulation and compare with the closed forms");
-  simulate->add_flag("--no-native", no_native, "evaluate the right-hand side by the tape instead of compiled machine code");
-
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    int rc = app.exit(e);
-    return rc == 0 ? 0 : 2;
+  void add(CLI::App& app) {
+    solve = app.add_subcommand("solve", "solve a scene: each unknown in closed form and its value");
+    solve->add_option("SCENE", scene, "scene file (YAML)")->required();
+    solve->add_option("--digits", digits, "significant digits, proven: ball arithmetic (Arb) from the exact inputs, the precision raised until the ball fixes them; JSON adds the ball (default: 15 from the compiled double evaluator when its error bound fixes them, not proven)")->check(CLI::Range(1, 10000));
+    solve->add_flag("--json", as_json, "print JSON for tools");
+    solve->add_flag("--no-confirm", no_confirm, "do not confirm each analysis a second way (by a simulation of the same scene, else by the equations' residuals at 50 digits) before printing");
   }
 
-  if (*solve) {
+  int run() const {
     return guarded(scene, [&] {
       kinergy::Solution s = kinergy::solve_file(scene);
       require_results(s);
@@ -224,7 +132,28 @@ int main(int argc, char** argv) {
       return 0;
     });
   }
-  if (*derive) {
+};
+
+/// `kinergy derive`: the worked solution step by step.
+struct DeriveCommand {
+  std::string scene, tex_out, pdf_out, html_out;
+  int derive_digits = 4;
+  bool no_checks = false, no_confirm = false;
+
+  void add(CLI::App& app) {
+    auto* derive = app.add_subcommand("derive", "the worked solution step by step: text, LaTeX, PDF, or one HTML page");
+    derive->add_option("SCENE", scene, "scene file (YAML)")->required();
+    derive->add_option("--latex", tex_out, "write a standalone LaTeX document to FILE ('-': standard output)");
+    derive->add_option("--pdf", pdf_out, "write a PDF (runs pdflatex in a temporary directory)");
+    derive->add_option("--html", html_out, "write one self-contained HTML page: the mathematics typeset by KaTeX, the figures, "
+                                           "and the motion of each analysis that can be simulated, animated")
+        ->check(writable_file());
+    derive->add_option("--digits", derive_digits, "significant digits of the numbers (default 4)")->check(CLI::Range(1, 1000));
+    derive->add_flag("--no-checks", no_checks, "leave out the checks of the scene's 'expect' claims");
+    derive->add_flag("--no-confirm", no_confirm, "do not confirm each analysis a second way before deriving");
+  }
+
+  int run() const {
     return guarded(scene, [&] {
       kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
       kinergy::Solution s = kinergy::solve_scene(def);
@@ -275,7 +204,59 @@ int main(int argc, char** argv) {
       return 0;
     });
   }
-  if (*draw) {
+};
+
+/// `kinergy verify`: every 'expect' claim of the scenes.
+struct VerifyCommand {
+  std::vector<std::string> scenes;
+  bool as_json = false, no_confirm = false;
+  double rtol = 0;
+
+  void add(CLI::App& app) {
+    auto* verify = app.add_subcommand("verify", "check every 'expect' claim of the scenes");
+    verify->add_option("SCENE", scenes, "scene files (YAML)")->required();
+    verify->add_flag("--json", as_json, "print JSON for tools");
+    verify->add_option("--rtol", rtol, "accept a value within this relative difference of the derived one (e.g. 0.005: books round on the way)")
+        ->check(finite_in(0, 1, true, "a relative tolerance such as 0.005"));
+    verify->add_flag("--no-confirm", no_confirm, "do not confirm each analysis a second way before checking the claims");
+  }
+
+  int run() const {
+    int rc = 0;
+    for (auto& f : scenes) {
+      int r = guarded(f, [&] {
+        kinergy::Solution s = kinergy::solve_file(f);
+        if (!no_confirm) kinergy::confirm(s);
+        auto checks = kinergy::verify::verify(s, rtol);
+        bool ok = true;
+        for (auto& c : checks) ok = ok && c.ok();
+        if (as_json) std::cout << kinergy::emit::json(s, {}, &checks);
+        else if (checks.empty()) std::cout << f << ": no claims to check\n";
+        else std::cout << kinergy::emit::text(checks, f);
+        return ok ? 0 : 1;
+      });
+      rc = std::max(rc, r);
+    }
+    return rc;
+  }
+};
+
+/// `kinergy draw`: the scene at a state, or a figure of its worked solution.
+struct DrawCommand {
+  std::string scene, draw_state, draw_out;
+  int draw_figure = 0;
+
+  void add(CLI::App& app) {
+    auto* draw = app.add_subcommand("draw", "draw the scene at a state from its model: bodies, points, supports, springs, forces");
+    draw->add_option("SCENE", scene, "scene file (YAML)")->required();
+    draw->add_option("--state", draw_state, "the state to draw (default: the first; 'all': every state side by side)");
+    draw->add_option("--figure", draw_figure, "figure N of the worked solution (kinergy derive --pdf numbers them): the scene at its states, "
+                                              "an impulse-momentum diagram")
+        ->check(CLI::Range(1, 1000000));
+    draw->add_option("-o,--output", draw_out, "FILE.svg, FILE.pdf, FILE.png or FILE.tex (a TikZ picture) (default: SVG on standard output)");
+  }
+
+  int run() const {
     return guarded(scene, [&]() -> int {
       Loaded in(scene);
       const kinergy::model::Model& m = in.model();
@@ -321,7 +302,25 @@ int main(int argc, char** argv) {
       return 0;
     });
   }
-  if (*sweep) {
+};
+
+/// `kinergy sweep`: a scene over a grid of parameter values.
+struct SweepCommand {
+  std::string scene;
+  std::vector<std::string> sweep_sets;
+  std::string sweep_csv, sweep_json, sweep_plot;
+
+  void add(CLI::App& app) {
+    auto* sweep = app.add_subcommand("sweep", "solve a scene over a grid of parameter values: CSV, JSON, a plot");
+    sweep->add_option("SCENE", scene, "scene file (YAML)")->required();
+    sweep->add_option("--set", sweep_sets, "NAME=LO..HI:COUNT, COUNT values from LO to HI in the unit the scene writes NAME in "
+                                           "(repeat it for a grid; the last varies fastest)")->required();
+    sweep->add_option("--csv", sweep_csv, "write the grid and each result to FILE.csv ('-': standard output, the default without --json)");
+    sweep->add_option("--json", sweep_json, "write it as JSON to FILE ('-': standard output)");
+    sweep->add_option("--plot", sweep_plot, "draw each result against the first parameter into FILE.svg or FILE.png (gnuplot)");
+  }
+
+  int run() {
     return guarded(scene, [&]() -> int {
       const kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
       std::vector<kinergy::batch::Range> ranges;
@@ -346,7 +345,20 @@ int main(int argc, char** argv) {
       return 0;
     });
   }
-  if (*batch) {
+};
+
+/// `kinergy batch`: many requests in one process.
+struct BatchCommand {
+  std::string batch_in = "-";
+
+  void add(CLI::App& app) {
+    auto* batch = app.add_subcommand("batch", "many scenes in one process: JSON Lines of requests in (a file, or '-' for standard input), "
+                                              "JSON Lines of results out; a failing request is a result too, and never stops the batch");
+    batch->add_option("REQUESTS", batch_in, "JSON Lines file of requests ({\"scene\": FILE} or {\"yaml\": TEXT}, with id, set, "
+                                            "produce, digits; see docs/batch.md), '-' for standard input (the default)");
+  }
+
+  int run() const {
     // progress on stderr (a terminal's line rewritten), a summary at the end; exit 1 when a request failed
     std::ifstream file;
     if (batch_in != "-") {
@@ -365,7 +377,98 @@ int main(int argc, char** argv) {
     std::cerr << "kinergy batch: " << sum.requests << " requests, " << sum.ok << " ok, " << sum.failed << " failed\n";
     return sum.failed ? 1 : 0;
   }
-  if (*simulate) {
+};
+
+/// `kinergy simulate`: the motion in time from a state, and each analysis run as a simulation.
+struct SimulateCommand {
+  std::string scene;
+  double until = 0, tol = 1e-10, step = 0, sample_dt = 0;
+  std::string method = "dopri5", from, csv_out, plot_out, animate_out;
+  bool equations = false, check = false, no_native = false;
+  int samples = 1000;
+  CLI::App* simulate = nullptr;
+
+  void add(CLI::App& app) {
+    simulate = app.add_subcommand("simulate", "integrate the scene's motion in time from a state, with only the effects it lists");
+    simulate->add_option("SCENE", scene, "scene file (YAML)")->required();
+    simulate->add_option("--until", until, "end time in s (absolute, the start state's t is the origin)")
+        ->check(finite_in(-1e300, 1e300, false, "a finite end time in s"));
+    simulate->add_option("--from", from, "the state to start from (default: the first)");
+    simulate->add_option("--tol", tol, "absolute and relative tolerance of the adaptive methods (default 1e-10)")->check(finite_in(1e-15, 1e-1, false, "a tolerance from 1e-15 to 0.1"));
+    simulate->add_option("--method", method, "dopri5 (default), rkf78, bs (Bulirsch-Stoer), symplectic (fixed step, separable energy), rk4 (fixed step)");
+    simulate->add_option("--step", step, "fixed step of symplectic and rk4 in s (default: span/10000)")
+        ->check(finite_in(0, 1e300, true, "a positive step in s"));
+    simulate->add_option("--animate", animate_out, "draw the motion into FILE.svg (plays by itself), FILE.html (play/pause, a time slider, "
+                                                   "the impacts marked) or FILE.gif (gnuplot), at the samples of --samples/--dt")
+        ->check(writable_file());
+    simulate->add_option("--csv", csv_out, "write t, q, q_dot, T, V, E per step to FILE")->check(writable_file());
+    simulate->add_option("--plot", plot_out, "draw coordinates and energy against time into FILE.svg or FILE.png (gnuplot)")
+        ->check(writable_file());
+    simulate->add_option("--samples", samples,
+                         "for --csv and --plot: this many samples at regular times over the run, from the integrator's dense output, "
+                         "with every event exactly (default 1000; 0: the accepted steps themselves)")
+        ->check(CLI::Range(0, 10000000));
+    simulate->add_option("--dt", sample_dt, "for --csv and --plot: a sample every DT seconds instead of --samples")
+        ->check(finite_in(0, 1e300, false, "a positive interval in s"));
+    simulate->add_flag("--equations", equations, "print the equations of motion");
+    simulate->add_flag("--check", check, "run every analysis of the scene as a simulation and compare with the closed forms");
+    simulate->add_flag("--no-native", no_native, "evaluate the right-hand side by the tape instead of compiled machine code");
+  }
+
+  /// --check: every analysis run as a simulation and compared; an exit status when that is all
+  /// there is to do (or a leg fails).
+  std::optional<int> check_legs(const kinergy::model::Model& m, const std::optional<kinergy::Solution>& sol,
+                                const kinergy::simulate::Options& o) const {
+    namespace sim = kinergy::simulate;
+    if (!sol) throw kinergy::SceneError({scene, 1, 1}, "the scene has no analyses, so no closed form to check", "add an analysis, or leave out --check");
+    int bad = 0;
+    for (auto& leg : sim::legs(*sol)) {
+      const auto& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
+      std::cout << a.kind << " " << m.states[leg.from].name << " -> " << m.states[leg.to].name << ": ";
+      if (!leg.why_not.empty()) {
+        std::cout << "not simulated: " << leg.why_not << "\n";
+        continue;
+      }
+      auto c = sim::check_leg(*sol, leg, o, std::max(100 * tol, 1e-13));
+      std::cout << "until " << leg.target << ", " << c.run.steps << " steps; largest relative difference "
+                << c.worst << (c.worst_what.empty() ? "" : " (" + c.worst_what + ")") << (c.ok ? " ok" : " FAILS")
+                << (c.note.empty() ? "" : "; " + c.note) << "\n";
+      bad += c.ok ? 0 : 1;
+    }
+    if (!sol->model.analyses.empty() && !simulate->count("--until")) return bad ? 1 : 0;
+    if (bad) return 1;
+    return std::nullopt;
+  }
+
+  /// The state the run starts from (--from, else the first).
+  int start_state(const kinergy::model::Model& m) const {
+    int start = 0;
+    if (!from.empty()) {
+      start = m.state_index(from);
+      if (start < 0) throw kinergy::SceneError({scene, 1, 1}, "there is no state '" + from + "'", "name a state of the scene's 'states'");
+    }
+    return start;
+  }
+
+  /// Its numbers: every coordinate and rate given there, or found by an analysis.
+  kinergy::simulate::State start_values(const kinergy::model::Model& m, const std::optional<kinergy::Solution>& sol, int start) const {
+    namespace sim = kinergy::simulate;
+    if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to start from", "add a state with every coordinate and rate");
+    sim::State s0 = sol ? sim::state_values(*sol, start) : sim::state_values(m, {}, m.parameter_values(), start);
+    const auto& st = m.states[static_cast<std::size_t>(start)];
+    for (std::size_t i = 0; i < m.coords.size(); ++i) {
+      if (!std::isnan(s0.q[i]) && !std::isnan(s0.qd[i])) continue;
+      const std::string what = std::isnan(s0.q[i]) ? m.coords[i].name : m.coords[i].name + "_dot";
+      if (!sol)
+        throw kinergy::SceneError(st.pos, "state '" + st.name + "' does not give " + what + " as a number",
+                                  "give every coordinate and rate at the start state");
+      throw kinergy::SceneError(st.pos, "state '" + st.name + "' does not fix " + what + ", and no analysis finds it",
+                                "give it at that state, or start from another with --from");
+    }
+    return s0;
+  }
+
+  int run() {
     return guarded(scene, [&]() -> int {
       namespace sim = kinergy::simulate;
       Loaded in(scene);
@@ -387,46 +490,14 @@ int main(int argc, char** argv) {
       o.step = step;
       o.native = !no_native;
       if (equations) std::cout << sim::equations_of_motion(m).text(m) << "\n";
-      if (check) {
-        if (!sol) throw kinergy::SceneError({scene, 1, 1}, "the scene has no analyses, so no closed form to check", "add an analysis, or leave out --check");
-        int bad = 0;
-        for (auto& leg : sim::legs(*sol)) {
-          const auto& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
-          std::cout << a.kind << " " << m.states[leg.from].name << " -> " << m.states[leg.to].name << ": ";
-          if (!leg.why_not.empty()) {
-            std::cout << "not simulated: " << leg.why_not << "\n";
-            continue;
-          }
-          auto c = sim::check_leg(*sol, leg, o, std::max(100 * tol, 1e-13));
-          std::cout << "until " << leg.target << ", " << c.run.steps << " steps; largest relative difference "
-                    << c.worst << (c.worst_what.empty() ? "" : " (" + c.worst_what + ")") << (c.ok ? " ok" : " FAILS")
-                    << (c.note.empty() ? "" : "; " + c.note) << "\n";
-          bad += c.ok ? 0 : 1;
-        }
-        if (!sol->model.analyses.empty() && !simulate->count("--until")) return bad ? 1 : 0;
-        if (bad) return 1;
-      }
+      if (check)
+        if (auto rc = check_legs(m, sol, o)) return *rc;
       if (!simulate->count("--until")) {
         if (equations) return 0;
         throw kinergy::SceneError({scene, 1, 1}, "simulate needs an end time", "add --until T (seconds)");
       }
-      int start = 0;
-      if (!from.empty()) {
-        start = m.state_index(from);
-        if (start < 0) throw kinergy::SceneError({scene, 1, 1}, "there is no state '" + from + "'", "name a state of the scene's 'states'");
-      }
-      if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to start from", "add a state with every coordinate and rate");
-      sim::State s0 = sol ? sim::state_values(*sol, start) : sim::state_values(m, {}, m.parameter_values(), start);
-      const auto& st = m.states[static_cast<std::size_t>(start)];
-      for (std::size_t i = 0; i < m.coords.size(); ++i) {
-        if (!std::isnan(s0.q[i]) && !std::isnan(s0.qd[i])) continue;
-        const std::string what = std::isnan(s0.q[i]) ? m.coords[i].name : m.coords[i].name + "_dot";
-        if (!sol)
-          throw kinergy::SceneError(st.pos, "state '" + st.name + "' does not give " + what + " as a number",
-                                    "give every coordinate and rate at the start state");
-        throw kinergy::SceneError(st.pos, "state '" + st.name + "' does not fix " + what + ", and no analysis finds it",
-                                  "give it at that state, or start from another with --from");
-      }
+      const int start = start_state(m);
+      sim::State s0 = start_values(m, sol, start);
       // a progress bar on stderr for long runs in a terminal
       const bool tty = isatty(2);
       auto t0 = std::chrono::steady_clock::now();
@@ -468,20 +539,44 @@ int main(int argc, char** argv) {
       return 0;
     });
   }
-  int rc = 0;
-  for (auto& f : scenes) {
-    int r = guarded(f, [&] {
-      kinergy::Solution s = kinergy::solve_file(f);
-      if (!no_confirm) kinergy::confirm(s);
-      auto checks = kinergy::verify::verify(s, rtol);
-      bool ok = true;
-      for (auto& c : checks) ok = ok && c.ok();
-      if (as_json) std::cout << kinergy::emit::json(s, {}, &checks);
-      else if (checks.empty()) std::cout << f << ": no claims to check\n";
-      else std::cout << kinergy::emit::text(checks, f);
-      return ok ? 0 : 1;
-    });
-    rc = std::max(rc, r);
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"kinergy: plane rigid-body motion by energy and momentum, in closed form", "kinergy"};
+  app.require_subcommand(1);
+#ifndef KINERGY_VERSION
+#define KINERGY_VERSION "unknown"
+#endif
+  app.set_version_flag("--version", std::string("kinergy ") + KINERGY_VERSION);
+  SolveCommand solve;
+  DeriveCommand derive;
+  VerifyCommand verify;
+  DrawCommand draw;
+  BatchCommand batch;
+  SweepCommand sweep;
+  SimulateCommand simulate;
+  solve.add(app);
+  derive.add(app);
+  verify.add(app);
+  draw.add(app);
+  batch.add(app);
+  sweep.add(app);
+  simulate.add(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
   }
-  return rc;
+  // one subcommand is required: run it
+  const std::string chosen = app.get_subcommands().front()->get_name();
+  if (chosen == "solve") return solve.run();
+  if (chosen == "derive") return derive.run();
+  if (chosen == "verify") return verify.run();
+  if (chosen == "draw") return draw.run();
+  if (chosen == "batch") return batch.run();
+  if (chosen == "sweep") return sweep.run();
+  return simulate.run();
 }

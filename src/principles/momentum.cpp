@@ -404,36 +404,12 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   return out;
 }
 
-ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
-  ImpactBalance out;
+/// The impact's generalized impulse–momentum equations, one per coordinate that moves.
+static void impact_momentum(const Model& m, const Analysis& a, ImpactBalance& out) {
   const int B = a.from, A = a.to;  // before, after
   const std::string SB = m.states[B].name, SA = m.states[A].name;
-  // positions do not change during an impact
-  for (auto& c : m.coords) {
-    ex qb = m.states[B].sym.at(c.name).first, qa = m.states[A].sym.at(c.name).first;
-    out.positions.push_back({qa, qb, "impact", "positions kept in the impact " + SB + " -> " + SA, a.pos});
-  }
-  out.positions.push_back({m.states[A].t, m.states[B].t, "impact", "time of the impact " + SB + " -> " + SA, a.pos});
-
-  // velocities after, at the positions before
   auto after = [&](const ex& e) { return m.bind_mixed(e, B, A); };
   auto before = [&](const ex& e) { return m.bind(e, B); };
-
-  struct Party {
-    std::pair<ex, ex> v, r;  // generic velocity and position
-  };
-  auto party = [&](const PointRef& p) {
-    Party x;
-    if (p.ground) {
-      x.v = {0, 0};
-      x.r = {0, 0};
-    } else {
-      x.v = m.velocity(p);
-      x.r = m.position(p);
-    }
-    return x;
-  };
-
   // generalized impulse–momentum along each coordinate q_i:
   //   Σ_b [m_b Δv̄_b·∂r_G/∂q_i + Ī_b Δω_b ∂φ_b/∂q_i] = Σ_c P_c·(∂r_B/∂q_i − ∂r_A/∂q_i) + Σ_g J_g·∂r_g/∂q_i + Σ_k λ_k ∂c_k/∂q_i
   for (std::size_t i = 0; i < m.coords.size(); ++i) {
@@ -473,6 +449,89 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
     out.momentum.push_back({lhs, rhs, "impulse-momentum",
                             "impulse-momentum along " + m.coords[i].name + " in the impact " + SB + " -> " + SA, a.pos});
   }
+}
+
+/// What each body's impulse–momentum diagram of the impact shows.
+static void impact_diagrams(const Model& m, const Analysis& a, ImpactBalance& out) {
+  // what each body's diagram shows: P = J n (+ Jt t) on the second party at the contact, −P on
+  // the first; the given blows; a pin's impulse (its body's momentum change less the others)
+  for (int ci : a.contacts) {
+    const Model::Contact e = m.contact(ci);
+    const auto& [J, Jt] = a.contact_impulses.at(e.name);
+    for (const PointRef* p : {&e.b, &e.a}) {
+      if (p->ground || p->body < 0) continue;
+      const int sign = p == &e.b ? 1 : -1;
+      Push push;
+      push.unknown = true;
+      push.body = p->body;
+      std::tie(push.arm_x, push.arm_y) = m.position(*p);
+      push.Rx = sign * (J * e.nx - (e.stick ? Jt * e.ny : ex(0)));
+      push.Ry = sign * (J * e.ny + (e.stick ? Jt * e.nx : ex(0)));
+      out.shown.push_back({e.name, push});
+    }
+  }
+  for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
+    const Effect& e = m.effects[ei];
+    if (const model::Blow* g = e.blow(); g && g->at.body >= 0 && e.activity(a) != Effect::Activity::None) {
+      Push push;
+      push.unknown = true;
+      push.body = g->at.body;
+      std::tie(push.arm_x, push.arm_y) = m.position(g->at);
+      push.Rx = g->Jx;
+      push.Ry = g->Jy;
+      out.shown.push_back({e.name, push});
+    }
+    // (a pin to the ground: its impulse on its one body; one between two bodies is internal to neither's
+    // diagram alone, and not drawn)
+    const std::vector<int> acted = e.bodies_acted(m);
+    const int ai = static_cast<int>(&a - m.analyses.data());
+    if (ai < 0 || ai >= static_cast<int>(m.analyses.size())) continue;
+    for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+      if (!holds(m, e, static_cast<int>(b)) || acted.size() != 1) continue;
+      Push push;
+      push.unknown = push.reaction = true;
+      push.body = static_cast<int>(b);
+      try {
+        std::tie(push.Rx, push.Ry) = e.impulse(m, static_cast<int>(ei), ai);
+      } catch (const std::exception&) {
+        continue;  // not told apart from the others (two pins on a body): not drawn
+      }
+      out.shown.push_back({e.name, push});
+    }
+  }
+}
+
+ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
+  ImpactBalance out;
+  const int B = a.from, A = a.to;  // before, after
+  const std::string SB = m.states[B].name, SA = m.states[A].name;
+  // positions do not change during an impact
+  for (auto& c : m.coords) {
+    ex qb = m.states[B].sym.at(c.name).first, qa = m.states[A].sym.at(c.name).first;
+    out.positions.push_back({qa, qb, "impact", "positions kept in the impact " + SB + " -> " + SA, a.pos});
+  }
+  out.positions.push_back({m.states[A].t, m.states[B].t, "impact", "time of the impact " + SB + " -> " + SA, a.pos});
+
+  // velocities after, at the positions before
+  auto after = [&](const ex& e) { return m.bind_mixed(e, B, A); };
+  auto before = [&](const ex& e) { return m.bind(e, B); };
+
+  struct Party {
+    std::pair<ex, ex> v, r;  // generic velocity and position
+  };
+  auto party = [&](const PointRef& p) {
+    Party x;
+    if (p.ground) {
+      x.v = {0, 0};
+      x.r = {0, 0};
+    } else {
+      x.v = m.velocity(p);
+      x.r = m.position(p);
+    }
+    return x;
+  };
+
+  impact_momentum(m, a, out);
 
   for (int ci : a.contacts) {
     const Model::Contact e = m.contact(ci);
@@ -521,52 +580,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
                                  "no sliding at contact " + e.name + " after the impact " + SB + " -> " + SA, e.pos});
     }
   }
-  // what each body's diagram shows: P = J n (+ Jt t) on the second party at the contact, −P on
-  // the first; the given blows; a pin's impulse (its body's momentum change less the others)
-  for (int ci : a.contacts) {
-    const Model::Contact e = m.contact(ci);
-    const auto& [J, Jt] = a.contact_impulses.at(e.name);
-    for (const PointRef* p : {&e.b, &e.a}) {
-      if (p->ground || p->body < 0) continue;
-      const int sign = p == &e.b ? 1 : -1;
-      Push push;
-      push.unknown = true;
-      push.body = p->body;
-      std::tie(push.arm_x, push.arm_y) = m.position(*p);
-      push.Rx = sign * (J * e.nx - (e.stick ? Jt * e.ny : ex(0)));
-      push.Ry = sign * (J * e.ny + (e.stick ? Jt * e.nx : ex(0)));
-      out.shown.push_back({e.name, push});
-    }
-  }
-  for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
-    const Effect& e = m.effects[ei];
-    if (const model::Blow* g = e.blow(); g && g->at.body >= 0 && e.activity(a) != Effect::Activity::None) {
-      Push push;
-      push.unknown = true;
-      push.body = g->at.body;
-      std::tie(push.arm_x, push.arm_y) = m.position(g->at);
-      push.Rx = g->Jx;
-      push.Ry = g->Jy;
-      out.shown.push_back({e.name, push});
-    }
-    // (a pin to the ground: its impulse on its one body; one between two bodies is internal to neither's
-    // diagram alone, and not drawn)
-    const std::vector<int> acted = e.bodies_acted(m);
-    const int ai = static_cast<int>(&a - m.analyses.data());
-    if (ai < 0 || ai >= static_cast<int>(m.analyses.size())) continue;
-    for (std::size_t b = 0; b < m.bodies.size(); ++b) {
-      if (!holds(m, e, static_cast<int>(b)) || acted.size() != 1) continue;
-      Push push;
-      push.unknown = push.reaction = true;
-      push.body = static_cast<int>(b);
-      try {
-        std::tie(push.Rx, push.Ry) = e.impulse(m, static_cast<int>(ei), ai);
-      } catch (const std::exception&) {
-        continue;  // not told apart from the others (two pins on a body): not drawn
-      }
-      out.shown.push_back({e.name, push});
-    }
-  }
+  impact_diagrams(m, a, out);
   return out;
 }
 

@@ -187,30 +187,16 @@ static std::optional<std::vector<std::pair<ex, numeric>>> switching_points(const
   return out;
 }
 
-/// ∫ Q ds from state s1 to s2 for Q holding |g(s)| with g linear in s (or, between two known
-/// ends, any g whose zeros there are found): the ends (state values,
-/// expressions of parameters) and the switching points s₀ = −g(0)/g′ between them, ordered by
-/// their values; on each piece |g| = σ g with σ the sign of g at the piece's middle. A closed form
-/// valid at the scene's values.
-/// One end may be unknown (a bumper's greatest compression): the direction of the motion (the
-/// sign of a rate given at a state) tells on which side of the known end it lies, and it is taken
-/// past every switching point on that side (the body meets the bumper, or leaves the launcher) —
-/// recorded in `holds` and checked on the solution, where a root that breaks it is dropped.
-/// Nothing when both ends, a switching point or that direction have no value, or g is not linear.
-static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const ex& Q, const model::Coordinate& c, int s1, int s2,
-                                        const Knowledge* know, Work& w, std::string& taken) {
-  const int fewer = know ? know->fewer_switches : 0;
+/// The switching points (expression, value) of a force holding |g| for each g in `args`, along the
+/// coordinate c from a to b (either may be unknown): a linear g's zero; a non-linear g's zeros
+/// between the known ends, or toward an unknown end within a window on either side of the known
+/// one (`window`, where they were looked for). Nothing when they cannot be had.
+static std::optional<std::vector<std::pair<ex, numeric>>> switches_along(const std::vector<ex>& args, const model::Coordinate& c,
+                                                                         const std::optional<numeric>& a, const std::optional<numeric>& b,
+                                                                         const exmap& env,
+                                                                         std::optional<std::pair<numeric, numeric>>& window) {
   const symbol& s = c.q;
-  const exmap given = m.given_values(), env = m.numeric_environment();
-  ex A = m.bind(ex(s), s1).subs(given), B = m.bind(ex(s), s2).subs(given);
-  auto a = numerics::evaluate(A, env, 40), b = numerics::evaluate(B, env, 40);
-  if (!a && !b) return std::nullopt;
-  std::vector<ex> args;
-  for (auto it = Q.preorder_begin(); it != Q.preorder_end(); ++it)
-    if (is_ex_the_function(*it, abs) && it->op(0).has(s)) args.push_back(it->op(0));
-  // the switching points: (expression, value)
   std::vector<std::pair<ex, numeric>> switches;
-  std::optional<std::pair<numeric, numeric>> window;  ///< where non-linear switches were looked for
   for (auto& g : args) {
     ex d = g.diff(s);
     if (d.is_zero()) return std::nullopt;
@@ -240,6 +226,58 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
     if (!zeros) return std::nullopt;
     switches.insert(switches.end(), zeros->begin(), zeros->end());
   }
+  return switches;
+}
+
+/// U = Σ over the pieces between consecutive cuts of ∫ Q ds, each |g| of `args` replaced by ±g
+/// with the sign g has inside the piece. Nothing where a piece has no antiderivative.
+static std::optional<ex> integrate_pieces(const ex& Q, const std::vector<ex>& args, const symbol& s,
+                                          const std::vector<std::pair<ex, numeric>>& cuts, const exmap& env) {
+  ex U = 0;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    if (cuts[i].second == cuts[i + 1].second) continue;
+    numeric mid = (cuts[i].second + cuts[i + 1].second) / 2;
+    exmap at = env;
+    at[s] = mid;
+    exmap sign;
+    for (auto& g : args) {
+      auto gv = numerics::evaluate(g, at, 40);
+      if (!gv) return std::nullopt;
+      sign[abs(g)] = gv->is_negative() ? -g : g;
+    }
+    auto F = antiderivative(model::trig_simplify(Q.subs(sign)), s);
+    if (!F) return std::nullopt;
+    U += F->subs(s == cuts[i + 1].first) - F->subs(s == cuts[i].first);
+  }
+  return U;
+}
+
+/// ∫ Q ds from state s1 to s2 for Q holding |g(s)| with g linear in s (or, between two known
+/// ends, any g whose zeros there are found): the ends (state values,
+/// expressions of parameters) and the switching points s₀ = −g(0)/g′ between them, ordered by
+/// their values; on each piece |g| = σ g with σ the sign of g at the piece's middle. A closed form
+/// valid at the scene's values.
+/// One end may be unknown (a bumper's greatest compression): the direction of the motion (the
+/// sign of a rate given at a state) tells on which side of the known end it lies, and it is taken
+/// past every switching point on that side (the body meets the bumper, or leaves the launcher) —
+/// recorded in `holds` and checked on the solution, where a root that breaks it is dropped.
+/// Nothing when both ends, a switching point or that direction have no value, or g is not linear.
+static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const ex& Q, const model::Coordinate& c, int s1, int s2,
+                                        const Knowledge* know, Work& w, std::string& taken) {
+  const int fewer = know ? know->fewer_switches : 0;
+  const symbol& s = c.q;
+  const exmap given = m.given_values(), env = m.numeric_environment();
+  ex A = m.bind(ex(s), s1).subs(given), B = m.bind(ex(s), s2).subs(given);
+  auto a = numerics::evaluate(A, env, 40), b = numerics::evaluate(B, env, 40);
+  if (!a && !b) return std::nullopt;
+  std::vector<ex> args;
+  for (auto it = Q.preorder_begin(); it != Q.preorder_end(); ++it)
+    if (is_ex_the_function(*it, abs) && it->op(0).has(s)) args.push_back(it->op(0));
+  // the switching points: (expression, value)
+  std::optional<std::pair<numeric, numeric>> window;  ///< where non-linear switches were looked for
+  auto found = switches_along(args, c, a, b, env, window);
+  if (!found) return std::nullopt;
+  const std::vector<std::pair<ex, numeric>>& switches = *found;
   // the pieces' ends from the first state's end to the second's, in the order the motion meets them
   std::vector<std::pair<ex, numeric>> cuts;
   numeric beyond;  // a place past the last switching point (for the sign on the last piece)
@@ -312,23 +350,7 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
             (on_side.empty() ? std::string() : "past " + c.name + " = " + numerics::format(on_side.back().second, 6)) +
             (on_side.empty() || !next ? "" : " and ") + (next ? "short of " + c.name + " = " + numerics::format(next->second, 6) : "");
   }
-  ex U = 0;
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-    if (cuts[i].second == cuts[i + 1].second) continue;
-    numeric mid = (cuts[i].second + cuts[i + 1].second) / 2;
-    exmap at = env;
-    at[s] = mid;
-    exmap sign;
-    for (auto& g : args) {
-      auto gv = numerics::evaluate(g, at, 40);
-      if (!gv) return std::nullopt;
-      sign[abs(g)] = gv->is_negative() ? -g : g;
-    }
-    auto F = antiderivative(model::trig_simplify(Q.subs(sign)), s);
-    if (!F) return std::nullopt;
-    U += F->subs(s == cuts[i + 1].first) - F->subs(s == cuts[i].first);
-  }
-  return U;
+  return integrate_pieces(Q, args, s, cuts, env);
 }
 
 Work generalized_force_work(const Model& m, const Effect& e, const std::string& what, const std::string& how, int s1,

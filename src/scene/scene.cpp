@@ -317,45 +317,8 @@ struct Loader {
     return true;
   }
 
-  SceneDef load(const YAML::Node& root) const {
-    SceneDef s;
-    s.file = file;
-    Node r = convert(root);
-    if (!r.is_map())
-      throw SceneError({file, 1, 1}, "a scene must be a map of sections",
-                       "start with 'title:' and add parameters, bodies, states, analyses, find");
-    only_keys(r, "the scene", {"title", "description", "parameters", "points", "coordinates", "bodies",
-                               "constraints", "effects", "states", "analyses", "find", "expect"});
-    const Node* t = r.get("title");
-    if (!t) throw SceneError({file, 1, 1}, "the scene has no 'title'", "add 'title: what the problem is'");
-    s.title = text(*t, "title", "title: Rod sliding on two tracks").s;
-    if (auto* d = r.get("description")) s.description = text(*d, "description", "description: …").s;
-
-    if (auto* p = r.get("parameters")) {
-      need_map(*p, "parameters", "parameters: {m: 5 kg, l: 1.2 m}");
-      for (auto& [k, v] : p->entries) {
-        not_a_section(k, r, "parameters");
-        check_name(k, "parameter");
-        s.parameters.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": 5 kg")});
-      }
-    }
-    if (auto* p = r.get("points")) {
-      need_map(*p, "points", "points: {O: [0, 0]}");
-      for (auto& [k, v] : p->entries) {
-        not_a_section(k, r, "points");
-        check_name(k, "point");
-        auto [x, y] = pair(v, k.scalar, k.scalar + ": [0, 0]");
-        s.points.push_back({k.scalar, k.pos, x, y});
-      }
-    }
-    if (auto* p = r.get("coordinates")) {
-      need_map(*p, "coordinates", "coordinates: {theta: rad, x: m}");
-      for (auto& [k, v] : p->entries) {
-        not_a_section(k, r, "coordinates");
-        check_name(k, "coordinate");
-        s.coordinates.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": rad")});
-      }
-    }
+  /// The bodies: mass, inertia, position, angle, points.
+  void read_bodies(const Node& r, SceneDef& s) const {
     if (auto* p = r.get("bodies")) {
       need_map(*p, "bodies", "bodies: {rod: {mass: m, inertia: {slender_rod: l}, position: [x, y]}}");
       for (auto& [k, v] : p->entries) {
@@ -393,10 +356,10 @@ struct Loader {
         s.bodies.push_back(std::move(b));
       }
     }
-    if (auto* p = r.get("constraints")) {
-      if (!p->is_list()) wrong_type(*p, "constraints", "a list", "constraints: [x + r*phi = 0]");
-      for (auto& c : p->items) s.constraints.push_back(text(c, "constraint", "x + r*phi = 0"));
-    }
+  }
+
+  /// The effects: each one's kind (named by a key of the table of kinds) and its options.
+  void read_effects(const Node& r, SceneDef& s) const {
     if (auto* p = r.get("effects")) {
       need_map(*p, "effects", "effects: {gravity: {g: g}}");
       const auto& kinds = effect_kinds();
@@ -430,6 +393,10 @@ struct Loader {
         s.effects.push_back(std::move(e));
       }
     }
+  }
+
+  /// The states: the values given there and their `where` conditions.
+  void read_states(const Node& r, SceneDef& s) const {
     if (auto* p = r.get("states")) {
       need_map(*p, "states", "states: {1: {theta: 0, theta_dot: 0}, 2: {theta: theta2}}");
       for (auto& [k, v] : p->entries) {
@@ -470,19 +437,10 @@ struct Loader {
         s.states.push_back(std::move(st));
       }
     }
-    if (auto* p = r.get("analyses")) {
-      if (!p->is_list()) wrong_type(*p, "analyses", "a list", "analyses: [{energy: {from: 1, to: 2}}]");
-      for (auto& a : p->items) {
-        if (!a.is_map() || a.entries.size() != 1)
-          throw SceneError(a.pos, "each analysis must be one principle",
-                           "write e.g. '- energy: {from: 1, to: 2}'");
-        AnalysisDef d;
-        d.kind = a.entries[0].first.scalar;
-        d.pos = a.entries[0].first.pos;
-        d.options = a.entries[0].second;
-        s.analyses.push_back(std::move(d));
-      }
-    }
+  }
+
+  /// The results asked for: values, extremes, least and greatest values.
+  void read_finds(const Node& r, SceneDef& s) const {
     if (auto* p = r.get("find")) {
       need_map(*p, "find", "find: {omega2: theta_dot@2}");
       for (auto& [k, v] : p->entries) {
@@ -524,6 +482,10 @@ struct Loader {
         s.finds.push_back(std::move(f));
       }
     }
+  }
+
+  /// The claims to verify: forms and values.
+  void read_expects(const Node& r, SceneDef& s) const {
     if (auto* p = r.get("expect")) {
       need_map(*p, "expect", "expect: {omega2: {form: sqrt(3*g/l), value: 3.50 rad/s}}");
       for (auto& [k, v] : p->entries) {
@@ -542,6 +504,69 @@ struct Loader {
         s.expects.push_back(std::move(e));
       }
     }
+  }
+
+  SceneDef load(const YAML::Node& root) const {
+    SceneDef s;
+    s.file = file;
+    Node r = convert(root);
+    if (!r.is_map())
+      throw SceneError({file, 1, 1}, "a scene must be a map of sections",
+                       "start with 'title:' and add parameters, bodies, states, analyses, find");
+    only_keys(r, "the scene", {"title", "description", "parameters", "points", "coordinates", "bodies",
+                               "constraints", "effects", "states", "analyses", "find", "expect"});
+    const Node* t = r.get("title");
+    if (!t) throw SceneError({file, 1, 1}, "the scene has no 'title'", "add 'title: what the problem is'");
+    s.title = text(*t, "title", "title: Rod sliding on two tracks").s;
+    if (auto* d = r.get("description")) s.description = text(*d, "description", "description: …").s;
+
+    if (auto* p = r.get("parameters")) {
+      need_map(*p, "parameters", "parameters: {m: 5 kg, l: 1.2 m}");
+      for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "parameters");
+        check_name(k, "parameter");
+        s.parameters.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": 5 kg")});
+      }
+    }
+    if (auto* p = r.get("points")) {
+      need_map(*p, "points", "points: {O: [0, 0]}");
+      for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "points");
+        check_name(k, "point");
+        auto [x, y] = pair(v, k.scalar, k.scalar + ": [0, 0]");
+        s.points.push_back({k.scalar, k.pos, x, y});
+      }
+    }
+    if (auto* p = r.get("coordinates")) {
+      need_map(*p, "coordinates", "coordinates: {theta: rad, x: m}");
+      for (auto& [k, v] : p->entries) {
+        not_a_section(k, r, "coordinates");
+        check_name(k, "coordinate");
+        s.coordinates.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": rad")});
+      }
+    }
+    read_bodies(r, s);
+    if (auto* p = r.get("constraints")) {
+      if (!p->is_list()) wrong_type(*p, "constraints", "a list", "constraints: [x + r*phi = 0]");
+      for (auto& c : p->items) s.constraints.push_back(text(c, "constraint", "x + r*phi = 0"));
+    }
+    read_effects(r, s);
+    read_states(r, s);
+    if (auto* p = r.get("analyses")) {
+      if (!p->is_list()) wrong_type(*p, "analyses", "a list", "analyses: [{energy: {from: 1, to: 2}}]");
+      for (auto& a : p->items) {
+        if (!a.is_map() || a.entries.size() != 1)
+          throw SceneError(a.pos, "each analysis must be one principle",
+                           "write e.g. '- energy: {from: 1, to: 2}'");
+        AnalysisDef d;
+        d.kind = a.entries[0].first.scalar;
+        d.pos = a.entries[0].first.pos;
+        d.options = a.entries[0].second;
+        s.analyses.push_back(std::move(d));
+      }
+    }
+    read_finds(r, s);
+    read_expects(r, s);
     return s;
   }
 };
