@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 
+#include "kinergy/app/app.hpp"
 #include "kinergy/common/error.hpp"
 #include "kinergy/confirm/confirm.hpp"
 #include "kinergy/common/markup.hpp"
@@ -45,15 +46,7 @@ struct PyScene {
   // a parameter's value as a scene writes it ("2 kg", "30 deg", 9.81)
   void set(const std::string& name, const py::object& value) {
     std::string text = py::isinstance<py::str>(value) ? value.cast<std::string>() : py::str(value).cast<std::string>();
-    std::string names;
-    for (auto& p : def.parameters) {
-      names += (names.empty() ? "" : ", ") + p.name;
-      if (p.name == name) {
-        p.value.s = text;
-        return;
-      }
-    }
-    throw InputError("the scene has no parameter '" + name + "'", "set one of its parameters: " + names);
+    app::set_parameter(def, name, text);
   }
   std::string draw(const py::object& state) const {
     model::Model m = model::Model::build(def);
@@ -116,10 +109,10 @@ struct PySolution {
     return out;
   }
   std::string derive(const std::string& format) const {
-    const emit::Derivation d = emit::derive(*s, def);
+    const emit::Derivation d = emit::derive(*s);
     if (format == "text") return emit::text(d);
     if (format == "latex") return emit::latex(d);
-    if (format == "html") return emit::html(d, {});
+    if (format == "html") return app::derivation_page(*s, d);
     throw InputError("there is no derivation format '" + format + "'", "ask for 'text', 'latex' or 'html'");
   }
   bool verify() const {
@@ -131,16 +124,8 @@ struct PySolution {
   py::dict simulate(double until, int samples, const py::object& start) const {
     namespace sim = simulate;
     const model::Model& m = s->model;
-    int from = 0;
-    if (!start.is_none()) {
-      from = m.state_index(py::str(start).cast<std::string>());
-      if (from < 0) throw InputError("there is no state '" + py::str(start).cast<std::string>() + "'", "name a state of the scene's 'states'");
-    }
-    sim::State s0 = sim::state_values(*s, from);
-    for (std::size_t i = 0; i < m.coords.size(); ++i)
-      if (std::isnan(s0.q[i]) || std::isnan(s0.qd[i]))
-        throw InputError("state '" + m.states[static_cast<std::size_t>(from)].name + "' does not fix " + m.coords[i].name,
-                         "start from another state");
+    const int from = app::state_index(m, start.is_none() ? std::string() : py::str(start).cast<std::string>());
+    sim::State s0 = app::start_values(m, s.get(), from);
     if (!(until > s0.t) || samples < 1) throw InputError("the run must end after it starts, with one sample or more", "give until > the start's time");
     sim::Options o;
     o.native = false;

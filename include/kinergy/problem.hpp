@@ -86,6 +86,8 @@ struct Solution {
   std::vector<Result> results;
   /// Each analysis confirmed a second way, in order (empty: not asked, `--no-confirm`).
   std::vector<Confirmed> confirmed;
+  /// The scene as written (its parameters' texts, points and units: what a derivation quotes).
+  scene::SceneDef scene;
 };
 
 /// Every parameter's number: the given values, and the solved values of unknown parameters (for

@@ -1,4 +1,5 @@
 // Many scenes in one process: JSON Lines of requests in, JSON Lines of results out.
+#include "kinergy/app/app.hpp"
 #include "kinergy/batch/batch.hpp"
 
 #include "kinergy/confirm/confirm.hpp"
@@ -82,17 +83,7 @@ Outcome run_request(const std::string& request, std::size_t number) {
       if (!set.IsMap()) throw BadRequest{"\"set\" is not an object", "write \"set\": {\"m\": \"2 kg\"}"};
       for (const auto& kv : set) {
         const std::string name = kv.first.as<std::string>();
-        bool found = false;
-        for (auto& p : def.parameters)
-          if (p.name == name) {
-            p.value.s = scalar(kv.second, "set." + name);
-            found = true;
-          }
-        if (!found) {
-          std::string names;
-          for (auto& p : def.parameters) names += (names.empty() ? "" : ", ") + p.name;
-          throw BadRequest{"the scene has no parameter \"" + name + "\"", "set one of its parameters: " + names};
-        }
+        app::set_parameter(def, name, scalar(kv.second, "set." + name));
       }
     }
     bool solve = false, verify = false, derive = false, latex = false;
@@ -141,7 +132,7 @@ Outcome run_request(const std::string& request, std::size_t number) {
       out << ", \"verified\": " << (all ? "true" : "false");
     }
     if (derive || latex) {
-      const emit::Derivation d = emit::derive(s, def);
+      const emit::Derivation d = emit::derive(s);
       if (derive) out << ", \"derive\": " << json_quote(emit::text(d));
       if (latex) out << ", \"latex\": " << json_quote(emit::latex(d));
     }

@@ -1,4 +1,5 @@
 // One scene solved over a grid of parameter values: CSV, JSON and a gnuplot plot.
+#include "kinergy/app/app.hpp"
 #include "kinergy/batch/sweep.hpp"
 
 #include <unistd.h>
@@ -55,13 +56,7 @@ Range parse_range(const std::string& text, const scene::SceneDef& def) {
   if (count != std::floor(count) || count < 2 || count > 100000)
     throw InputError("the count of '" + text + "' is not a whole number from 2 to 100000", form);
   r.count = static_cast<int>(count);
-  const scene::ParameterDef* p = nullptr;
-  std::string names;
-  for (auto& q : def.parameters) {
-    names += (names.empty() ? "" : ", ") + q.name;
-    if (q.name == r.name) p = &q;
-  }
-  if (!p) throw InputError("the scene has no parameter '" + r.name + "'", "sweep one of its parameters: " + names);
+  const scene::ParameterDef* p = &app::parameter(def, r.name, "sweep");
   units::Quantity q;
   try {
     q = units::parse_quantity(p->value.s);
@@ -96,8 +91,7 @@ Sweep sweep(const scene::SceneDef& def, const std::vector<Range>& ranges) {
     for (std::size_t i = 0; i < ranges.size(); ++i) {
       std::ostringstream v;
       v << std::setprecision(17) << values[i];
-      for (auto& p : at.parameters)
-        if (p.name == ranges[i].name) p.value.s = v.str() + (ranges[i].unit.empty() ? "" : " " + ranges[i].unit);
+      app::set_parameter(at, ranges[i].name, v.str() + (ranges[i].unit.empty() ? "" : " " + ranges[i].unit));
     }
     row.at = values;
     try {

@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "kinergy/app/app.hpp"
 #include "kinergy/batch/batch.hpp"
 #include "kinergy/batch/sweep.hpp"
 #include "kinergy/common/error.hpp"
@@ -162,20 +163,14 @@ struct DeriveCommand {
       kinergy::emit::DeriveOptions o;
       o.digits = derive_digits;
       o.checks = !no_checks;
-      kinergy::emit::Derivation d = kinergy::emit::derive(s, def, o);
+      kinergy::emit::Derivation d = kinergy::emit::derive(s, o);
       if (tex_out.empty() && pdf_out.empty() && html_out.empty()) {
         std::cout << kinergy::emit::text(d);
         return 0;
       }
       if (!html_out.empty()) {
         // the page, with a player for the motion of each analysis that can be simulated
-        std::vector<std::string> players;
-        const auto values = kinergy::simulate::simulation_values(s);
-        const auto motions = kinergy::simulate::motions(s, 200);
-        for (std::size_t i = 0; i < motions.size(); ++i)
-          players.push_back("<h3>" + motions[i].title + "</h3>\n" +
-                            kinergy::draw::animation_fragment(s.model, values, motions[i], "motion-" + std::to_string(i + 1)));
-        const std::string page = kinergy::emit::html(d, players);
+        const std::string page = kinergy::app::derivation_page(s, d);
         std::ofstream out(html_out, std::ios::binary);
         out << page;
         out.close();
@@ -266,7 +261,7 @@ struct DrawCommand {
         // the derivation's own figures, numbered as in its LaTeX
         if (!sol) throw kinergy::SceneError({scene, 1, 1}, "the scene has no analyses, so its worked solution has no figures", "draw it with --state");
         if (!draw_state.empty()) throw kinergy::InputError("--figure and --state cannot be used together", "leave out one of them");
-        const auto d = kinergy::emit::derive(*sol, kinergy::scene::load_file(scene));
+        const auto d = kinergy::emit::derive(*sol);
         std::vector<const kinergy::emit::Block*> figs;
         for (auto& b : d.blocks)
           if (b.sheet) figs.push_back(&b);
@@ -440,34 +435,6 @@ struct SimulateCommand {
     return std::nullopt;
   }
 
-  /// The state the run starts from (--from, else the first).
-  int start_state(const kinergy::model::Model& m) const {
-    int start = 0;
-    if (!from.empty()) {
-      start = m.state_index(from);
-      if (start < 0) throw kinergy::SceneError({scene, 1, 1}, "there is no state '" + from + "'", "name a state of the scene's 'states'");
-    }
-    return start;
-  }
-
-  /// Its numbers: every coordinate and rate given there, or found by an analysis.
-  kinergy::simulate::State start_values(const kinergy::model::Model& m, const std::optional<kinergy::Solution>& sol, int start) const {
-    namespace sim = kinergy::simulate;
-    if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to start from", "add a state with every coordinate and rate");
-    sim::State s0 = sol ? sim::state_values(*sol, start) : sim::state_values(m, {}, m.parameter_values(), start);
-    const auto& st = m.states[static_cast<std::size_t>(start)];
-    for (std::size_t i = 0; i < m.coords.size(); ++i) {
-      if (!std::isnan(s0.q[i]) && !std::isnan(s0.qd[i])) continue;
-      const std::string what = std::isnan(s0.q[i]) ? m.coords[i].name : m.coords[i].name + "_dot";
-      if (!sol)
-        throw kinergy::SceneError(st.pos, "state '" + st.name + "' does not give " + what + " as a number",
-                                  "give every coordinate and rate at the start state");
-      throw kinergy::SceneError(st.pos, "state '" + st.name + "' does not fix " + what + ", and no analysis finds it",
-                                "give it at that state, or start from another with --from");
-    }
-    return s0;
-  }
-
   int run() {
     return guarded(scene, [&]() -> int {
       namespace sim = kinergy::simulate;
@@ -496,8 +463,8 @@ struct SimulateCommand {
         if (equations) return 0;
         throw kinergy::SceneError({scene, 1, 1}, "simulate needs an end time", "add --until T (seconds)");
       }
-      const int start = start_state(m);
-      sim::State s0 = start_values(m, sol, start);
+      const int start = kinergy::app::state_index(m, from);
+      sim::State s0 = kinergy::app::start_values(m, sol ? &*sol : nullptr, start);
       // a progress bar on stderr for long runs in a terminal
       const bool tty = isatty(2);
       auto t0 = std::chrono::steady_clock::now();

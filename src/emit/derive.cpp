@@ -1000,8 +1000,8 @@ private:
 
 }  // namespace
 
-Derivation derive(const Solution& s, const scene::SceneDef& def, const DeriveOptions& o) {
-  return Builder(s, def, o).run();
+Derivation derive(const Solution& s, const DeriveOptions& o) {
+  return Builder(s, s.scene, o).run();
 }
 
 }  // namespace kinergy::emit

@@ -53,7 +53,7 @@ TEST_CASE("batch: each request's result on its line, parameters set per request,
   // failures: what and how to fix, the batch going on
   CHECK(lines[2] == "{\"line\": 4, \"id\": null, \"ok\": false, \"error\": {\"file\": \"<batch line 4>\", \"line\": 1, \"column\": 0, "
                     "\"message\": \"the request is not a JSON object\", \"fix\": \"write one JSON object a line: {\\\"scene\\\": \\\"FILE.yaml\\\"}\"}}");
-  CHECK(lines[3].find("\"message\": \"the scene has no parameter \\\"zz\\\"\", \"fix\": \"set one of its parameters: m, l, g, theta2\"") !=
+  CHECK(lines[3].find("\"message\": \"the scene has no parameter 'zz'\", \"fix\": \"set one of its parameters: m, l, g, theta2\"") !=
         std::string::npos);
   // a value of the wrong dimension: the scene's own error, where the parameter is used
   CHECK(lines[4].find("\"ok\": false") != std::string::npos);

@@ -112,7 +112,7 @@ TEST_CASE("rendered images: a scene at its states, an impact diagram and an anim
   {
     const std::string file = root + "/derivations/impact/sphere_hits_pivoted_bar.yaml";
     kinergy::Solution s = kinergy::solve_file(file);
-    const auto d = kinergy::emit::derive(s, kinergy::scene::load_file(file));
+    const auto d = kinergy::emit::derive(s);
     const kinergy::draw::Sheet* second = nullptr;
     int k = 0;
     for (auto& b : d.blocks)

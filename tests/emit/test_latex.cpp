@@ -99,7 +99,7 @@ TEST_CASE("the text derivation of the sliding rod", "[emit][derive]") {
   std::string f = std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/sliding_rod.yaml";
   auto def = kinergy::scene::load_file(f);
   kinergy::Solution s = kinergy::solve_scene(def);
-  auto d = kinergy::emit::derive(s, def);
+  auto d = kinergy::emit::derive(s);
   std::string t = kinergy::emit::text(d);
   INFO(t);
   for (const char* part : {"Given", "Kinematics", "States", "Conservation of energy, states 1 \u2192 2",
@@ -124,7 +124,7 @@ TEST_CASE("every derivation compiles with pdflatex, nothing running off the page
     DYNAMIC_SECTION(relative(f)) {
       auto def = kinergy::scene::load_file(f);
       kinergy::Solution s = kinergy::solve_scene(def);
-      auto d = kinergy::emit::derive(s, def);
+      auto d = kinergy::emit::derive(s);
       d.file = relative(f);
       std::string tex = kinergy::emit::latex(d);
       auto r = kinergy::emit::run_pdflatex(tex, "");

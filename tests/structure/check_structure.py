@@ -5,7 +5,7 @@
   - no function in src/ is over 120 lines (from its head to its closing brace);
   - no include cycle among the modules of src/ (a module: a directory under src/ with its headers
     under include/kinergy/ of the same name; src/*.cpp and include/kinergy/*.hpp are the top
-    module, "app").
+    module, "top": the pipeline for one scene, problem.hpp).
 
 What breaks a rule may be listed in KNOWN below with its present figure (while a change that
 mends it is under way): the check fails when anything new breaks a rule, when a listed figure
@@ -127,9 +127,9 @@ def module_of(root, path):
     rel = os.path.relpath(path, root).replace(os.sep, "/")
     parts = rel.split("/")
     if parts[0] == "src":
-        return parts[1] if len(parts) > 2 else "app"
+        return parts[1] if len(parts) > 2 else "top"
     if parts[0] == "include":
-        return parts[2] if len(parts) > 3 else "app"
+        return parts[2] if len(parts) > 3 else "top"
     return None
 
 

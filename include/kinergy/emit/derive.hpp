@@ -84,7 +84,7 @@ struct DeriveOptions {
 
 /// The worked solution of a solved scene. `def` is the scene as written (parameter values and
 /// units as the author wrote them, inertia kinds).
-Derivation derive(const Solution& s, const scene::SceneDef& def, const DeriveOptions& o = {});
+Derivation derive(const Solution& s, const DeriveOptions& o = {});
 
 /// Plain Unicode text for terminals; expressions in the plain printer's form.
 std::string text(const Derivation& d);
