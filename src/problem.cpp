@@ -629,13 +629,15 @@ private:
     const std::string what = x.largest ? "greatest" : "least";
     // the candidates: (p, F(p), how)
     struct Cand {
+      enum class Where { End, Stationary, NotThatKind };  ///< an end of the range; dF/dp = 0 (of the kind asked, or not)
+      Where where;
       numeric p, F;
       std::string how;
       numeric lo, hi;  ///< a stationary point: the bracket dF/dp changes sign in
     };
     std::vector<Cand> cands;
     for (const numeric& e : {*lo, *hi})
-      if (auto v = value_at(F, e)) cands.push_back({e, *v, "end of the range", e, e});
+      if (auto v = value_at(F, e)) cands.push_back({Cand::Where::End, e, *v, "end of the range", e, e});
     const int N = 400;
     std::optional<numeric> prev;
     numeric prev_p = *lo;
@@ -653,7 +655,8 @@ private:
         auto s2 = value_at(d2F, root);
         if (v && s2) {
           bool kind_ok = x.largest ? s2->is_negative() : s2->is_positive();
-          cands.push_back({root, *v, std::string(kind_ok ? "stationary" : "stationary, not a ") + (kind_ok ? "" : x.largest ? "maximum" : "minimum"),
+          cands.push_back({kind_ok ? Cand::Where::Stationary : Cand::Where::NotThatKind, root, *v,
+                           std::string(kind_ok ? "stationary" : "stationary, not a ") + (kind_ok ? "" : x.largest ? "maximum" : "minimum"),
                            d->is_zero() ? pi : prev_p, pi});
           cands.back().how += ": second derivative " + numerics::format(*s2, 6) +
                               (kind_ok ? (x.largest ? " < 0, a maximum" : " > 0, a minimum") : "");
@@ -669,7 +672,7 @@ private:
                        "check the range 'over' and the scene's values");
     const Cand* best = nullptr;
     for (auto& c : cands)
-      if (c.how.rfind("stationary, not", 0) != 0 &&
+      if (c.where != Cand::Where::NotThatKind &&
           (!best || (x.largest ? c.F > best->F : c.F < best->F)))
         best = &c;
     if (!best) best = &cands.front();
@@ -677,13 +680,13 @@ private:
     note << "stationary where d/d" << x.p_name << " = 0";
     bool any = false;
     for (auto& c : cands)
-      if (c.how.rfind("stationary", 0) == 0) {
+      if (c.where != Cand::Where::End) {
         note << (any ? "; " : " at ") << x.p_name << " = " << numerics::format(c.p, 8) << " (" << c.how.substr(c.how.find(": ") + 2) << ")";
         any = true;
       }
     if (!any) note << " nowhere inside the range";
     note << "; the " << what << " value " << numerics::format(best->F, 8) << " at " << x.p_name << " = " << numerics::format(best->p, 8)
-         << (best->how == "end of the range" ? ", an end of the range" : "");
+         << (best->where == Cand::Where::End ? ", an end of the range" : "");
     r.extreme_note = note.str();
     r.extreme_of = F;
     r.closed = x.location ? ex(best->p) : ex(best->F);
@@ -691,9 +694,9 @@ private:
     // the place in closed form: an end of the range, or the stationary condition solved for p
     // (the root that is the number found); the value there follows
     std::optional<ex> place;
-    if (best->how == "end of the range") place = best->p == *lo ? x.lo : x.hi;
+    if (best->where == Cand::Where::End) place = best->p == *lo ? x.lo : x.hi;
     else place = stationary_place(dF, p, best->p);
-    if (!place && best->how != "end of the range" && !has_float(F)) {
+    if (!place && best->where != Cand::Where::End && !has_float(F)) {
       // no closed form for the stationary point p*: its digits are proven as a root of dF/dp = 0
       // in its bracket, and the value there as F on p*'s enclosure
       r.of_roots = x.location ? ex(p) : F;
@@ -943,7 +946,7 @@ private:
   /// A motion runs forward in time: a solved duration t₂ − t₁ < 0 would put the second state
   /// before the first (a motor weaker than the friction it must overcome, say).
   void forward_in_time(const model::Analysis& a) const {
-    if (a.instant) return;
+    if (a.instant()) return;
     const auto &S1 = m.states[a.from], &S2 = m.states[a.to];
     if (given.count(S1.t) && given.count(S2.t)) return;  // both given: checked when the model was built
     std::optional<numeric> d;

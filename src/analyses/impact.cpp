@@ -17,12 +17,13 @@ public:
 
   std::vector<std::string> keys() const override { return {"contact", "contacts"}; }
 
+  bool instant() const override { return true; }  // no time passes: positions and t are kept
+
   void read(model::EffectReader& r, const scene::AnalysisDef& ad, model::Analysis& a) const override {
     const model::Model& m = r.model();
     const Dimension M = Dimension::mass(), L = Dimension::length(), T = Dimension::time();
     const Dimension P = M * L / T;  // impulse
     const std::string S1 = m.states[a.from].name, S2 = m.states[a.to].name;
-    a.instant = true;
     std::vector<const scene::Node*> names;
     const scene::Node* c1 = ad.options.get("contact");
     const scene::Node* cs = ad.options.get("contacts");

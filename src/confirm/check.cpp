@@ -142,7 +142,7 @@ std::vector<Leg> legs(const Solution& s) {
     leg.to = a.to;
     leg.start = state_values(m, k, a.from);
     leg.expect = state_values(m, k, a.to);
-    leg.stop.impulses = a.instant;
+    leg.stop.impulses = a.instant();
     // a state given by a parameter without a value (the variable of an extreme, the speed whose
     // least value is asked) is no one motion
     for (int st : {a.from, a.to})
@@ -166,7 +166,7 @@ std::vector<Leg> legs(const Solution& s) {
     const model::State& S1 = m.states[a.from];
     const model::State& S2 = m.states[a.to];
     const double t1 = value(k, S1.t);
-    if (a.instant) {
+    if (a.instant()) {
       // an impact: everything happens at the start
       leg.stop.until = leg.start.t;
       leg.target = "the impact at the start";
@@ -392,7 +392,7 @@ draw::Motion motion_of(const Run& r, const std::string& title) {
 
 bool impulses_at(const model::Model& m, int start) {
   bool at = m.analyses.empty();
-  for (auto& a : m.analyses) at = at || (a.instant && a.from == start);
+  for (auto& a : m.analyses) at = at || (a.instant() && a.from == start);
   return at;
 }
 
@@ -402,7 +402,7 @@ std::vector<draw::Motion> motions(const Solution& s, int samples) {
   for (Leg leg : legs(s)) {
     if (!leg.why_not.empty()) continue;
     const model::Analysis& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
-    if (a.instant) {
+    if (a.instant()) {
       // an impact has no duration: its motion shown is what follows it, for as long as the
       // fastest body takes to cover the scene's size (L/v: its bodies' sizes and the distances
       // between their centres; their speeds just after, v̄ and ω times the size), at most 5 s
@@ -443,7 +443,7 @@ std::vector<draw::Motion> motions(const Solution& s, int samples) {
     const LegCheck c = check_leg(s, leg, o, 1);
     draw::Motion mo = motion_of(c.run, "Analysis " + std::to_string(leg.analysis + 1) + " (" + a.kind + "), from state " +
                                            m.states[static_cast<std::size_t>(leg.from)].name +
-                                           (a.instant ? " through the impact until " + leg.target
+                                           (a.instant() ? " through the impact until " + leg.target
                                                       : " until state " + m.states[static_cast<std::size_t>(leg.to)].name + " (" + leg.target + ")") +
                                            ", simulated");
     if (!mo.frames.empty()) out.push_back(std::move(mo));

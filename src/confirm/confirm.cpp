@@ -120,7 +120,7 @@ void confirm(Solution& s) {
         // a disagreement is an error that shows both numbers, never an answer; where the run met
         // an impact the analysis does not have, say so (an energy analysis across a bounce)
         std::string struck;
-        if (!a.instant)
+        if (!a.instant())
           for (auto& im : run->run.impacts)
             for (auto& name : im.contacts)
               if (struck.find("'" + name + "'") == std::string::npos) struck += (struck.empty() ? "" : ", ") + ("'" + name + "'");

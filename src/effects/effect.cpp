@@ -17,7 +17,7 @@ Effect::Activity Effect::activity(const Analysis& a) const {
   if (on < 0 && off < 0) return Activity::Whole;
   int lo = std::min(a.from, a.to), hi = std::max(a.from, a.to);
   int start = on < 0 ? std::numeric_limits<int>::min() : on, end = off < 0 ? std::numeric_limits<int>::max() : off;
-  if (hi <= start || lo >= end) return a.instant && lo == start ? Activity::Whole : Activity::None;
+  if (hi <= start || lo >= end) return a.instant() && lo == start ? Activity::Whole : Activity::None;
   if (start <= lo && hi <= end) return Activity::Whole;
   return Activity::Part;
 }
@@ -118,7 +118,7 @@ std::pair<ex, ex> Effect::impact_impulse_on(const Model& m, int body, int ai) co
 ex Effect::impact_loss(const Model& m, int ai) const {
   const Analysis& an = m.analyses[static_cast<std::size_t>(ai)];
   auto r = reaction(m);
-  if (!r || r->kind != Reaction::Kind::Contact || !an.instant)
+  if (!r || r->kind != Reaction::Kind::Contact || !an.instant())
     throw InputError("'loss' takes a contact and the two states of its impact", "write loss(hit, before, after)");
   auto it = an.contact_impulses.find(name);
   if (it == an.contact_impulses.end())

@@ -560,7 +560,7 @@ private:
       Spans unknowns;
       for (auto& imp : c.impulses) {
         ex v = sub(imp.value);
-        bool reaction = imp.how.find("unknown") != std::string::npos;
+        bool reaction = imp.kind == principles::ImpulseTerm::Kind::Reaction;
         std::string F = angular ? "M" : "F";
         std::string sub_ = angular ? "_{" + about_tex(a.about.text) + "}" : "_{" + std::string(c.name == "x" || c.name == "y" ? c.name : "n") + "}";
         if (reaction) {
@@ -568,7 +568,7 @@ private:
           unknowns.push_back(M(v));
           continue;
         }
-        if (imp.how == "given impulse" || imp.how == "moment of the given impulse") {
+        if (imp.kind == principles::ImpulseTerm::Kind::Given) {
           r.push_back(tags.row({Math::notation("J" + sub_ + "^{" + tex_word(imp.effect) + "}", "J(" + imp.effect + ")"), Math::of(v)}));
           continue;
         }

@@ -180,7 +180,7 @@ std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Anal
   draw::Sheet sheet;
   sheet.add(d.momenta(d.at1), "momenta at " + S1);
   sheet.then("+", "+");
-  sheet.add(d.impulses(shown), a.instant ? "impulses in the impact" : "impulses from " + S1 + " to " + S2);
+  sheet.add(d.impulses(shown), a.instant() ? "impulses in the impact" : "impulses from " + S1 + " to " + S2);
   sheet.then("=", "=");
   sheet.add(d.momenta(d.at2), "momenta at " + S2);
   return sheet;

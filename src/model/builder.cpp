@@ -650,7 +650,7 @@ private:
         a.conserved = c->scalar == "true";
       }
       a.type->read(*this, ad, a);
-      if (!a.instant) time_order(a);
+      if (!a.instant()) time_order(a);
       if (a.type->takes_reactions()) {
         // supports between the body set and the rest (pins, constraints) carry unknown reactions
         for (auto& e : m_.effects) {

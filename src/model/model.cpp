@@ -275,6 +275,8 @@ int Model::body_index(const std::string& n) const {
   return -1;
 }
 
+bool Analysis::instant() const { return type && type->instant(); }
+
 Model::Contact Model::contact(int i) const {
   const Effect& e = effects[static_cast<std::size_t>(i)];
   auto r = e.reaction(*this);
@@ -299,7 +301,7 @@ bool Model::constraint_at(std::size_t k, int s, bool rate) const {
   if ((e->on >= 0 && s < e->on) || (e->off >= 0 && s > e->off)) return false;
   if (rate && s == e->on)
     for (auto& a : analyses)
-      if (a.instant && a.from == s) return false;  // it engages in that impact: its rates hold after it
+      if (a.instant() && a.from == s) return false;  // it engages in that impact: its rates hold after it
   return true;
 }
 

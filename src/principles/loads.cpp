@@ -99,7 +99,7 @@ void load_pushes(const Model& m, const Effect& e, const Analysis& a, const Knowl
 
 std::pair<ex, ex> load_impulse(const Model& m, const Effect& e, int ai) {
   const Analysis& a = m.analyses[static_cast<std::size_t>(ai)];
-  if (a.instant)
+  if (a.instant())
     throw InputError("effect '" + e.name + "' (" + e.kind + ") has no impulse to report between states " + m.states[a.from].name +
                          " and " + m.states[a.to].name,
                      "ask for the impulse of a contact, a pin, a given impulse, or a force over a momentum analysis");
@@ -325,20 +325,20 @@ std::pair<ex, ex> reaction_impulse(const Model& m, const Effect& e, const model:
       return {J * r.dir_x - Jt * r.dir_y, J * r.dir_y + Jt * r.dir_x};
     }
     case model::Reaction::Kind::Pin:
-      if (an.instant) return pin_impact_impulse(m, e, r, self, ai);
+      if (an.instant()) return pin_impact_impulse(m, e, r, self, ai);
       if (it == an.reactions.end())
         throw InputError("pin '" + e.name + "' is not external to the bodies of the analysis between states " + m.states[an.from].name +
                              " and " + m.states[an.to].name,
                          "list in 'bodies' the body the pin holds, and not the body on its other side");
       return {it->second[0], it->second[1]};
     case model::Reaction::Kind::Track:
-      if (an.instant || it == an.reactions.end()) no_impulse(m, e, an);
+      if (an.instant() || it == an.reactions.end()) no_impulse(m, e, an);
       if (!motion_free(m, model::trig_simplify(r.dir_x)) || !motion_free(m, model::trig_simplify(r.dir_y)))
         throw InputError("the normal of track '" + e.name + "' turns with the motion, so its impulse has no fixed components",
                          "ask for the impulse of a straight track, or for its moment");
       return {it->second[0] * r.dir_x, it->second[0] * r.dir_y};
     case model::Reaction::Kind::Relation:
-      if (an.instant) {
+      if (an.instant()) {
         // the impulsive reaction Λ of the relation: Λ f on party a
         const ex& lam = an.lambdas.at(r.constraint);
         return {lam * m.bind(r.fx, an.from), lam * m.bind(r.fy, an.from)};

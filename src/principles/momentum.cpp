@@ -182,6 +182,11 @@ std::vector<Push> pushes(const Model& m, const Effect& e, const Analysis& a, con
 }
 
 ex dot(const ex& ax, const ex& ay, const ex& bx, const ex& by) { return ax * bx + ay * by; }
+
+/// What an impulse term is, from the push it comes from: ∫F dt, an unknown reaction, a given impulse.
+ImpulseTerm::Kind kind_of(const Push& p) {
+  return !p.unknown ? ImpulseTerm::Kind::Integral : p.reaction ? ImpulseTerm::Kind::Reaction : ImpulseTerm::Kind::Given;
+}
 ex cross(const ex& ax, const ex& ay, const ex& bx, const ex& by) { return ax * by - ay * bx; }
 
 /// Which bodies are in the set, for messages.
@@ -311,7 +316,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
           throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
                                       state_pair(m, a) + ": effect '" + e.name + "' has an impulse " + model::text(In),
                            "remove 'conserved: true' so its impulse is included, or choose another direction");
-        c.impulses.push_back({e.name, In, how});
+        c.impulses.push_back({e.name, In, how, kind_of(p)});
         I += In;
       }
     }
@@ -363,7 +368,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         if (vanishes(m, ax) && vanishes(m, ay)) continue;
         ex Mr = model::trig_simplify(cross(ax, ay, p.Rx, p.Ry));
         if (vanishes(m, Mr)) continue;
-        if (p.reaction && !motion_free(m, Mr) && !a.instant)
+        if (p.reaction && !motion_free(m, Mr) && !a.instant())
           throw SceneError(e.pos, "the reaction of '" + e.name + "' has a moment about " + a.about.text +
                                       " that changes with the motion, so its angular impulse is unknown in a way no equation fixes",
                            "take moments about the pin itself, or about a fixed point");
@@ -389,7 +394,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about.text + " is not conserved between " +
                                     state_pair(m, a) + ": effect '" + e.name + "' has a moment about " + a.about.text,
                          "remove 'conserved: true' so its angular impulse is included, or take moments about another point");
-      c.impulses.push_back({e.name, In, how});
+      c.impulses.push_back({e.name, In, how, kind_of(p)});
       I += In;
     }
   }

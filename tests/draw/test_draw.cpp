@@ -222,7 +222,7 @@ TEST_CASE("the impact diagram of a sphere striking a pivoted bar: each arrow poi
   const auto& m = s.model;
   const kinergy::model::Analysis* impact = nullptr;
   for (auto& a : m.analyses)
-    if (a.instant) impact = &a;
+    if (a.instant()) impact = &a;
   REQUIRE(impact);
   REQUIRE(s.impacts.size() == 1);
   const int bar = m.body_index("bar"), sphere = m.body_index("sphere");

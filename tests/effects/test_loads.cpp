@@ -199,7 +199,7 @@ TEST_CASE("the work between two states is ∫P dt along a simulated leg, the imp
     inputs.push_back(m.t);
     for (auto& leg : sim::legs(s)) {
       const auto& an = m.analyses[static_cast<std::size_t>(leg.analysis)];
-      if (!leg.why_not.empty() || an.instant) continue;
+      if (!leg.why_not.empty() || an.instant()) continue;
       INFO(fs::path(f).filename().string() << ": " << an.kind << " " << m.states[leg.from].name << " -> " << m.states[leg.to].name);
       sim::Options o;
       o.tol = 1e-11;

@@ -37,6 +37,8 @@ public:
   /// Does it balance impulses (so `impulse(effect, S1, S2)` refers to it, and a motion may
   /// reverse between its states)? Work–energy does not.
   virtual bool impulsive() const { return true; }
+  /// Does it take no time (an impact: positions and t do not change, impulses are impulsive)?
+  virtual bool instant() const { return false; }
   /// Add its equations to the solution; returns the index of its balance among those of its kind.
   virtual int equations(const Model& m, const Analysis& a, const principles::Knowledge& k, Solution& s) const = 0;
   /// Check the chosen solution (`given`: the states' given values; `env`: the parameters').

@@ -64,7 +64,8 @@ struct Analysis {
   std::string along_name;
   PointRef about;                 ///< angular_momentum: the moment point
   bool conserved = false;         ///< claimed conserved: checked against the effects
-  bool instant = false;           ///< an impact: positions do not change
+  /// An impact: no time passes, positions do not change (its kind says so: type->instant()).
+  bool instant() const;
   std::vector<int> contacts;      ///< impact: contact effects
   /// Unknown impulses this analysis brings: pin reactions (Rx, Ry) and constraint reactions (J)
   /// by effect name (momentum),

@@ -72,9 +72,11 @@ Work reaction_work_across(const model::Model& m, const model::Effect& e, const m
 
 /// One external impulse in a component equation.
 struct ImpulseTerm {
+  enum class Kind { Integral, Reaction, Given };  ///< ∫F dt (or ∫M dt); an unknown reaction; a given impulse
   std::string effect;
   ex value;
   std::string how;  ///< "∫F dt", "unknown pin reaction", …
+  Kind kind = Kind::Integral;
 };
 
 /// The equations of one momentum analysis, component by component.
