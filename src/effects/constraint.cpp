@@ -47,16 +47,7 @@ public:
 
   // J û on party a, −J û on party b: the force of the relation's multiplier, λ f
   std::optional<model::Reaction> reaction(const Model&) const override {
-    model::Reaction r;
-    r.kind = model::Reaction::Kind::Relation;
-    r.a = a;
-    r.b = b;
-    r.dir_x = ux;
-    r.dir_y = uy;
-    r.fx = fx;
-    r.fy = fy;
-    r.constraint = index;
-    return r;
+    return model::Reaction::relation(a, b, ux, uy, fx, fy, index);
   }
 };
 

@@ -22,17 +22,7 @@ public:
   void draw(const Model& m, const draw::At& at, draw::Figure& f) const override;
 };
 
-std::optional<model::Reaction> Contact::reaction(const Model&) const {
-  model::Reaction r;
-  r.kind = model::Reaction::Kind::Contact;
-  r.a = a;
-  r.b = b;
-  r.dir_x = nx;
-  r.dir_y = ny;
-  r.e = e;
-  r.stick = stick;
-  return r;
-}
+std::optional<model::Reaction> Contact::reaction(const Model&) const { return model::Reaction::contact(a, b, nx, ny, e, stick); }
 
 // the contact: its surface (a line across n̂ through the first party's point) and n̂ as a short
 // arrow from there into the second party

@@ -13,13 +13,7 @@ public:
   PointRef a, b;
 
   // R on A, −R on B: the coordinates keep them together
-  std::optional<model::Reaction> reaction(const Model&) const override {
-    model::Reaction r;
-    r.kind = model::Reaction::Kind::Pin;
-    r.a = a;
-    r.b = b;
-    return r;
-  }
+  std::optional<model::Reaction> reaction(const Model&) const override { return model::Reaction::pin(a, b); }
 
   // a joint: a ring at the pinned point, on hatched ground when one side is a fixed point
   void draw(const Model& m, const At& at, Figure& f) const override {

@@ -31,11 +31,8 @@ public:
 
   // N n̂ on the point: the coordinates keep it on the track
   std::optional<model::Reaction> reaction(const Model& m) const override {
-    model::Reaction r;
-    r.kind = model::Reaction::Kind::Track;
-    r.a = p;
-    std::tie(r.dir_x, r.dir_y) = normal(m);
-    return r;
+    auto [nx, ny] = normal(m);
+    return model::Reaction::track(p, nx, ny);
   }
 
   /// The unit normal n̂ at the point (generic): the line's normal k × t̂, or the circle's radius.

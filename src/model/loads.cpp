@@ -121,6 +121,44 @@ bool Reaction::across(const std::vector<int>& set) const {
   return false;
 }
 
+Reaction Reaction::pin(PointRef a, PointRef b) {
+  Reaction r;
+  r.kind = Kind::Pin;
+  r.a = std::move(a);
+  r.b = std::move(b);
+  return r;
+}
+
+Reaction Reaction::track(PointRef a, ex nx, ex ny) {
+  Reaction r;
+  r.kind = Kind::Track;
+  r.a = std::move(a);
+  r.dir_x = std::move(nx);
+  r.dir_y = std::move(ny);
+  return r;
+}
+
+Reaction Reaction::relation(PointRef a, PointRef b, ex ux, ex uy, ex fx, ex fy, std::size_t constraint) {
+  Reaction r = pin(std::move(a), std::move(b));
+  r.kind = Kind::Relation;
+  r.dir_x = std::move(ux);
+  r.dir_y = std::move(uy);
+  r.fx = std::move(fx);
+  r.fy = std::move(fy);
+  r.constraint = constraint;
+  return r;
+}
+
+Reaction Reaction::contact(PointRef a, PointRef b, ex nx, ex ny, ex e, bool stick) {
+  Reaction r = pin(std::move(a), std::move(b));
+  r.kind = Kind::Contact;
+  r.dir_x = std::move(nx);
+  r.dir_y = std::move(ny);
+  r.e = std::move(e);
+  r.stick = stick;
+  return r;
+}
+
 std::vector<int> Reaction::bodies() const {
   std::vector<int> out;
   for (const PointRef* p : {&a, &b})

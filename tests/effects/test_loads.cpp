@@ -167,6 +167,15 @@ TEST_CASE("every effect's power is Σ Q q̇, its potential's force is its loads'
 
 namespace {
 
+/// What a compiled integrand takes: q, q̇, t.
+std::vector<ex> inputs_of(const Model& m) {
+  std::vector<ex> inputs;
+  for (auto& c : m.coords) inputs.push_back(c.q);
+  for (auto& c : m.coords) inputs.push_back(c.qd);
+  inputs.push_back(m.t);
+  return inputs;
+}
+
 /// ∫ f dt over a run's samples (the trapezoid rule), f compiled over (q, q̇, t).
 double along(const sim::Run& r, const kinergy::numerics::Tape& f, std::size_t n) {
   double total = 0, last = 0, t0 = 0;
@@ -193,10 +202,7 @@ TEST_CASE("the work between two states is ∫P dt along a simulated leg, the imp
     const Model& m = s.model;
     const GiNaC::exmap values = sim::simulation_values(s);
     const std::size_t n = m.coords.size();
-    std::vector<ex> inputs;
-    for (auto& c : m.coords) inputs.push_back(c.q);
-    for (auto& c : m.coords) inputs.push_back(c.qd);
-    inputs.push_back(m.t);
+    const std::vector<ex> inputs = inputs_of(m);
     for (auto& leg : sim::legs(s)) {
       const auto& an = m.analyses[static_cast<std::size_t>(leg.analysis)];
       if (!leg.why_not.empty() || an.instant()) continue;
@@ -298,10 +304,7 @@ TEST_CASE("the work between two states is ∫P dt along a simulated leg, the imp
     const Model& m = s.model;
     const GiNaC::exmap values = sim::simulation_values(s);
     const std::size_t n = m.coords.size();
-    std::vector<ex> inputs;
-    for (auto& c : m.coords) inputs.push_back(c.q);
-    for (auto& c : m.coords) inputs.push_back(c.qd);
-    inputs.push_back(m.t);
+    const std::vector<ex> inputs = inputs_of(m);
     sim::Options o;
     o.tol = 1e-11;
     o.native = false;

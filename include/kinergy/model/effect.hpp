@@ -101,6 +101,11 @@ struct Reaction {
   bool across(const std::vector<int>& set) const;
   /// The bodies it joins (a fixed party is not a body).
   std::vector<int> bodies() const;
+
+  static Reaction pin(PointRef a, PointRef b);
+  static Reaction track(PointRef a, ex nx, ex ny);
+  static Reaction relation(PointRef a, PointRef b, ex ux, ex uy, ex fx, ex fy, std::size_t constraint);
+  static Reaction contact(PointRef a, PointRef b, ex nx, ex ny, ex e, bool stick);
 };
 
 /// The kinematics a load's force and couple work along (src/model/loads.cpp):
