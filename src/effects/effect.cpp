@@ -9,7 +9,6 @@
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/principles/momentum.hpp"
 #include "kinergy/principles/principles.hpp"
-#include "kinergy/simulate/equations.hpp"
 
 namespace kinergy::model {
 
@@ -71,19 +70,6 @@ principles::Work Effect::work_across(const Model& m, const Analysis& a, const pr
   return principles::reaction_work_across(m, *this, r ? &*r : nullptr, a);
 }
 
-void Effect::pushes(const Model& m, const Analysis& a, const principles::Knowledge& k, std::vector<principles::Push>& out) const {
-  principles::load_pushes(m, *this, a, k, out);
-  if (auto r = reaction(m)) principles::reaction_pushes(m, *this, *r, a, out);
-  if (const Blow* j = blow(); j && j->at.body >= 0 && principles::in_set(a.bodies, j->at.body)) {
-    principles::Push p;  // the impulse itself (no time integral)
-    p.Rx = j->Jx;
-    p.Ry = j->Jy;
-    p.unknown = true;
-    std::tie(p.arm_x, p.arm_y) = m.position(j->at);
-    out.push_back(p);
-  }
-}
-
 std::pair<ex, ex> Effect::impulse(const Model& m, int self, int ai) const {
   if (auto r = reaction(m)) return principles::reaction_impulse(m, *this, *r, self, ai);
   if (const Blow* j = blow()) {
@@ -136,7 +122,5 @@ ex Effect::impact_loss(const Model& m, int ai) const {
   //   lost = −½ [(1 − e) J v_n⁻ + Jt v_t⁻]
   return -((1 - r->e) * J * vn + (r->stick ? ex(Jt * vt) : ex(0))) / 2;
 }
-
-void Effect::motion(const Model& m, int self, simulate::Equations& eq) const { simulate::load_terms(m, *this, self, eq); }
 
 }  // namespace kinergy::model

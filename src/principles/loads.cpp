@@ -200,6 +200,21 @@ Work load_work(const Model& m, const Effect& e, int s1, int s2, const Knowledge&
                       : generalized_force_work(m, e, "force", "U = integral of F . dr", s1, s2, &k);
 }
 
+// The pushes of an effect on a body set over a duration: its loads', its reaction's, a given
+// impulse's (at its point, no time integral).
+void effect_pushes(const Model& m, const Effect& e, const Analysis& a, const Knowledge& k, std::vector<Push>& out) {
+  load_pushes(m, e, a, k, out);
+  if (auto r = e.reaction(m)) reaction_pushes(m, e, *r, a, out);
+  if (const model::Blow* j = e.blow(); j && j->at.body >= 0 && in_set(a.bodies, j->at.body)) {
+    Push p;  // the impulse itself (no time integral)
+    p.Rx = j->Jx;
+    p.Ry = j->Jy;
+    p.unknown = true;
+    std::tie(p.arm_x, p.arm_y) = m.position(j->at);
+    out.push_back(p);
+  }
+}
+
 // ---------------------------------------------------------------- reactions
 
 namespace {

@@ -139,7 +139,7 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field)
 /// move freely along n for every other support to do no work.)
 std::vector<Push> implied_reactions(const Model& m, const Analysis& a, const Knowledge& k) {
   std::vector<Push> out, all;
-  for (auto& e : m.effects) e.pushes(m, a, k, all);
+  for (auto& e : m.effects) effect_pushes(m, e, a, k, all);
   for (auto& p : all)
     if (p.implied) out.push_back(p);
   return out;
@@ -177,7 +177,7 @@ std::vector<Push> pushes(const Model& m, const Effect& e, const Analysis& a, con
     case Effect::Activity::Whole:
       break;
   }
-  e.pushes(m, a, k, out);
+  effect_pushes(m, e, a, k, out);
   return out;
 }
 

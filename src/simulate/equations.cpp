@@ -127,7 +127,7 @@ Equations equations_of_motion(const model::Model& m, const std::vector<bool>& on
 
   // each effect adds its own terms (a force's Q, a friction's slip, a contact's gap, a blow)
   for (std::size_t k = 0; k < m.effects.size(); ++k)
-    if (on.empty() || on[k]) m.effects[k].motion(m, static_cast<int>(k), eq);
+    if (on.empty() || on[k]) load_terms(m, m.effects[k], static_cast<int>(k), eq);
 
   // holonomic constraints g(q, t) = 0:  A q̈ = γ,  γ = −d/dt(A q̇ + ∂g/∂t) at q̈ = 0
   // (a constraint effect that does not act, a cord gone slack, gives no row)

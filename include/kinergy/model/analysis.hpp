@@ -40,7 +40,7 @@ public:
   /// Does it take no time (an impact: positions and t do not change, impulses are impulsive)?
   virtual bool instant() const { return false; }
   /// Add its equations to the solution; returns the index of its balance among those of its kind.
-  virtual int equations(const Model& m, const Analysis& a, const principles::Knowledge& k, Solution& s) const = 0;
+  virtual int equations(const Model& m, const Analysis& a, const Knowledge& k, Solution& s) const = 0;
   /// Check the chosen solution (`given`: the states' given values; `env`: the parameters').
   /// @throws SceneError when it is physically impossible for this analysis.
   virtual void check(const Model&, const Analysis&, const GiNaC::exmap& /*given*/, const solve::Branch&,

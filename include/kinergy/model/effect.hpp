@@ -19,14 +19,6 @@
 #include "kinergy/scene/scene.hpp"
 #include "kinergy/units/units.hpp"
 
-namespace kinergy::principles {
-class Knowledge;
-struct Work;
-struct Push;
-}  // namespace kinergy::principles
-namespace kinergy::simulate {
-struct Equations;
-}
 namespace kinergy::draw {
 class Figure;
 struct At;
@@ -37,6 +29,8 @@ namespace kinergy::model {
 using GiNaC::ex;
 class Model;
 struct Analysis;
+class Knowledge;
+struct Work;
 
 /// A place that moves with the model: a body point, a body's mass centre, a fixed point, or
 /// the material point of a body that is at a given world place (`at`).
@@ -199,12 +193,13 @@ public:
   virtual const Blow* blow() const { return nullptr; }
 
   // --- what a kind may answer itself, when the general rule does not fit (said in its file) ---
-  /// The work between two states (state symbols): from its loads by default (principles::load_work).
-  virtual principles::Work work(const Model& m, int s1, int s2, const principles::Knowledge& k) const;
+  /// The work between two states (state symbols, `model/work.hpp`): from its loads by default
+  /// (principles::load_work).
+  virtual Work work(const Model& m, int s1, int s2, const Knowledge& k) const;
   /// Its work on the bodies of energy analysis `a` when it acts on some of them and on bodies
   /// outside too (a weight: the set's own; a reaction: its unknown average force times the
   /// distance its point moves along it). @throws SceneError when that work is not known.
-  virtual principles::Work work_across(const Model& m, const Analysis& a, const principles::Knowledge& k) const;
+  virtual Work work_across(const Model& m, const Analysis& a, const Knowledge& k) const;
 
   // --- derived, the same for every kind (src/effects/effect.cpp) -----------------------------
   bool conservative() const { return has_potential; }
@@ -214,9 +209,6 @@ public:
   ex power(const Model& m) const;
   /// The bodies it acts on (a fixed party is not a body; gravity: every body).
   std::vector<int> bodies_acted(const Model& m) const;
-  /// The forces (or unknown reactions, given impulses) this effect exerts on the bodies of a
-  /// momentum analysis over its duration. @throws SceneError when they cannot be integrated.
-  void pushes(const Model& m, const Analysis& a, const principles::Knowledge& k, std::vector<principles::Push>& out) const;
   /// Impulse (x, y) over analysis `ai` (`impulse_x`, `impulse_y`); `self` is this effect's index.
   /// @throws InputError when it has none there.
   std::pair<ex, ex> impulse(const Model& m, int self, int ai) const;
@@ -227,8 +219,6 @@ public:
   std::pair<ex, ex> impact_impulse_on(const Model& m, int b, int ai) const;
   /// Energy lost at this effect in impact `ai` (a contact). @throws InputError otherwise.
   ex impact_loss(const Model& m, int ai) const;
-  /// Add this effect's terms to the equations of motion (`self`: its index).
-  void motion(const Model& m, int self, simulate::Equations& eq) const;
 
   // --- pictures ---
   /// Draw itself into a figure of the scene at a state (`at` gives numbers of expressions

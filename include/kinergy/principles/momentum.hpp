@@ -47,6 +47,11 @@ int motion_direction(const model::Model& m, const model::Effect& e, std::optiona
 /// the first state. @throws SceneError for an interaction whose load changes with the motion.
 void load_pushes(const model::Model& m, const model::Effect& e, const model::Analysis& a, const Knowledge& k,
                  std::vector<Push>& out);
+/// Everything an effect exerts on the bodies of a momentum analysis over its duration: its loads'
+/// pushes, its reaction's unknown impulse across the set, a given impulse. @throws SceneError
+/// when they cannot be integrated.
+void effect_pushes(const model::Model& m, const model::Effect& e, const model::Analysis& a, const Knowledge& k,
+                   std::vector<Push>& out);
 /// ∫F dt over analysis `ai` of the effect's forces on its bodies (those on the analysis' set,
 /// where it has some). @throws InputError in an impact, or when a force changes with the motion.
 std::pair<ex, ex> load_impulse(const model::Model& m, const model::Effect& e, int ai);

@@ -8,6 +8,7 @@
 #include <ginac/ginac.h>
 
 #include "kinergy/model/model.hpp"
+#include "kinergy/model/work.hpp"
 
 namespace kinergy::principles {
 
@@ -22,45 +23,9 @@ struct Equation {
   ex residual() const { return lhs - rhs; }
 };
 
-/// What an equation took for granted about the solution: `e` (state-bound) ≥ 0 there, or the
-/// branch is no solution (a force that switches, taken as switched at a state whose position is
-/// unknown).
-struct Condition {
-  ex e;
-  std::string what, fix;  ///< the error when it fails ("{}" in `what` is e's value)
-  SourcePos pos;
-};
-
-/// The work of one non-conservative effect between two states, in state symbols.
-struct Work {
-  std::string effect;
-  ex U;
-  std::string how;  ///< "U = M (φ₂ − φ₁)", …
-  std::vector<Condition> holds;
-  int switch_cases = 1;  ///< how many ways a switching force's unknown end may lie (see Knowledge)
-  /// U is right at the two states' positions only, not as a function of the end along the way (a
-  /// force split where it switches, a one-sided spring): no kinetic energy along the path from it
-  bool ends_only = false;
-};
-
-/// What is known numerically at each state before solving: given values and what the
-/// constraints give from them (for directions of motion). Parameters at their values.
-class Knowledge {
-public:
-  explicit Knowledge(const model::Model& m);
-  /// Numeric value of a state-bound expression, if everything in it is known.
-  std::optional<GiNaC::numeric> value(const ex& e) const;
-  const GiNaC::exmap& values() const { return known_; }
-  /// Record a value found by an earlier analysis.
-  void set(const ex& sym, const GiNaC::numeric& v) { known_[sym] = v; }
-  /// A force that switches (abs, max, min) on the way to a state whose position is unknown is
-  /// taken past every switching point on that side but this many of the farthest (the scene
-  /// is solved again with one more while the taken case has no solution).
-  int fewer_switches = 0;
-private:
-  GiNaC::exmap known_;
-  GiNaC::exmap env_;  ///< parameter values
-};
+using model::Condition;
+using model::Knowledge;
+using model::Work;
 
 /// Energy terms of one side.
 struct EnergyTerms {
