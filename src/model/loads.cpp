@@ -27,10 +27,9 @@ std::pair<ex, ex> relative_velocity(const Model& m, const Load& l) {
   return {vx - ux, vy - uy};
 }
 
-ex relative_omega(const Model& m, const Load& l) {
-  // ω_rel = dφ_at/dt − dφ_partner/dt
-  return m.rate(angle_of(m, l.at) - (l.partner ? angle_of(m, *l.partner) : ex(0)));
-}
+ex relative_angle(const Model& m, const Load& l) { return angle_of(m, l.at) - (l.partner ? angle_of(m, *l.partner) : ex(0)); }
+
+ex relative_omega(const Model& m, const Load& l) { return m.rate(relative_angle(m, l)); }  // ω_rel = dφ_rel/dt
 
 ex generalized_force(const Model& m, const Load& l, std::size_t i) {
   const GiNaC::symbol& q = m.coords[i].q;
@@ -38,14 +37,12 @@ ex generalized_force(const Model& m, const Load& l, std::size_t i) {
     case Load::Kind::Given: {
       // Q_i = F·∂(r_at − r_partner)/∂q_i + M ∂(φ_at − φ_partner)/∂q_i
       auto [dx, dy] = m.position_derivative(l.at, q);
-      ex dphi = angle_of(m, l.at).diff(q);
       if (l.partner) {
         auto [px, py] = m.position_derivative(*l.partner, q);
         dx -= px;
         dy -= py;
-        dphi -= angle_of(m, *l.partner).diff(q);
       }
-      return l.Fx * dx + l.Fy * dy + l.M * dphi;
+      return l.Fx * dx + l.Fy * dy + l.M * relative_angle(m, l).diff(q);
     }
     case Load::Kind::Slide: {
       // F = −size v̂_rel:  Q_i = −size (v_rel·∂v_rel/∂q̇_i)/|v_rel|

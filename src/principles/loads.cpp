@@ -39,25 +39,32 @@ std::pair<ex, ex> sliding_force(const Model& m, const Effect& e, const Load& l, 
                    "use friction whose contact slides along a fixed line (x or y)");
 }
 
-/// ∫_{t₁}^{t₂} f dt over analysis a, for f free of the motion.
+/// ∫_{t₁}^{t₂} f dt over analysis a (a result's impulse: refused as an input).
 ex over_time(const Model& m, const Effect& e, const ex& f, const Analysis& a) {
-  ex t1 = m.states[a.from].t, t2 = m.states[a.to].t;
-  if (!f.has(m.t)) return f * (t2 - t1);
-  auto F = model::antiderivative(f, m.t);
-  if (!F) throw InputError("the impulse of '" + e.name + "' has no closed form in t", "use an elementary function of t");
-  return F->subs(m.t == t2) - F->subs(m.t == t1);
+  auto I = over_duration(m, f, a);
+  if (!I) throw InputError("the impulse of '" + e.name + "' has no closed form in t", "use an elementary function of t");
+  return *I;
 }
-
-}  // namespace
 
 // A load that changes with the motion and acts across the set (a spring with one end in it, a
 // torsion spring on a body held by the ground) has no impulse of its own over a duration.
-void refuse_changing_push(const Effect& e, const Load& l) {
+[[noreturn]] void refuse_changing_push(const Effect& e, const Load& l) {
   const bool couple = l.Fx.is_zero() && l.Fy.is_zero() && l.kind == Load::Kind::Given;
   const bool two_bodies = l.partner && l.partner->body >= 0 && l.at.body >= 0;
   throw SceneError(e.pos, "the " + e.kind + " '" + e.name + "' " + (couple ? "turns with a couple" : "pushes with a force") +
                               " that changes with the motion; its impulse over a duration has no closed form",
                    two_bodies ? "include both of its ends in the analysis' bodies, or use an energy analysis" : "use an energy analysis");
+}
+
+}  // namespace
+
+std::optional<ex> over_duration(const Model& m, const ex& f, const Analysis& a) {
+  // ∫_{t₁}^{t₂} f dt: f (t₂ − t₁) for a constant, else F(t₂) − F(t₁) with F an antiderivative
+  ex t1 = m.states[a.from].t, t2 = m.states[a.to].t;
+  if (!f.has(m.t)) return f * (t2 - t1);
+  auto F = model::antiderivative(f, m.t);
+  if (!F) return std::nullopt;
+  return F->subs(m.t == t2) - F->subs(m.t == t1);
 }
 
 void load_pushes(const Model& m, const Effect& e, const Analysis& a, const Knowledge& k, std::vector<Push>& out) {
@@ -135,9 +142,7 @@ Work load_work(const Model& m, const Effect& e, int s1, int s2, const Knowledge&
     if (l.kind == Load::Kind::Turn) {
       // U = −M × the angle turned: dℓ/ds = |∂φ_rel/∂s| along the path
       auto turned = [&](const Path& p) {
-        ex rel = (l.at.body >= 0 ? m.bodies[l.at.body].angle : ex(0)) -
-                 (l.partner && l.partner->body >= 0 ? m.bodies[l.partner->body].angle : ex(0));
-        ex phi = rel.subs(p.q_of_s);
+        ex phi = model::relative_angle(m, l).subs(p.q_of_s);
         return sqrt(model::trig_simplify(pow(phi.diff(m.coords[p.s].q), 2)));
       };
       return friction_work(m, e, l.direction, l.size, turned, "U = -M * angle turned", s1, s2, k);

@@ -145,15 +145,13 @@ std::vector<Push> implied_reactions(const Model& m, const Analysis& a, const Kno
   return out;
 }
 
-/// ∫_{t₁}^{t₂} f(t) dt for f free of the motion.
+/// ∫_{t₁}^{t₂} f(t) dt for f free of the motion. @throws SceneError when it has no closed form.
 ex time_integral(const Model& m, const Effect& e, const ex& f, const Analysis& a) {
-  ex dt = m.states[a.to].t - m.states[a.from].t;
-  if (!f.has(m.t)) return f * dt;
-  auto F = antiderivative(f, m.t);
-  if (!F)
+  auto I = over_duration(m, f, a);
+  if (!I)
     throw SceneError(e.pos, "the impulse of '" + e.name + "' has no closed form in t",
                      "write it with an elementary antiderivative (polynomials, sin, cos, exp of a t)");
-  return F->subs(m.t == m.states[a.to].t) - F->subs(m.t == m.states[a.from].t);
+  return *I;
 }
 
 std::string state_pair(const Model& m, const Analysis& a) {

@@ -250,18 +250,22 @@ TEST_CASE("option table: every option of every effect kind is in the table, with
   }
 }
 
+/// A scene solved and confirmed, or the SceneError it is refused with.
+static std::pair<std::optional<kinergy::Solution>, std::optional<kinergy::SceneError>> attempt(const std::string& text) {
+  try {
+    kinergy::Solution s = kinergy::solve_scene(kinergy::scene::load_string(text, "bad.yaml"));
+    kinergy::confirm(s);
+    return {std::move(s), std::nullopt};
+  } catch (const kinergy::SceneError& e) {
+    return {std::nullopt, e};
+  }
+}
+
 TEST_CASE("option table: each row honoured (solved, confirmed by simulation) or refused at its line", "[options]") {
   for (auto& r : kTable) {
     const std::string text = scene_of(r);
     INFO(r.kind << " / " << (r.option.empty() ? "(the kind)" : r.option) << " / " << r.context << "\n" << text);
-    std::optional<kinergy::Solution> s;
-    std::optional<kinergy::SceneError> err;
-    try {
-      s = kinergy::solve_scene(kinergy::scene::load_string(text, "bad.yaml"));
-      kinergy::confirm(*s);
-    } catch (const kinergy::SceneError& e) {
-      err = e;
-    }
+    auto [s, err] = attempt(text);
     if (r.honoured) {
       INFO("error: " << (err ? err->what() : ""));
       CHECK_FALSE(err.has_value());
@@ -336,14 +340,7 @@ TEST_CASE("option table: every option of every analysis kind, honoured or refuse
                                                                                  : "";
     const std::string text = scene_of(Row{kind, "", r.context, r.effect, r.honoured, r.phrase}, r.analyses);
     INFO(r.kind << " / " << r.option << "\n" << text);
-    std::optional<kinergy::Solution> s;
-    std::optional<kinergy::SceneError> err;
-    try {
-      s = kinergy::solve_scene(kinergy::scene::load_string(text, "bad.yaml"));
-      kinergy::confirm(*s);
-    } catch (const kinergy::SceneError& e) {
-      err = e;
-    }
+    auto [s, err] = attempt(text);
     INFO("error: " << (err ? err->what() : ""));
     if (r.honoured) {
       CHECK_FALSE(err.has_value());

@@ -105,6 +105,8 @@ struct Reaction {
 /// The kinematics a load's force and couple work along (src/model/loads.cpp):
 /// v_rel = v_at − v_partner (the partner's point, 0 for a fixed party or none).
 std::pair<ex, ex> relative_velocity(const Model& m, const Load& l);
+/// φ_rel = the angle of at's body − the partner's body's (0 for a fixed party or none).
+ex relative_angle(const Model& m, const Load& l);
 /// ω_rel = ω of at's body − ω of the partner's body (0 for a fixed party or none).
 ex relative_omega(const Model& m, const Load& l);
 /// Q_i = F·∂(r_at − r_partner)/∂q_i + M ∂(φ_at − φ_partner)/∂q_i; Slide: −size v̂_rel·∂v_rel/∂q̇_i;

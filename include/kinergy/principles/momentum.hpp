@@ -52,6 +52,9 @@ void load_pushes(const model::Model& m, const model::Effect& e, const model::Ana
 /// when they cannot be integrated.
 void effect_pushes(const model::Model& m, const model::Effect& e, const model::Analysis& a, const Knowledge& k,
                    std::vector<Push>& out);
+/// ∫_{t₁}^{t₂} f dt over analysis a, for f free of the motion (constant, or of t); nothing when it
+/// has no elementary antiderivative.
+std::optional<ex> over_duration(const model::Model& m, const ex& f, const model::Analysis& a);
 /// ∫F dt over analysis `ai` of the effect's forces on its bodies (those on the analysis' set,
 /// where it has some). @throws InputError in an impact, or when a force changes with the motion.
 std::pair<ex, ex> load_impulse(const model::Model& m, const model::Effect& e, int ai);
