@@ -632,12 +632,12 @@ private:
       enum class Where { End, Stationary, NotThatKind };  ///< an end of the range; dF/dp = 0 (of the kind asked, or not)
       Where where;
       numeric p, F;
-      std::string how;
+      std::string second;  ///< a stationary point: its second derivative, and what that makes it
       numeric lo, hi;  ///< a stationary point: the bracket dF/dp changes sign in
     };
     std::vector<Cand> cands;
     for (const numeric& e : {*lo, *hi})
-      if (auto v = value_at(F, e)) cands.push_back({Cand::Where::End, e, *v, "end of the range", e, e});
+      if (auto v = value_at(F, e)) cands.push_back({Cand::Where::End, e, *v, "", e, e});
     const int N = 400;
     std::optional<numeric> prev;
     numeric prev_p = *lo;
@@ -656,10 +656,8 @@ private:
         if (v && s2) {
           bool kind_ok = x.largest ? s2->is_negative() : s2->is_positive();
           cands.push_back({kind_ok ? Cand::Where::Stationary : Cand::Where::NotThatKind, root, *v,
-                           std::string(kind_ok ? "stationary" : "stationary, not a ") + (kind_ok ? "" : x.largest ? "maximum" : "minimum"),
+                           "second derivative " + numerics::format(*s2, 6) + (kind_ok ? (x.largest ? " < 0, a maximum" : " > 0, a minimum") : ""),
                            d->is_zero() ? pi : prev_p, pi});
-          cands.back().how += ": second derivative " + numerics::format(*s2, 6) +
-                              (kind_ok ? (x.largest ? " < 0, a maximum" : " > 0, a minimum") : "");
         }
       }
       if (d) {
@@ -681,7 +679,7 @@ private:
     bool any = false;
     for (auto& c : cands)
       if (c.where != Cand::Where::End) {
-        note << (any ? "; " : " at ") << x.p_name << " = " << numerics::format(c.p, 8) << " (" << c.how.substr(c.how.find(": ") + 2) << ")";
+        note << (any ? "; " : " at ") << x.p_name << " = " << numerics::format(c.p, 8) << " (" << c.second << ")";
         any = true;
       }
     if (!any) note << " nowhere inside the range";

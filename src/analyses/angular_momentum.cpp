@@ -18,17 +18,18 @@ public:
     if (!ab)
       throw SceneError(ad.pos, "angular_momentum needs the point 'about' which moments are taken",
                        "write 'about: O' (a fixed point) or 'about: disk' (its mass centre)");
-    a.about = r.point_ref(*ab, "about");
+    const model::PointRef about = r.point_ref(*ab, "about");
+    a.options = model::About{about};
     // H_P₂ − H_P₁ = ∫M_P dt holds about a fixed point, or about the mass centre of the body
-    bool fixed = a.about.body < 0;
+    bool fixed = about.body < 0;
     if (!fixed) {  // a body point that the coordinates never move (a pulley's centre) is fixed too
-      auto [ax, ay] = m.position(a.about);
+      auto [ax, ay] = m.position(about);
       fixed = true;
       for (auto& co : m.coords) fixed = fixed && !ax.has(co.q) && !ay.has(co.q);
       fixed = fixed && !ax.has(m.t) && !ay.has(m.t);
     }
-    bool own_centre = a.about.body >= 0 && a.about.lx.is_zero() && a.about.ly.is_zero() && !a.about.world_place &&
-                      a.bodies.size() == 1 && a.bodies[0] == a.about.body;
+    bool own_centre = about.body >= 0 && about.lx.is_zero() && about.ly.is_zero() && !about.world_place &&
+                      a.bodies.size() == 1 && a.bodies[0] == about.body;
     if (!fixed && !own_centre)
       throw SceneError(ab->pos, "angular impulse-momentum about '" + ab->scalar + "' does not hold: that point moves",
                        "take moments about a fixed point (under 'points') or about the mass centre of the one body analysed");

@@ -35,6 +35,7 @@ public:
     // a given impulse switched off (or not yet on) at this impact does not strike in it
     bool blows = std::any_of(m.effects.begin(), m.effects.end(),
                              [&](const model::Effect& e) { return e.blow() != nullptr && e.activity(a) != model::Effect::Activity::None; });
+    model::Struck st;
     if (names.empty() && !blows)
       throw SceneError(ad.pos, "an impact needs a contact or a given impulse",
                        "write 'impact: {from: before, to: after, contact: hit}', or add an effect '{impulse: body.P, J: [Jx, Jy]}'");
@@ -54,15 +55,15 @@ public:
                                      " at state '" + m.states[m.effects[ei].off >= 0 && m.effects[ei].off <= a.from ? m.effects[ei].off : m.effects[ei].on].name +
                                      "', so it does not act in the impact " + S1 + " -> " + S2,
                          "name a contact that acts there, or move its 'on:'/'off:'");
-      if (std::find(a.contacts.begin(), a.contacts.end(), ei) != a.contacts.end())
+      if (std::find(st.contacts.begin(), st.contacts.end(), ei) != st.contacts.end())
         throw SceneError(n->pos, "contact '" + n->scalar + "' is named twice in this impact", "name each contact once");
-      a.contacts.push_back(ei);
+      st.contacts.push_back(ei);
       const model::Effect& e = m.effects[ei];
       const bool stick = m.contact(ei).stick;
       // unknown impulses: J along n (and Jt along the tangent when rough)
       ex J = r.unknown("J_" + e.name + "[" + S1 + "," + S2 + "]", P);
       ex Jt = stick ? r.unknown("Jt_" + e.name + "[" + S1 + "," + S2 + "]", P) : ex(0);
-      a.contact_impulses[e.name] = {J, Jt};
+      st.impulses[e.name] = {J, Jt};
       a.unknowns.push_back(J);
       if (stick) a.unknowns.push_back(Jt);
     }
@@ -71,22 +72,23 @@ public:
     for (std::size_t kk = 0; kk < m.constraints.size(); ++kk) {
       // a constraint effect switched off at `before` (a cord gone slack) carries no impulse
       if (m.constraint_activity(kk, a) == model::Effect::Activity::None) {
-        a.lambdas.push_back(0);
+        st.lambdas.push_back(0);
         continue;
       }
       Dimension dc = m.dimension(m.constraints[kk].first);
       ex lam = r.unknown("lambda" + std::to_string(kk + 1) + "[" + S1 + "," + S2 + "]", M * L * L / T / dc);
-      a.lambdas.push_back(lam);
+      st.lambdas.push_back(lam);
       a.unknowns.push_back(lam);
     }
+    a.options = std::move(st);
   }
 
   void check(const model::Model& m, const model::Analysis& a, const GiNaC::exmap& given, const solve::Branch& b,
              const GiNaC::exmap& env) const override {
     // a contact can only push: J ≥ 0 along its normal
-    for (int ci : a.contacts) {
+    for (int ci : a.struck()->contacts) {
       const model::Model::Contact e = m.contact(ci), &c = e;
-      ex J = a.contact_impulses.at(e.name).first.subs(given).subs(b.sol);
+      ex J = a.struck()->impulses.at(e.name).first.subs(given).subs(b.sol);
       auto v = numerics::evaluate(J, env, 30);
       if (v && v->is_negative())
         throw SceneError(e.pos, "contact '" + e.name + "' would have to pull (impulse " + numerics::format(*v, 6) +

@@ -18,20 +18,21 @@ public:
   void read(model::EffectReader& r, const scene::AnalysisDef& ad, model::Analysis& a) const override {
     const scene::Node* al = ad.options.get("along");
     if (!al) return;
-    a.has_along = true;
+    model::Along along;
     if (al->is_scalar() && (al->scalar == "x" || al->scalar == "y")) {
-      a.nx = al->scalar == "x" ? 1 : 0;
-      a.ny = al->scalar == "y" ? 1 : 0;
-      a.along_name = al->scalar;
+      along.nx = al->scalar == "x" ? 1 : 0;
+      along.ny = al->scalar == "y" ? 1 : 0;
+      along.name = al->scalar;
     } else {
       auto [nx, ny] = r.vec(*al, "along", units::Dimension{}, false, "a direction is a pair of pure numbers");
       ex n2 = nx * nx + ny * ny;
       if (n2.is_zero()) throw SceneError(al->pos, "the direction is zero", "write x, y or [nx, ny]");
       // n̂ = n / |n|
-      a.nx = nx / sqrt(n2);
-      a.ny = ny / sqrt(n2);
-      a.along_name = "[" + model::text(nx) + ", " + model::text(ny) + "]";
+      along.nx = nx / sqrt(n2);
+      along.ny = ny / sqrt(n2);
+      along.name = "[" + model::text(nx) + ", " + model::text(ny) + "]";
     }
+    a.options = along;
   }
 
   bool takes_reactions() const override { return true; }

@@ -83,7 +83,8 @@ std::pair<ex, ex> Effect::impulse(const Model& m, int self, int ai) const {
 ex Effect::impulse_size(const Model& m, int ai, const ex& x, const ex& y) const {
   // a contact's is J, its impulse along its normal
   auto r = reaction(m);
-  if (r && r->kind == Reaction::Kind::Contact) return m.analyses[static_cast<std::size_t>(ai)].contact_impulses.at(name).first;
+  const Struck* st = m.analyses[static_cast<std::size_t>(ai)].struck();
+  if (r && r->kind == Reaction::Kind::Contact && st && st->impulses.count(name)) return st->impulses.at(name).first;
   return sqrt(x * x + y * y);
 }
 
@@ -94,7 +95,7 @@ std::pair<ex, ex> Effect::impact_impulse_on(const Model& m, int body, int ai) co
     return {j->Jx, j->Jy};
   }
   auto r = reaction(m);
-  if (!r || r->kind != Reaction::Kind::Contact || !a.contact_impulses.count(name)) return {0, 0};
+  if (!r || r->kind != Reaction::Kind::Contact || !a.struck() || !a.struck()->impulses.count(name)) return {0, 0};
   // P acts on the second party, −P on the first
   auto [Px, Py] = impulse(m, -1, ai);
   int sign = (r->b.body == body ? 1 : 0) - (r->a.body == body ? 1 : 0);
@@ -106,8 +107,8 @@ ex Effect::impact_loss(const Model& m, int ai) const {
   auto r = reaction(m);
   if (!r || r->kind != Reaction::Kind::Contact || !an.instant())
     throw InputError("'loss' takes a contact and the two states of its impact", "write loss(hit, before, after)");
-  auto it = an.contact_impulses.find(name);
-  if (it == an.contact_impulses.end())
+  auto it = an.struck()->impulses.find(name);  // an instant analysis is an impact
+  if (it == an.struck()->impulses.end())
     throw InputError("contact '" + name + "' takes no part in that impact", "name it in the impact's contacts");
   auto [J, Jt] = it->second;
   auto vel = [&](const PointRef& p) -> std::pair<ex, ex> {

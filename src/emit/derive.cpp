@@ -514,18 +514,18 @@ private:
       bodies += std::string(i ? (i + 1 == a.bodies.size() ? " and " : ", ") : "") + m_.bodies[static_cast<std::size_t>(a.bodies[i])].name;
     std::string what = angular ? (mb.conserved ? "Conservation of angular momentum" : "Angular impulse and momentum")
                                : (mb.conserved ? "Conservation of linear momentum" : "Linear impulse and momentum");
-    std::string about = m_.body_index(a.about.text) >= 0 ? "the mass centre of " + a.about.text : a.about.text;
-    std::string where = angular ? " about " + about : (a.has_along ? " along " + a.along_name : "");
+    std::string about = !angular ? "" : m_.body_index(a.about()->text) >= 0 ? "the mass centre of " + a.about()->text : a.about()->text;
+    std::string where = angular ? " about " + about : (a.along() ? " along " + a.along()->name : "");
     section(what + where + ", states " + text_interval(S1, S2));
     Tags tags{"M" + std::to_string(k)};
     std::string dt_tex = "\\int_{" + (digits_only(S1) ? "t_{" + S1 + "}" : "t_{\\mathrm{" + S1 + "}}") + "}^{" +
                          (digits_only(S2) ? "t_{" + S2 + "}" : "t_{\\mathrm{" + S2 + "}}") + "}";
     if (angular) {
-      std::string P = about_tex(a.about.text);
+      std::string P = about_tex(a.about()->text);
       std::string H = "H_{" + P + "}";
       para({W("Bodies: " + bodies + ". The angular momentum about " + about + " is "),
             N(H + " = \\sum \\left(\\bar{I}\\omega + (\\bar{r} - r_{" + P + "})\\times m\\bar{v}\\right)",
-              "H = Σ (I*omega + (r_G - r_" + a.about.text + ") × m*v)"),
+              "H = Σ (I*omega + (r_G - r_" + a.about()->text + ") × m*v)"),
             W(", and "),
             mb.conserved ? N(tex_at(H, S1) + " = " + tex_at(H, S2), text_at("H", S1) + " = " + text_at("H", S2))
                          : N(tex_at(H, S1) + " + \\sum " + dt_tex + " M_{" + P + "}\\,dt = " + tex_at(H, S2),
@@ -545,7 +545,7 @@ private:
     for (auto& c : mb.components) {
       std::string base_tex, base_text, comp;
       if (angular) {
-        base_tex = "H_{" + about_tex(a.about.text) + "}";
+        base_tex = "H_{" + about_tex(a.about()->text) + "}";
         base_text = "H";
         comp = "about " + about;
       } else {
@@ -562,7 +562,7 @@ private:
         ex v = sub(imp.value);
         bool reaction = imp.kind == principles::ImpulseTerm::Kind::Reaction;
         std::string F = angular ? "M" : "F";
-        std::string sub_ = angular ? "_{" + about_tex(a.about.text) + "}" : "_{" + std::string(c.name == "x" || c.name == "y" ? c.name : "n") + "}";
+        std::string sub_ = angular ? "_{" + about_tex(a.about()->text) + "}" : "_{" + std::string(c.name == "x" || c.name == "y" ? c.name : "n") + "}";
         if (reaction) {
           unknowns.push_back(W(std::string(unknowns.empty() ? "" : "; ") + imp.effect + ": " + imp.how + " "));
           unknowns.push_back(M(v));
@@ -608,7 +608,7 @@ private:
     Spans intro{W("During the impact the positions and the time do not change (the state " + SA +
                   " has the positions of " + SB + "), and only impulsive forces act: ")};
     bool any = false;
-    for (int ci : a.contacts) {
+    for (int ci : a.struck()->contacts) {
       const auto e = m_.contact(ci);
       if (any) intro.push_back(W("; "));
       any = true;
@@ -617,8 +617,8 @@ private:
                         "n = (" + plain(tidy(e.nx)) + ", " + plain(tidy(e.ny)) + ")"));
       intro.push_back(W(" from the first into the second, coefficient of restitution "));
       intro.push_back(M(e.e));
-      auto it = a.contact_impulses.find(e.name);
-      if (it != a.contact_impulses.end()) {
+      auto it = a.struck()->impulses.find(e.name);
+      if (it != a.struck()->impulses.end()) {
         intro.push_back(W(", impulse "));
         intro.push_back(M(it->second.first));
         intro.push_back(W(" along n"));
@@ -665,13 +665,8 @@ private:
         auto [lhs, rhs] = sides(q);
         Row row = tags.row({Math::of(lhs), Math::of(rhs)});
         remember(q, row.tag);
-        std::string coord = coordinate_of(q.label);
         if (i) order.push_back(W(i + 1 == ib.momentum.size() ? " and " : ", "));
-        const model::Coordinate* co = nullptr;
-        for (auto& c : m_.coords)
-          if (c.name == coord) co = &c;
-        if (co) order.push_back(M(co->q));
-        else order.push_back(W(coord));
+        order.push_back(M(m_.coords[static_cast<std::size_t>(ib.along[i])].q));
         if (rhs.is_zero()) conserved.push_back(row.tag);
         r.push_back(row);
       }
@@ -699,14 +694,6 @@ private:
       }
       rows(r);
     }
-  }
-
-  static std::string coordinate_of(const std::string& label) {
-    auto a = label.find("along ");
-    if (a == std::string::npos) return "";
-    a += 6;
-    auto b = label.find(" in the impact", a);
-    return label.substr(a, b == std::string::npos ? std::string::npos : b - a);
   }
 
   // --- the system -----------------------------------------------------------------------------

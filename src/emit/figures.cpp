@@ -73,11 +73,11 @@ struct Diagram {
   }
 
   void about_point(draw::Figure& f, const draw::At& at) const {
-    if (a.about.text.empty() || m.body_index(a.about.text) >= 0) return;
-    auto [x, y] = at.point(m.position(a.about));
+    if (!a.about() || m.body_index(a.about()->text) >= 0) return;
+    auto [x, y] = at.point(m.position(*a.about()));
     if (std::isfinite(x) && std::isfinite(y)) {
-      f.mark(x, y, a.about.text, a.about.body < 0);
-      f.label(x, y, a.about.text);
+      f.mark(x, y, a.about()->text, a.about()->body < 0);
+      f.label(x, y, a.about()->text);
     }
   }
 

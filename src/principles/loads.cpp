@@ -335,13 +335,13 @@ std::pair<ex, ex> reaction_impulse(const Model& m, const Effect& e, const model:
   auto it = an.reactions.find(e.name);
   switch (r.kind) {
     case model::Reaction::Kind::Contact: {
-      auto c = an.contact_impulses.find(e.name);
-      if (c == an.contact_impulses.end())
+      const model::Struck* st = an.struck();
+      if (!st || !st->impulses.count(e.name))
         throw InputError("contact '" + e.name + "' takes no part in an impact between states " + m.states[an.from].name + " and " +
                              m.states[an.to].name,
                          "name it in the impact's 'contact' or 'contacts'");
       // P = J n + Jt t,  t = (−n_y, n_x)
-      auto [J, Jt] = c->second;
+      auto [J, Jt] = st->impulses.at(e.name);
       return {J * r.dir_x - Jt * r.dir_y, J * r.dir_y + Jt * r.dir_x};
     }
     case model::Reaction::Kind::Pin:
@@ -360,7 +360,7 @@ std::pair<ex, ex> reaction_impulse(const Model& m, const Effect& e, const model:
     case model::Reaction::Kind::Relation:
       if (an.instant()) {
         // the impulsive reaction Λ of the relation: Λ f on party a
-        const ex& lam = an.lambdas.at(r.constraint);
+        const ex& lam = an.struck()->lambdas.at(r.constraint);
         return {lam * m.bind(r.fx, an.from), lam * m.bind(r.fy, an.from)};
       }
       if (it == an.reactions.end())

@@ -237,7 +237,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
   MomentumBalance out;
   out.conserved = a.conserved;
   std::vector<std::pair<std::string, std::pair<ex, ex>>> dirs;
-  if (a.has_along) dirs.push_back({a.along_name, {a.nx, a.ny}});
+  if (const model::Along* al = a.along()) dirs.push_back({al->name, {al->nx, al->ny}});
   else dirs = {{"x", {1, 0}}, {"y", {0, 1}}};
   const std::vector<Push> implied = implied_reactions(m, a, k);
   for (auto& [name, n] : dirs) {
@@ -338,18 +338,18 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   out.angular = true;
   out.conserved = a.conserved;
   MomentumBalance::Component c;
-  c.name = "moment about " + a.about.text;
-  ex H = m.angular_momentum(a.about, a.bodies);
+  c.name = "moment about " + a.about()->text;
+  ex H = m.angular_momentum(*a.about(), a.bodies);
   c.before = m.bind(H, a.from);
   c.after = m.bind(H, a.to);
-  auto [px, py] = m.position(a.about);
+  auto [px, py] = m.position(*a.about());
   // a support the scene does not declare must have no moment about P: the set turns freely
   // about P (δr̄ = k × (r̄ − r_P), δφ = 1) while the rest stays put
   if (implied_reactions(m, a, k).empty() &&
       !moves_freely(m, a, [&, Px = px, Py = py](int b) { return std::array<ex, 3>{-(m.bodies[b].y - Py), m.bodies[b].x - Px, 1}; }))
     throw SceneError(a.pos, "the bodies of this angular momentum analysis (" + set_name(m, a) + ") cannot turn freely about " +
-                                a.about.text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
-                                a.about.text + " the analysis does not know",
+                                a.about()->text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
+                                a.about()->text + " the analysis does not know",
                      "take moments about a point they turn about freely (a pivot, a contact point on the ground, their mass centre), "
                      "or declare the support (a pin, a track) so that its reaction is an unknown");
   ex I = 0;
@@ -367,7 +367,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         ex Mr = model::trig_simplify(cross(ax, ay, p.Rx, p.Ry));
         if (vanishes(m, Mr)) continue;
         if (p.reaction && !motion_free(m, Mr) && !a.instant())
-          throw SceneError(e.pos, "the reaction of '" + e.name + "' has a moment about " + a.about.text +
+          throw SceneError(e.pos, "the reaction of '" + e.name + "' has a moment about " + a.about()->text +
                                       " that changes with the motion, so its angular impulse is unknown in a way no equation fixes",
                            "take moments about the pin itself, or about a fixed point");
         In = m.bind(Mr, a.from);
@@ -376,12 +376,12 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         Mp = model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
         if (vanishes(m, Mp)) continue;
         if (a.conserved)
-          throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about.text + " is not conserved between " +
-                                      state_pair(m, a) + ": effect '" + e.name + "' has a moment about " + a.about.text + " (" +
+          throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about()->text + " is not conserved between " +
+                                      state_pair(m, a) + ": effect '" + e.name + "' has a moment about " + a.about()->text + " (" +
                                       model::text(Mp) + ")",
                            "remove 'conserved: true' so its angular impulse is included, or take moments about another point");
         if (!motion_free(m, Mp))
-          throw SceneError(e.pos, "the moment of '" + e.name + "' about " + a.about.text + " changes with the motion (" + model::text(Mp) +
+          throw SceneError(e.pos, "the moment of '" + e.name + "' about " + a.about()->text + " changes with the motion (" + model::text(Mp) +
                                       "); its angular impulse has no closed form",
                            "take moments about a point where it is constant (a pivot, the mass centre), or use an energy analysis");
         In = time_integral(m, e, Mp, a);
@@ -389,15 +389,15 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       }
       if (In.is_zero()) continue;
       if (a.conserved)
-        throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about.text + " is not conserved between " +
-                                    state_pair(m, a) + ": effect '" + e.name + "' has a moment about " + a.about.text,
+        throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about()->text + " is not conserved between " +
+                                    state_pair(m, a) + ": effect '" + e.name + "' has a moment about " + a.about()->text,
                          "remove 'conserved: true' so its angular impulse is included, or take moments about another point");
       c.impulses.push_back({e.name, In, how, kind_of(p)});
       I += In;
     }
   }
   const char* what = a.conserved ? "conservation of angular momentum" : "angular impulse-momentum";
-  c.equation = {c.before + I, c.after, what, std::string(what) + " about " + a.about.text + ", " + state_pair(m, a), a.pos};
+  c.equation = {c.before + I, c.after, what, std::string(what) + " about " + a.about()->text + ", " + state_pair(m, a), a.pos};
   for (auto& e : m.effects)
     for (auto& p : pushes(m, e, a, k)) {
       out.holds.insert(out.holds.end(), p.holds.begin(), p.holds.end());
@@ -426,9 +426,9 @@ static void impact_momentum(const Model& m, const Analysis& a, ImpactBalance& ou
              b.inertia * (after(w) - before(w)) * before(Jw);
     }
     ex rhs = 0;
-    for (int ci : a.contacts) {
+    for (int ci : a.struck()->contacts) {
       const Model::Contact e = m.contact(ci);
-      const auto& [J, Jt] = a.contact_impulses.at(e.name);
+      const auto& [J, Jt] = a.struck()->impulses.at(e.name);
       auto dr = [&](const PointRef& p) -> std::pair<ex, ex> {
         if (p.ground || p.body < 0) return {0, 0};
         return m.position_derivative(p, q);
@@ -446,11 +446,12 @@ static void impact_momentum(const Model& m, const Analysis& a, ImpactBalance& ou
       rhs += before(dot(g->Jx, g->Jy, dx, dy));
     }
     for (std::size_t kk = 0; kk < m.constraints.size(); ++kk)
-      rhs += a.lambdas[kk] * before(m.constraints[kk].first.diff(q));
+      rhs += a.struck()->lambdas[kk] * before(m.constraints[kk].first.diff(q));
     ex res = model::trig_simplify(lhs - rhs);
     if (res.is_zero()) continue;
     out.momentum.push_back({lhs, rhs, "impulse-momentum",
                             "impulse-momentum along " + m.coords[i].name + " in the impact " + SB + " -> " + SA, a.pos});
+    out.along.push_back(static_cast<int>(i));
   }
 }
 
@@ -458,9 +459,9 @@ static void impact_momentum(const Model& m, const Analysis& a, ImpactBalance& ou
 static void impact_diagrams(const Model& m, const Analysis& a, ImpactBalance& out) {
   // what each body's diagram shows: P = J n (+ Jt t) on the second party at the contact, −P on
   // the first; the given blows; a pin's impulse (its body's momentum change less the others)
-  for (int ci : a.contacts) {
+  for (int ci : a.struck()->contacts) {
     const Model::Contact e = m.contact(ci);
-    const auto& [J, Jt] = a.contact_impulses.at(e.name);
+    const auto& [J, Jt] = a.struck()->impulses.at(e.name);
     for (const PointRef* p : {&e.b, &e.a}) {
       if (p->ground || p->body < 0) continue;
       const int sign = p == &e.b ? 1 : -1;
@@ -536,7 +537,7 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
 
   impact_momentum(m, a, out);
 
-  for (int ci : a.contacts) {
+  for (int ci : a.struck()->contacts) {
     const Model::Contact e = m.contact(ci);
     Party pa = party(e.a), pb = party(e.b);
     // the parties must touch at the impact

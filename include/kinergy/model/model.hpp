@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -53,28 +54,52 @@ struct State {
   std::vector<std::pair<ex, SourcePos>> where;  ///< bound conditions (== 0)
 };
 
+/// Momentum along one direction n̂ (`along: x`, `y` or [nx, ny]): the momentum kind's option.
+struct Along {
+  ex nx = 0, ny = 0;
+  std::string name;  ///< as the scene writes it (for messages and the derivation)
+};
+
+/// The moment point of an angular momentum analysis (`about:`).
+struct About {
+  PointRef point;
+};
+
+/// What strikes in an impact: its contact effects and the unknown impulses they bring (J along
+/// n, Jt along the tangent when rough, by effect name), and one impulsive reaction λ per
+/// constraint (0 where the constraint is switched off).
+struct Struck {
+  std::vector<int> contacts;
+  std::map<std::string, std::pair<ex, ex>> impulses;
+  std::vector<ex> lambdas;
+};
+
 struct Analysis {
   std::string kind;  ///< energy, momentum, angular_momentum, impact (for messages)
   const AnalysisKind* type = nullptr;  ///< what it does (src/analyses/)
   SourcePos pos;
   int from = -1, to = -1;
   std::vector<int> bodies;        ///< the body set (all bodies unless listed)
-  bool has_along = false;         ///< momentum: one direction only
-  ex nx = 0, ny = 0;
-  std::string along_name;
-  PointRef about;                 ///< angular_momentum: the moment point
   bool conserved = false;         ///< claimed conserved: checked against the effects
+  /// What its kind reads besides the states and the body set (the kind's file fills it): a
+  /// momentum analysis's direction, an angular one's point, an impact's parties; nothing else.
+  std::variant<std::monostate, Along, About, Struck> options;
   /// An impact: no time passes, positions do not change (its kind says so: type->instant()).
   bool instant() const;
-  std::vector<int> contacts;      ///< impact: contact effects
-  /// Unknown impulses this analysis brings: pin reactions (Rx, Ry) and constraint reactions (J)
-  /// by effect name (momentum),
-  /// contact impulses (J along n, Jt along the tangent) by effect name (impact), and one
-  /// impulsive constraint reaction per constraint (impact).
+  /// The direction of a momentum analysis along one only (nullptr: along x and y).
+  const Along* along() const { return std::get_if<Along>(&options); }
+  /// The moment point of an angular momentum analysis (nullptr for another kind).
+  const PointRef* about() const {
+    auto* a = std::get_if<About>(&options);
+    return a ? &a->point : nullptr;
+  }
+  /// What strikes in an impact (nullptr for another kind).
+  const Struck* struck() const { return std::get_if<Struck>(&options); }
+  /// Unknown average forces or impulses of the supports across its body set, by effect name:
+  /// pin reactions (Rx, Ry) and constraint reactions (J) over a duration (momentum), the average
+  /// force of an interaction that does work on the set (energy).
   std::map<std::string, std::vector<ex>> reactions;
-  std::map<std::string, std::pair<ex, ex>> contact_impulses;
-  std::vector<ex> lambdas;
-  std::vector<ex> unknowns;       ///< all of the above, in a stable order
+  std::vector<ex> unknowns;       ///< every unknown it brings, in a stable order
 };
 
 /// How to pick between roots for a named result.

@@ -113,7 +113,8 @@ MomentumBalance angular_momentum(const model::Model& m, const model::Analysis& a
 /// constraints carry workless impulsive reactions), restitution and stick conditions at each
 /// contact, positions unchanged.
 struct ImpactBalance {
-  std::vector<Equation> momentum;     ///< one per coordinate
+  std::vector<Equation> momentum;     ///< one per coordinate that the impact moves
+  std::vector<int> along;             ///< momentum[i] is along the coordinate coords[along[i]]
   std::vector<Equation> restitution;  ///< one per contact (and stick conditions)
   std::vector<Equation> positions;    ///< q_after = q_before
   /// The impulses on each body (Push::body), for the impact's diagrams: contact impulses at the
