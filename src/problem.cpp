@@ -361,7 +361,7 @@ private:
         for (int st : {e.on, e.off})
           if (st > std::min(a.from, a.to) && st < std::max(a.from, a.to)) add_state(st);
     try {
-      sol_.parts.push_back(a.type->equations(m, a, *know_, sol_));
+      a.type->equations(m, a, *know_, sol_);
     } catch (const SceneError&) {
       throw;
     } catch (const std::exception& err) {
@@ -578,7 +578,9 @@ private:
                          "choose the root on the side the motion goes ('root:' of the result), or check the rates given at state '" + S1.name + "'");
       }
       if (a.bodies.size() != m.bodies.size() || !a.reactions.empty()) continue;
-      const auto& bal = sol_.balances.at(static_cast<std::size_t>(sol_.parts.at(ai)));
+      const principles::EnergyBalance* energy = sol_.balance<principles::EnergyBalance>(ai);
+      if (!energy) continue;
+      const auto& bal = *energy;
       if (std::any_of(bal.works.begin(), bal.works.end(), [](const principles::Work& w) { return w.ends_only; })) continue;
       bool symbolic = false;
       const ex eq = bal.equation.residual().subs(given);
@@ -602,10 +604,7 @@ private:
       throw SceneError(c.pos, what, c.fix);
     };
     for (auto& bal : sol_.balances)
-      for (auto& w : bal.works)
-        for (auto& c : w.holds) hold(c);
-    for (auto& mom : sol_.momenta)
-      for (auto& c : mom.holds) hold(c);
+      for (auto& c : bal->conditions()) hold(c);
   }
 
   /// The greatest or least value of r.closed as f's parameter p runs over [lo, hi] (or where it
@@ -1079,15 +1078,15 @@ Solution solve_scene(const scene::SceneDef& def) {
   // first is past every switching point; while it has no solution, one switching point fewer
   std::optional<SceneError> first;
   for (int fewer = 0;; ++fewer) {
-    Solution sol{base, {}, {}, {}, {}, {}, {}, {}, {}, def};
+    Solution sol{base, {}, {}, {}, {}, {}, def};
     try {
       SceneSolver(sol, fewer).run();
       return sol;
     } catch (const SceneError& e) {
       if (!first) first = e;
       int cases = 1;
-      for (auto& bal : sol.balances)
-        for (auto& w : bal.works) cases = std::max(cases, w.switch_cases);
+      for (auto* bal : sol.balances_of<principles::EnergyBalance>())
+        for (auto& w : bal->works) cases = std::max(cases, w.switch_cases);
       if (fewer + 1 >= cases) throw *first;
     }
   }

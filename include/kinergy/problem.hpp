@@ -1,5 +1,6 @@
 /// @file problem.hpp  The whole pipeline for one scene: model, equations, solution, results.
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -77,10 +78,22 @@ struct Confirmed {
 
 struct Solution {
   model::Model model;
-  std::vector<principles::EnergyBalance> balances;     ///< energy analyses, in order
-  std::vector<principles::MomentumBalance> momenta;    ///< momentum and angular momentum analyses
-  std::vector<principles::ImpactBalance> impacts;      ///< impact analyses
-  std::vector<int> parts;  ///< per analysis: the index of its balance among those of its kind
+  /// Each analysis's balance (its kind's type: principles::EnergyBalance, MomentumBalance,
+  /// ImpactBalance), in the order of model.analyses.
+  std::vector<std::shared_ptr<const principles::Balance>> balances;
+  /// The balance of analysis `ai` when it is of type B (nullptr when it is another kind's).
+  template <class B>
+  const B* balance(std::size_t ai) const {
+    return ai < balances.size() ? dynamic_cast<const B*>(balances[ai].get()) : nullptr;
+  }
+  /// The balances of type B, in order.
+  template <class B>
+  std::vector<const B*> balances_of() const {
+    std::vector<const B*> out;
+    for (std::size_t i = 0; i < balances.size(); ++i)
+      if (const B* b = balance<B>(i)) out.push_back(b);
+    return out;
+  }
   std::vector<principles::Equation> equations;  ///< every equation solved, in order
   solve::Branch branch;                         ///< the chosen solution
   std::vector<Result> results;

@@ -6,7 +6,7 @@ namespace kinergy::analyses {
 
 namespace {
 
-class Energy : public Balanced<principles::EnergyBalance, &Solution::balances, principles::energy> {
+class Energy : public Balanced<principles::EnergyBalance, principles::energy> {
 public:
   Energy() : Balanced("energy") {}
 

@@ -11,7 +11,7 @@ namespace {
 using GiNaC::ex;
 using units::Dimension;
 
-class Impact : public Balanced<principles::ImpactBalance, &Solution::impacts, principles::impact> {
+class Impact : public Balanced<principles::ImpactBalance, principles::impact> {
 public:
   Impact() : Balanced("impact") {}
 

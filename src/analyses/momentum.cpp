@@ -9,7 +9,7 @@ namespace {
 
 using GiNaC::ex;
 
-class Momentum : public Balanced<principles::MomentumBalance, &Solution::momenta, principles::linear_momentum> {
+class Momentum : public Balanced<principles::MomentumBalance, principles::linear_momentum> {
 public:
   Momentum() : Balanced("momentum") {}
 

@@ -104,8 +104,8 @@ public:
     kinematics();
     states();
     // each analysis writes its own section
-    for (std::size_t i = 0; i < m_.analyses.size() && i < s_.parts.size(); ++i)
-      m_.analyses[i].type->derive(*this, static_cast<int>(i) + 1, m_.analyses[i], s_, s_.parts[i]);
+    for (std::size_t i = 0; i < m_.analyses.size() && i < s_.balances.size(); ++i)
+      m_.analyses[i].type->derive(*this, static_cast<int>(i) + 1, m_.analyses[i], s_);
     system();
     solution();
     results();

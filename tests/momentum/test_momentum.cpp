@@ -1119,10 +1119,10 @@ find:
 )Y");
     CHECK(exactly_zero(closed(s, "vx2") - P(s, "u")));
     CHECK(exactly_zero(closed(s, "vy2") - (P(s, "v") - P(s, "g") * P(s, "t2"))));
-    REQUIRE(s.momenta.size() == 2);
-    CHECK(s.momenta[0].conserved);
-    CHECK(s.momenta[0].components.size() == 1);
-    CHECK(s.momenta[0].components[0].impulses.empty());
+    REQUIRE(s.balances_of<kinergy::principles::MomentumBalance>().size() == 2);
+    CHECK(s.balances_of<kinergy::principles::MomentumBalance>()[0]->conserved);
+    CHECK(s.balances_of<kinergy::principles::MomentumBalance>()[0]->components.size() == 1);
+    CHECK(s.balances_of<kinergy::principles::MomentumBalance>()[0]->components[0].impulses.empty());
   }
   SECTION("linear momentum along [1, 1] with gravity along [1, -1]") {
     auto s = solve_text(R"Y(title: Projectile, tilted gravity
@@ -1155,12 +1155,12 @@ find:
   }
   SECTION("angular momentum about a pivot with a pin there and gravity through it (the derivations)") {
     auto s = kinergy::solve_file(momentum_file("spinning_frame.yaml"));
-    REQUIRE(s.momenta.size() == 1);
-    CHECK(s.momenta[0].conserved);
+    REQUIRE(s.balances_of<kinergy::principles::MomentumBalance>().size() == 1);
+    CHECK(s.balances_of<kinergy::principles::MomentumBalance>()[0]->conserved);
     auto c = kinergy::solve_file(momentum_file("collar_on_rod.yaml"));
-    REQUIRE(c.momenta.size() == 1);
-    CHECK(c.momenta[0].conserved);
-    CHECK(c.momenta[0].components[0].impulses.empty());
+    REQUIRE(c.balances_of<kinergy::principles::MomentumBalance>().size() == 1);
+    CHECK(c.balances_of<kinergy::principles::MomentumBalance>()[0]->conserved);
+    CHECK(c.balances_of<kinergy::principles::MomentumBalance>()[0]->components[0].impulses.empty());
   }
   SECTION("angular momentum of a disk on a pin about the pin, with gravity and a couple-free load") {
     auto s = solve_text(R"Y(title: Disk coasting on a pin

@@ -95,11 +95,11 @@ TEST_CASE("an isolated set sees its own weight, and the work of the interaction 
   // û (on the block), does T̄ (y2 - y1) (the block moves along y). The drum alone: no work of
   // gravity (its centre is fixed), the cord's force on it (−T̄ û at (R, 0)) does -T̄ R (phi2 - phi1).
   auto s = solve_text(edit(drum, "ISOLATED", "energy: {from: 1, to: 2, bodies: [block]}"));
-  REQUIRE(s.balances.size() == 2);
+  REQUIRE(s.balances_of<kinergy::principles::EnergyBalance>().size() == 2);
   const auto& m = s.model;
   ex y1 = kt::at(m, "y", "1"), y2 = kt::at(m, "y", "2");
   std::map<std::string, ex> U;
-  for (auto& w : s.balances[1].works) U[w.effect] = w.U;
+  for (auto& w : s.balances_of<kinergy::principles::EnergyBalance>()[1]->works) U[w.effect] = w.U;
   REQUIRE(U.count("gravity"));
   REQUIRE(U.count("cord"));
   CHECK(kt::symbolically_zero(U["gravity"] + P(s, "m") * P(s, "g") * (y2 - y1)));
@@ -109,7 +109,7 @@ TEST_CASE("an isolated set sees its own weight, and the work of the interaction 
 
   auto d = solve_text(edit(drum, "ISOLATED", "energy: {from: 1, to: 2, bodies: [drum]}"));
   std::map<std::string, ex> Ud;
-  for (auto& w : d.balances[1].works) Ud[w.effect] = w.U;
+  for (auto& w : d.balances_of<kinergy::principles::EnergyBalance>()[1]->works) Ud[w.effect] = w.U;
   CHECK(!Ud.count("gravity"));
   REQUIRE(Ud.count("cord"));
   ex Fd = d.model.analyses[1].reactions.at("cord")[0];

@@ -39,14 +39,14 @@ public:
   virtual bool impulsive() const { return true; }
   /// Does it take no time (an impact: positions and t do not change, impulses are impulsive)?
   virtual bool instant() const { return false; }
-  /// Add its equations to the solution; returns the index of its balance among those of its kind.
-  virtual int equations(const Model& m, const Analysis& a, const Knowledge& k, Solution& s) const = 0;
+  /// Add its balance (Solution::balances) and its equations to the solution.
+  virtual void equations(const Model& m, const Analysis& a, const Knowledge& k, Solution& s) const = 0;
   /// Check the chosen solution (`given`: the states' given values; `env`: the parameters').
   /// @throws SceneError when it is physically impossible for this analysis.
   virtual void check(const Model&, const Analysis&, const GiNaC::exmap& /*given*/, const solve::Branch&,
                      const GiNaC::exmap& /*env*/) const {}
-  /// Write its section of the derivation (`k`: its number; `part`: what `equations` returned).
-  virtual void derive(emit::Sections& w, int k, const Analysis& a, const Solution& s, int part) const = 0;
+  /// Write its section of the derivation (`k`: its number, from 1; its balance is s.balances[k − 1]).
+  virtual void derive(emit::Sections& w, int k, const Analysis& a, const Solution& s) const = 0;
 };
 
 /// The table of analysis kinds (src/analyses/registry.cpp).

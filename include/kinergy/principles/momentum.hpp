@@ -88,7 +88,7 @@ struct ImpulseTerm {
 };
 
 /// The equations of one momentum analysis, component by component.
-struct MomentumBalance {
+struct MomentumBalance : Balance {
   struct Component {
     std::string name;  ///< "x", "y", "along (nx, ny)", "moment about O"
     ex before, after;  ///< momentum (or angular momentum) at the two states
@@ -100,6 +100,13 @@ struct MomentumBalance {
   bool conserved = false;
   bool angular = false;  ///< angular (about a point), else linear
   std::vector<Condition> holds;  ///< what its pushes took for granted, checked on the solution
+
+  std::vector<Equation> equations() const override {
+    std::vector<Equation> out;
+    for (auto& c : components) out.push_back(c.equation);
+    return out;
+  }
+  std::vector<Condition> conditions() const override { return holds; }
 };
 
 /// Linear impulse–momentum Σ m v̄₂·n = Σ m v̄₁·n + Σ ∫F·n dt for the analysis' bodies.
@@ -112,7 +119,7 @@ MomentumBalance angular_momentum(const model::Model& m, const model::Analysis& a
 /// The equations of an impact: generalized impulse–momentum along each coordinate (pins and
 /// constraints carry workless impulsive reactions), restitution and stick conditions at each
 /// contact, positions unchanged.
-struct ImpactBalance {
+struct ImpactBalance : Balance {
   std::vector<Equation> momentum;     ///< one per coordinate that the impact moves
   std::vector<int> along;             ///< momentum[i] is along the coordinate coords[along[i]]
   std::vector<Equation> restitution;  ///< one per contact (and stick conditions)
@@ -120,6 +127,14 @@ struct ImpactBalance {
   /// The impulses on each body (Push::body), for the impact's diagrams: contact impulses at the
   /// contact point, given blows, and each pin's impulsive reaction.
   std::vector<Shown> shown;
+
+  /// The positions kept, then the momentum along each coordinate, then restitution.
+  std::vector<Equation> equations() const override {
+    std::vector<Equation> out;
+    for (auto* group : {&positions, &momentum, &restitution}) out.insert(out.end(), group->begin(), group->end());
+    return out;
+  }
+  std::vector<Condition> conditions() const override { return {}; }
 };
 
 ImpactBalance impact(const model::Model& m, const model::Analysis& a, const Knowledge& k);

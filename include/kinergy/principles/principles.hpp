@@ -27,19 +27,38 @@ using model::Condition;
 using model::Knowledge;
 using model::Work;
 
+/// What a principle gives for one analysis: its equations, and what their terms took for
+/// granted. Each analysis kind's balance derives from it (its section of the derivation reads the
+/// rest).
+struct Balance {
+  virtual ~Balance() = default;
+  /// Its equations, in the order they join the system.
+  virtual std::vector<Equation> equations() const = 0;
+  /// What its terms took for granted (a switching force passed, a declared direction of
+  /// sliding), each e ≥ 0, checked on the solution.
+  virtual std::vector<Condition> conditions() const = 0;
+};
+
 /// Energy terms of one side.
 struct EnergyTerms {
   ex T, V;
 };
 
 /// The energy analysis: T₁ + V₁ + Σ U₁→₂ = T₂ + V₂.
-struct EnergyBalance {
+struct EnergyBalance : Balance {
   EnergyTerms at_from, at_to;
   std::vector<Work> works;
   std::vector<std::string> stored;  ///< the effects whose potential V holds ("name (kind)")
   std::vector<std::string> working;  ///< the names of the effects that do work (by V or by U), for a figure
   Equation equation;
   bool conservative = true;  ///< no non-conservative effect did work
+
+  std::vector<Equation> equations() const override { return {equation}; }
+  std::vector<Condition> conditions() const override {
+    std::vector<Condition> out;
+    for (auto& w : works) out.insert(out.end(), w.holds.begin(), w.holds.end());
+    return out;
+  }
 };
 
 /// @throws SceneError when a work cannot be taken (path unknown, time-dependent couple …).
