@@ -6,7 +6,7 @@ namespace kinergy::analyses {
 
 namespace {
 
-class AngularMomentum : public Balanced<principles::MomentumBalance, principles::angular_momentum> {
+class AngularMomentum : public Balanced<principles::MomentumBalance, principles::angular_momentum, momentum_section> {
 public:
   AngularMomentum() : Balanced("angular_momentum") {}
 

@@ -10,8 +10,15 @@ namespace kinergy::analyses {
 template <class B>
 using Principle = B (*)(const model::Model&, const model::Analysis&, const principles::Knowledge&);
 
-/// An analysis kind whose balance B is made by `principle`.
-template <class B, Principle<B> principle>
+/// What writes an analysis' section of the derivation from its balance B (`k`: its number).
+template <class B>
+using Section = void (*)(emit::Sections&, int k, const model::Analysis&, const B&);
+
+/// The section of a linear or an angular momentum analysis (momentum_section.cpp).
+void momentum_section(emit::Sections& w, int k, const model::Analysis& a, const principles::MomentumBalance& mb);
+
+/// An analysis kind whose balance B is made by `principle` and shown by `section`.
+template <class B, Principle<B> principle, Section<B> section>
 class Balanced : public model::AnalysisKind {
 public:
   using AnalysisKind::AnalysisKind;
@@ -23,7 +30,7 @@ public:
   }
 
   void derive(emit::Sections& w, int k, const model::Analysis& a, const Solution& s) const override {
-    w.section(k, a, *s.balance<B>(static_cast<std::size_t>(k - 1)));
+    section(w, k, a, *s.balance<B>(static_cast<std::size_t>(k - 1)));
   }
 };
 

@@ -11,7 +11,98 @@ namespace {
 using GiNaC::ex;
 using units::Dimension;
 
-class Impact : public Balanced<principles::ImpactBalance, principles::impact> {
+/// Its section: the parties, each struck body's impulse–momentum diagram, the generalized
+/// impulse–momentum along each coordinate, restitution at each contact.
+void section(emit::Sections& w, int k, const model::Analysis& a, const principles::ImpactBalance& ib) {
+  using namespace emit;
+  const Solution& s = w.solution();
+  const model::Model& m = s.model;
+  const std::string SB = w.state_name(a.from), SA = w.state_name(a.to);
+  w.section("Impact, " + text_interval(SB, SA));
+  Tags tags{"I" + std::to_string(k)};
+  Spans intro{W("During the impact the positions and the time do not change (the state " + SA +
+                " has the positions of " + SB + "), and only impulsive forces act: ")};
+  bool any = false;
+  for (int ci : a.struck()->contacts) {
+    const auto e = m.contact(ci);
+    if (any) intro.push_back(W("; "));
+    any = true;
+    intro.push_back(W("the contact " + e.name + " between " + e.a.text + " and " + e.b.text + ", normal "));
+    intro.push_back(N("n = \\left(" + latex(w.tidy(e.nx)) + ", " + latex(w.tidy(e.ny)) + "\\right)",
+                      "n = (" + plain(w.tidy(e.nx)) + ", " + plain(w.tidy(e.ny)) + ")"));
+    intro.push_back(W(" from the first into the second, coefficient of restitution "));
+    intro.push_back(M(e.e));
+    auto it = a.struck()->impulses.find(e.name);
+    if (it != a.struck()->impulses.end()) {
+      intro.push_back(W(", impulse "));
+      intro.push_back(M(it->second.first));
+      intro.push_back(W(" along n"));
+      if (e.stick) {
+        intro.push_back(W(" and "));
+        intro.push_back(M(it->second.second));
+        intro.push_back(W(" along the tangent (rough: no sliding after)"));
+      }
+    }
+  }
+  for (auto& e : m.effects)
+    if (const model::Blow* g = e.blow()) {
+      if (any) intro.push_back(W("; "));
+      any = true;
+      intro.push_back(W("the given impulse " + e.name + " at " + g->at.text + ", "));
+      intro.push_back(N("\\left(" + latex(w.tidy(g->Jx)) + ", " + latex(w.tidy(g->Jy)) + "\\right)",
+                        "(" + plain(w.tidy(g->Jx)) + ", " + plain(w.tidy(g->Jy)) + ")"));
+    }
+  if (!any) intro.push_back(W("none"));
+  intro.push_back(W(". Pins and constraints carry workless impulsive reactions; gravity, springs, couples and "
+                    "forces are not impulsive."));
+  w.para(intro);
+  // each body the impact moves: momenta before + impulses on it = momenta after
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    bool struck = false;
+    for (auto& sh : ib.shown) struck = struck || sh.push.body == static_cast<int>(b);
+    if (!struck) continue;
+    w.momentum_figure(a, {static_cast<int>(b)}, ib.shown, "Impulse-momentum diagram of " + m.bodies[b].name + " in the impact: its momenta before (" + SB +
+                                    "), plus the impulses on it, equal its momenta after (" + SA + ").");
+  }
+  if (!ib.momentum.empty()) {
+    w.para({W("Impulse and momentum along each coordinate q (its generalized momentum changes by the generalized "
+            "impulse), "),
+          N("\\sum_{b}\\left(m\\,\\Delta\\bar{v}\\cdot\\frac{\\partial\\bar{r}}{\\partial q} + \\bar{I}\\,\\Delta\\omega\\,"
+            "\\frac{\\partial\\phi}{\\partial q}\\right) = \\sum J\\cdot\\frac{\\partial r}{\\partial q}",
+            "Σ (m Δv·∂r_G/∂q + I Δω ∂φ/∂q) = Σ J·∂r/∂q"),
+          W(":")});
+    std::vector<Row> r;
+    std::vector<std::string> conserved;
+    Spans order{W("In order, along ")};
+    for (std::size_t i = 0; i < ib.momentum.size(); ++i) {
+      const auto& q = ib.momentum[i];
+      Row row = w.equation(tags, q);
+      if (i) order.push_back(W(i + 1 == ib.momentum.size() ? " and " : ", "));
+      order.push_back(M(m.coords[static_cast<std::size_t>(ib.along[i])].q));
+      if (w.sub(q.rhs).is_zero()) conserved.push_back("(" + row.tag + ")");
+      r.push_back(row);
+    }
+    order.push_back(W(":"));
+    w.para(order);
+    w.rows(r);
+    if (!conserved.empty()) {
+      w.para({W("In " + listed(conserved) + " no impulse acts along the coordinate, so the generalized momentum along it is "
+              "conserved through the impact.")});
+    }
+  }
+  if (!ib.restitution.empty()) {
+    w.para({W("At each contact the relative normal velocity reverses, scaled by e: "),
+          N("(v_{B}' - v_{A}')\\cdot n = -e\\,(v_{B} - v_{A})\\cdot n", "(vB' - vA')·n = -e (vB - vA)·n"),
+          W(" (and no relative tangential velocity after, where the contact is rough):")});
+    std::vector<Row> r;
+    for (auto& q : ib.restitution) {
+      r.push_back(w.equation(tags, q));
+    }
+    w.rows(r);
+  }
+}
+
+class Impact : public Balanced<principles::ImpactBalance, principles::impact, section> {
 public:
   Impact() : Balanced("impact") {}
 

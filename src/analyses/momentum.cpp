@@ -9,7 +9,7 @@ namespace {
 
 using GiNaC::ex;
 
-class Momentum : public Balanced<principles::MomentumBalance, principles::linear_momentum> {
+class Momentum : public Balanced<principles::MomentumBalance, principles::linear_momentum, momentum_section> {
 public:
   Momentum() : Balanced("momentum") {}
 

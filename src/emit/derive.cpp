@@ -24,40 +24,6 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // small helpers
 
-std::string subscript_digits(const std::string& s) {
-  static const char* sub[] = {"\u2080", "\u2081", "\u2082", "\u2083", "\u2084",
-                              "\u2085", "\u2086", "\u2087", "\u2088", "\u2089"};
-  std::string o;
-  for (char c : s) o += sub[c - '0'];
-  return o;
-}
-
-bool digits_only(const std::string& s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
-/// Plain-text quantity at a state: T₁, T(before), L_x₁.
-std::string text_at(const std::string& base, const std::string& state) {
-  if (digits_only(state)) return base + subscript_digits(state);
-  return base + "(" + state + ")";
-}
-
-/// TeX of an effect's, body's or state's name as an upright word.
-std::string tex_word(const std::string& s) { return "\\mathrm{" + tex_text(s) + "}"; }
-
-/// "1 → 2" in both forms.
-std::string text_interval(const std::string& a, const std::string& b) { return a + " \u2192 " + b; }
-
-std::string tex_interval_sub(const std::string& a, const std::string& b) {
-  auto one = [](const std::string& s) { return digits_only(s) || s.size() == 1 ? s : "\\mathrm{" + s + "}"; };
-  return one(a) + "\\to " + one(b);
-}
-
-std::string text_interval_sub(const std::string& a, const std::string& b) {
-  if (digits_only(a) && digits_only(b)) return subscript_digits(a) + "\u2192" + subscript_digits(b);
-  return "(" + a + "\u2192" + b + ")";
-}
-
 /// The symbols of an expression, in a fixed order (by their plain text).
 void symbols_in(const ex& e, std::vector<ex>& out) {
   if (is_a<symbol>(e)) {
@@ -76,18 +42,6 @@ void symbols_in(const ex& e, std::vector<ex>& out) {
   }
   for (std::size_t i = 0; i < e.nops(); ++i) symbols_in(e.op(i), out);
 }
-
-/// A tagger for the equations of one part: prefix "E1" gives E1.1, E1.2, …; a bare prefix
-/// ("C", "S") gives C1, C2, …
-struct Tags {
-  std::string prefix;
-  bool dotted = true;
-  int n = 0;
-  Row row(std::vector<Math> sides) {
-    std::string t = prefix + (dotted ? "." : "") + std::to_string(++n);
-    return Row{std::move(sides), {}, t, "eq:" + t};
-  }
-};
 
 class Builder : public Sections {
 public:
@@ -123,30 +77,31 @@ private:
   std::vector<std::string> tag_of_;  ///< tag of each equation of s_.equations where first shown
   int figures_ = 0;
 
-  // --- blocks -----------------------------------------------------------------------------
+  // --- what an analysis kind writes its section with (Sections: called through it) ------------
 
-  void section(const std::string& t) { d_.blocks.push_back({Block::Kind::Section, t, {}, {}, {}, {}, nullptr}); }
-  void subsection(const std::string& t) { d_.blocks.push_back({Block::Kind::Subsection, t, {}, {}, {}, {}, nullptr}); }
-  void para(Spans sp) { d_.blocks.push_back({Block::Kind::Paragraph, "", std::move(sp), {}, {}, {}, nullptr}); }
-  void figure(draw::Sheet sheet, const std::string& caption) {
+  const Solution& solution() const override { return s_; }
+  void section(const std::string& t) override { d_.blocks.push_back({Block::Kind::Section, t, {}, {}, {}, {}, nullptr}); }
+  void subsection(const std::string& t) override { d_.blocks.push_back({Block::Kind::Subsection, t, {}, {}, {}, {}, nullptr}); }
+  void para(Spans sp) override { d_.blocks.push_back({Block::Kind::Paragraph, "", std::move(sp), {}, {}, {}, nullptr}); }
+  void figure(draw::Sheet sheet, const std::string& caption) override {
     // numbered in order, as `kinergy draw --figure N` finds them
     ++figures_;
     Block b{Block::Kind::Figure, "Figure " + std::to_string(figures_) + ": " + caption, {}, {}, {}, {}, nullptr};
     b.sheet = std::make_shared<const draw::Sheet>(std::move(sheet));
     d_.blocks.push_back(std::move(b));
   }
-  void rows(std::vector<Row> r) {
+  void momentum_figure(const model::Analysis& a, const std::vector<int>& bodies, const std::vector<principles::Shown>& shown,
+                       const std::string& caption) override {
+    if (auto sheet = momentum_diagram(s_, a, bodies, shown, &d_.names)) figure(std::move(*sheet), caption);
+  }
+  void rows(std::vector<Row> r) override {
     if (!r.empty()) d_.blocks.push_back({Block::Kind::Equations, "", {}, std::move(r), {}, {}, nullptr});
   }
-
-  static Span W(const std::string& s) { return Span::w(s); }
-  static Span M(const ex& e) { return Span::m(Math::of(e)); }
-  static Span N(const std::string& tex, const std::string& text) { return Span::m(Math::notation(tex, text)); }
 
   /// An expression with the given state values put in, tidied (as it was, if that fails).
   /// An expression with the given state values put in, tidied but not factored (the terms of
   /// an energy or a momentum as a person adds them up).
-  ex sub(const ex& e) const {
+  ex sub(const ex& e) const override {
     try {
       return tidy(e.subs(given_));
     } catch (const std::exception&) {
@@ -156,7 +111,7 @@ private:
 
   /// Trigonometric and rational simplification, squares out of roots; not factored (factor()
   /// picks its form by GiNaC's term order, and a sum of energies reads better expanded).
-  ex tidy(const ex& e) const {
+  ex tidy(const ex& e) const override {
     try {
       return model::root_simplify(model::tidy(model::tidy_function_arguments(e)));
     } catch (const std::exception&) {
@@ -174,9 +129,6 @@ private:
     }
   }
 
-  /// Each side of an equation with the given values in and the tidy form.
-  std::pair<ex, ex> sides(const principles::Equation& q) const { return {sub(q.lhs), sub(q.rhs)}; }
-
   /// The equation of the system that a principle's equation is (same sides and label).
   int index_of(const principles::Equation& q) const {
     for (std::size_t i = 0; i < s_.equations.size(); ++i) {
@@ -186,12 +138,10 @@ private:
     return -1;
   }
 
-  void remember(const principles::Equation& q, const std::string& tag) {
+  void remember(const principles::Equation& q, const std::string& tag) override {
     int i = index_of(q);
     if (i >= 0 && tag_of_[static_cast<std::size_t>(i)].empty()) tag_of_[static_cast<std::size_t>(i)] = tag;
   }
-
-  std::string state_name(int i) const { return m_.states[static_cast<std::size_t>(i)].name; }
 
   // --- the parameters' values, as written ----------------------------------------------------
 
@@ -410,290 +360,6 @@ private:
       figure(std::move(sheets[i]), "The scene at its states, drawn from the model with the solved values" +
                                        std::string(sheets.size() > 1 ? " (" + std::to_string(i + 1) + " of " + std::to_string(sheets.size()) + ")" : "") + ".");
     for (auto& why : left_out) para({W("Not drawn: " + why + ".")});
-  }
-
-  // --- energy ---------------------------------------------------------------------------------
-
-  void section(int k, const model::Analysis& a, const principles::EnergyBalance& b) override {
-    const std::string S1 = state_name(a.from), S2 = state_name(a.to);
-    section(std::string(b.conservative ? "Conservation of energy" : "Work and energy") + ", states " + text_interval(S1, S2));
-    Tags tags{"E" + std::to_string(k)};
-    auto T = [&](const std::string& S) { return Math::notation(tex_at("T", S), text_at("T", S)); };
-    auto V = [&](const std::string& S) { return Math::notation(tex_at("V", S), text_at("V", S)); };
-    std::string U_tex = "U_{" + tex_interval_sub(S1, S2) + "}", U_text = "U" + text_interval_sub(S1, S2);
-
-    // the positions at the two states with the effects that do work between them
-    try {
-      std::string names;
-      for (std::size_t i = 0; i < b.working.size(); ++i)
-        names += (i ? (i + 1 == b.working.size() ? " and " : ", ") : "") + b.working[i];
-      figure(draw::positions_with(m_, s_.branch.sol, parameter_values(s_), a.from, a.to, a.bodies, b.working),
-             "Positions at " + S1 + " and " + S2 + (names.empty() ? ", with no effect doing work" : ", with the effects that do work: " + names) + ".");
-    } catch (const SceneError&) {
-      // a state neither fixes: the states' figure says which
-    }
-    // which effects store energy (those whose V the balance holds)
-    const std::vector<std::string>& potentials = b.stored;
-    Spans intro;
-    if (b.conservative) {
-      intro = {W("No non-conservative effect does work between states " + S1 + " and " + S2 + ", so "),
-               N(tex_at("T", S1) + " + " + tex_at("V", S1) + " = " + tex_at("T", S2) + " + " + tex_at("V", S2),
-                 text_at("T", S1) + " + " + text_at("V", S1) + " = " + text_at("T", S2) + " + " + text_at("V", S2)),
-               W(".")};
-    } else {
-      intro = {W("The principle of work and energy between states " + S1 + " and " + S2 + ": "),
-               N(tex_at("T", S1) + " + " + tex_at("V", S1) + " + " + U_tex + " = " + tex_at("T", S2) + " + " + tex_at("V", S2),
-                 text_at("T", S1) + " + " + text_at("V", S1) + " + " + U_text + " = " + text_at("T", S2) + " + " +
-                     text_at("V", S2)),
-               W(", where "), N(U_tex, U_text), W(" is the work of the non-conservative effects.")};
-    }
-    if (a.bodies.size() != m_.bodies.size()) {
-      std::string set;
-      for (std::size_t i = 0; i < a.bodies.size(); ++i)
-        set += std::string(i ? (i + 1 == a.bodies.size() ? " and " : ", ") : "") + m_.bodies[a.bodies[i]].name;
-      intro.insert(intro.begin(), W("Bodies: " + set + ", isolated from the rest: T is their kinetic energy, and the rest acts on them "
-                                    "through the effects that cross the boundary. "));
-    }
-    if (!potentials.empty()) {
-      std::string list;
-      for (std::size_t i = 0; i < potentials.size(); ++i)
-        list += std::string(i ? (i + 1 == potentials.size() ? " and " : ", ") : "") + potentials[i];
-      intro.push_back(W(" The potential energy V is that of " + list + "."));
-    }
-    para(intro);
-    para({W("At state " + S1 + ", with the values given there:")});
-    std::vector<Row> r;
-    r.push_back(tags.row({T(S1), Math::of(sub(b.at_from.T))}));
-    r.push_back(tags.row({V(S1), Math::of(sub(b.at_from.V))}));
-    rows(r);
-    if (!b.works.empty()) {
-      para({W(b.works.size() == 1 ? "The work of the non-conservative effect:" : "The work of each non-conservative effect:")});
-      r.clear();
-      for (auto& w : b.works)
-        r.push_back(tags.row({Math::notation(U_tex + "^{" + tex_word(w.effect) + "}", U_text + "(" + w.effect + ")"),
-                              Math::of(sub(w.U))}));
-      rows(r);
-      Spans how;
-      for (std::size_t i = 0; i < b.works.size(); ++i) {
-        const auto& w = b.works[i];
-        if (w.how.empty()) continue;
-        how.push_back(W(std::string(how.empty() ? "" : "; ") + w.effect + ": " + w.how));
-      }
-      if (!how.empty()) {
-        how.insert(how.begin(), W("How each work is taken: "));
-        how.push_back(W("."));
-        para(how);
-      }
-    }
-    para({W("At state " + S2 + ":")});
-    r.clear();
-    r.push_back(tags.row({T(S2), Math::of(sub(b.at_to.T))}));
-    r.push_back(tags.row({V(S2), Math::of(sub(b.at_to.V))}));
-    rows(r);
-    para({W(b.conservative ? "So the energy equation reads:" : "So the work\u2013energy equation reads:")});
-    auto [lhs, rhs] = sides(b.equation);
-    Row eq = tags.row({Math::of(lhs), Math::of(rhs)});
-    remember(b.equation, eq.tag);
-    rows({eq});
-  }
-
-  // --- momentum -------------------------------------------------------------------------------
-
-  std::string about_tex(const std::string& about) const {
-    std::string p = about;
-    if (auto dot = p.find('.'); dot != std::string::npos) return tex_name(p.substr(dot + 1));
-    if (m_.body_index(p) >= 0) return "G";
-    return tex_name(p);
-  }
-
-  void section(int k, const model::Analysis& a, const principles::MomentumBalance& mb) override {
-    const std::string S1 = state_name(a.from), S2 = state_name(a.to);
-    bool angular = mb.angular;
-    std::string bodies;
-    for (std::size_t i = 0; i < a.bodies.size(); ++i)
-      bodies += std::string(i ? (i + 1 == a.bodies.size() ? " and " : ", ") : "") + m_.bodies[static_cast<std::size_t>(a.bodies[i])].name;
-    std::string what = angular ? (mb.conserved ? "Conservation of angular momentum" : "Angular impulse and momentum")
-                               : (mb.conserved ? "Conservation of linear momentum" : "Linear impulse and momentum");
-    std::string about = !angular ? "" : m_.body_index(a.about()->text) >= 0 ? "the mass centre of " + a.about()->text : a.about()->text;
-    std::string where = angular ? " about " + about : (a.along() ? " along " + a.along()->name : "");
-    section(what + where + ", states " + text_interval(S1, S2));
-    Tags tags{"M" + std::to_string(k)};
-    std::string dt_tex = "\\int_{" + (digits_only(S1) ? "t_{" + S1 + "}" : "t_{\\mathrm{" + S1 + "}}") + "}^{" +
-                         (digits_only(S2) ? "t_{" + S2 + "}" : "t_{\\mathrm{" + S2 + "}}") + "}";
-    if (angular) {
-      std::string P = about_tex(a.about()->text);
-      std::string H = "H_{" + P + "}";
-      para({W("Bodies: " + bodies + ". The angular momentum about " + about + " is "),
-            N(H + " = \\sum \\left(\\bar{I}\\omega + (\\bar{r} - r_{" + P + "})\\times m\\bar{v}\\right)",
-              "H = Σ (I*omega + (r_G - r_" + a.about()->text + ") × m*v)"),
-            W(", and "),
-            mb.conserved ? N(tex_at(H, S1) + " = " + tex_at(H, S2), text_at("H", S1) + " = " + text_at("H", S2))
-                         : N(tex_at(H, S1) + " + \\sum " + dt_tex + " M_{" + P + "}\\,dt = " + tex_at(H, S2),
-                             text_at("H", S1) + " + Σ ∫M dt = " + text_at("H", S2)),
-            W(mb.conserved ? " when no effect has a moment about " + about + "." : ".")});
-    } else {
-      para({W("Bodies: " + bodies + ". The linear momentum is "), N("L = \\sum m\\bar{v}", "L = Σ m*v"), W(", and "),
-            mb.conserved ? N(tex_at("L", S1) + " = " + tex_at("L", S2), text_at("L", S1) + " = " + text_at("L", S2))
-                         : N(tex_at("L", S1) + " + \\sum " + dt_tex + " F\\,dt = " + tex_at("L", S2),
-                             text_at("L", S1) + " + Σ ∫F dt = " + text_at("L", S2)),
-            W(mb.conserved ? " along a direction in which no effect has an impulse" : ""),
-            W(mb.components.size() > 1 ? ". Component by component:" : ".")});
-    }
-    if (auto sheet = momentum_diagram(s_, a, a.bodies, mb.shown, &d_.names))
-      figure(std::move(*sheet), "Impulse-momentum diagram of " + bodies + ": the momenta at " + S1 + ", plus the impulses from " + S1 +
-                                    " to " + S2 + ", equal the momenta at " + S2 + ".");
-    for (auto& c : mb.components) {
-      std::string base_tex, base_text, comp;
-      if (angular) {
-        base_tex = "H_{" + about_tex(a.about()->text) + "}";
-        base_text = "H";
-        comp = "about " + about;
-      } else {
-        std::string n = c.name == "x" || c.name == "y" ? c.name : "n";
-        base_tex = "L_{" + n + "}";
-        base_text = "L_" + n;
-        comp = "along " + (c.name == "x" || c.name == "y" ? c.name : c.name + " (n)");
-      }
-      if (mb.components.size() > 1) subsection("Component " + comp);
-      std::vector<Row> r;
-      r.push_back(tags.row({Math::notation(tex_at(base_tex, S1), text_at(base_text, S1)), Math::of(sub(c.before))}));
-      Spans unknowns;
-      for (auto& imp : c.impulses) {
-        ex v = sub(imp.value);
-        bool reaction = imp.kind == principles::ImpulseTerm::Kind::Reaction;
-        std::string F = angular ? "M" : "F";
-        std::string sub_ = angular ? "_{" + about_tex(a.about()->text) + "}" : "_{" + std::string(c.name == "x" || c.name == "y" ? c.name : "n") + "}";
-        if (reaction) {
-          unknowns.push_back(W(std::string(unknowns.empty() ? "" : "; ") + imp.effect + ": " + imp.how + " "));
-          unknowns.push_back(M(v));
-          continue;
-        }
-        if (imp.kind == principles::ImpulseTerm::Kind::Given) {
-          r.push_back(tags.row({Math::notation("J" + sub_ + "^{" + tex_word(imp.effect) + "}", "J(" + imp.effect + ")"), Math::of(v)}));
-          continue;
-        }
-        r.push_back(tags.row({Math::notation(dt_tex + " " + F + sub_ + "^{" + tex_word(imp.effect) + "}\\,dt",
-                                             "∫" + F + " dt (" + imp.effect + ")"),
-                              Math::of(v)}));
-      }
-      r.push_back(tags.row({Math::notation(tex_at(base_tex, S2), text_at(base_text, S2)), Math::of(sub(c.after))}));
-      rows(r);
-      if (!unknowns.empty()) {
-        unknowns.insert(unknowns.begin(), W("Unknown impulses: "));
-        unknowns.push_back(W("."));
-        para(unknowns);
-      }
-      if (mb.conserved)
-        para({W("No effect acting on " + bodies + " has an impulse " + comp + " between states " + S1 + " and " + S2 +
-                " (each effect was checked), so the " + std::string(angular ? "angular" : "linear") + " momentum " + comp +
-                " is conserved:")});
-      else if (c.impulses.empty())
-        para({W("No impulse acts " + comp + ", so the " + std::string(angular ? "angular" : "linear") + " momentum " + comp +
-                " does not change:")});
-      else
-        para({W("So:")});
-      auto [lhs, rhs] = sides(c.equation);
-      Row eq = tags.row({Math::of(lhs), Math::of(rhs)});
-      remember(c.equation, eq.tag);
-      rows({eq});
-    }
-  }
-
-  // --- impact ---------------------------------------------------------------------------------
-
-  void section(int k, const model::Analysis& a, const principles::ImpactBalance& ib) override {
-    const std::string SB = state_name(a.from), SA = state_name(a.to);
-    section("Impact, " + text_interval(SB, SA));
-    Tags tags{"I" + std::to_string(k)};
-    Spans intro{W("During the impact the positions and the time do not change (the state " + SA +
-                  " has the positions of " + SB + "), and only impulsive forces act: ")};
-    bool any = false;
-    for (int ci : a.struck()->contacts) {
-      const auto e = m_.contact(ci);
-      if (any) intro.push_back(W("; "));
-      any = true;
-      intro.push_back(W("the contact " + e.name + " between " + e.a.text + " and " + e.b.text + ", normal "));
-      intro.push_back(N("n = \\left(" + latex(tidy(e.nx)) + ", " + latex(tidy(e.ny)) + "\\right)",
-                        "n = (" + plain(tidy(e.nx)) + ", " + plain(tidy(e.ny)) + ")"));
-      intro.push_back(W(" from the first into the second, coefficient of restitution "));
-      intro.push_back(M(e.e));
-      auto it = a.struck()->impulses.find(e.name);
-      if (it != a.struck()->impulses.end()) {
-        intro.push_back(W(", impulse "));
-        intro.push_back(M(it->second.first));
-        intro.push_back(W(" along n"));
-        if (e.stick) {
-          intro.push_back(W(" and "));
-          intro.push_back(M(it->second.second));
-          intro.push_back(W(" along the tangent (rough: no sliding after)"));
-        }
-      }
-    }
-    for (auto& e : m_.effects)
-      if (const model::Blow* g = e.blow()) {
-        if (any) intro.push_back(W("; "));
-        any = true;
-        intro.push_back(W("the given impulse " + e.name + " at " + g->at.text + ", "));
-        intro.push_back(N("\\left(" + latex(tidy(g->Jx)) + ", " + latex(tidy(g->Jy)) + "\\right)",
-                          "(" + plain(tidy(g->Jx)) + ", " + plain(tidy(g->Jy)) + ")"));
-      }
-    if (!any) intro.push_back(W("none"));
-    intro.push_back(W(". Pins and constraints carry workless impulsive reactions; gravity, springs, couples and "
-                      "forces are not impulsive."));
-    para(intro);
-    // each body the impact moves: momenta before + impulses on it = momenta after
-    for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
-      bool struck = false;
-      for (auto& sh : ib.shown) struck = struck || sh.push.body == static_cast<int>(b);
-      if (!struck) continue;
-      if (auto sheet = momentum_diagram(s_, a, {static_cast<int>(b)}, ib.shown, &d_.names))
-        figure(std::move(*sheet), "Impulse-momentum diagram of " + m_.bodies[b].name + " in the impact: its momenta before (" + SB +
-                                      "), plus the impulses on it, equal its momenta after (" + SA + ").");
-    }
-    if (!ib.momentum.empty()) {
-      para({W("Impulse and momentum along each coordinate q (its generalized momentum changes by the generalized "
-              "impulse), "),
-            N("\\sum_{b}\\left(m\\,\\Delta\\bar{v}\\cdot\\frac{\\partial\\bar{r}}{\\partial q} + \\bar{I}\\,\\Delta\\omega\\,"
-              "\\frac{\\partial\\phi}{\\partial q}\\right) = \\sum J\\cdot\\frac{\\partial r}{\\partial q}",
-              "Σ (m Δv·∂r_G/∂q + I Δω ∂φ/∂q) = Σ J·∂r/∂q"),
-            W(":")});
-      std::vector<Row> r;
-      std::vector<std::string> conserved;
-      Spans order{W("In order, along ")};
-      for (std::size_t i = 0; i < ib.momentum.size(); ++i) {
-        const auto& q = ib.momentum[i];
-        auto [lhs, rhs] = sides(q);
-        Row row = tags.row({Math::of(lhs), Math::of(rhs)});
-        remember(q, row.tag);
-        if (i) order.push_back(W(i + 1 == ib.momentum.size() ? " and " : ", "));
-        order.push_back(M(m_.coords[static_cast<std::size_t>(ib.along[i])].q));
-        if (rhs.is_zero()) conserved.push_back(row.tag);
-        r.push_back(row);
-      }
-      order.push_back(W(":"));
-      para(order);
-      rows(r);
-      if (!conserved.empty()) {
-        std::string list;
-        for (std::size_t i = 0; i < conserved.size(); ++i)
-          list += std::string(i ? (i + 1 == conserved.size() ? " and " : ", ") : "") + "(" + conserved[i] + ")";
-        para({W("In " + list + " no impulse acts along the coordinate, so the generalized momentum along it is "
-                "conserved through the impact.")});
-      }
-    }
-    if (!ib.restitution.empty()) {
-      para({W("At each contact the relative normal velocity reverses, scaled by e: "),
-            N("(v_{B}' - v_{A}')\\cdot n = -e\\,(v_{B} - v_{A})\\cdot n", "(vB' - vA')·n = -e (vB - vA)·n"),
-            W(" (and no relative tangential velocity after, where the contact is rough):")});
-      std::vector<Row> r;
-      for (auto& q : ib.restitution) {
-        auto [lhs, rhs] = sides(q);
-        Row row = tags.row({Math::of(lhs), Math::of(rhs)});
-        remember(q, row.tag);
-        r.push_back(row);
-      }
-      rows(r);
-    }
   }
 
   // --- the system -----------------------------------------------------------------------------

@@ -1,0 +1,114 @@
+// The derivation's section of a linear or an angular momentum analysis (both kinds write it):
+// the momentum at each state and each impulse, component by component, with the set's
+// impulse–momentum diagram.
+#include "common.hpp"
+
+namespace kinergy::analyses {
+
+using GiNaC::ex;
+
+namespace {
+
+/// The TeX of the moment point: a body point by its name, a mass centre G.
+std::string about_tex(const model::Model& m, const std::string& about) {
+  std::string p = about;
+  if (auto dot = p.find('.'); dot != std::string::npos) return emit::tex_name(p.substr(dot + 1));
+  if (m.body_index(p) >= 0) return "G";
+  return emit::tex_name(p);
+}
+
+}  // namespace
+
+/// The section of a linear or an angular momentum analysis: the momentum at each state, each
+/// impulse, component by component, with the impulse–momentum diagram of the set.
+void momentum_section(emit::Sections& w, int k, const model::Analysis& a, const principles::MomentumBalance& mb) {
+  using namespace emit;
+  const Solution& s = w.solution();
+  const model::Model& m = s.model;
+  const std::string S1 = w.state_name(a.from), S2 = w.state_name(a.to);
+  bool angular = mb.angular;
+  const std::string bodies = w.bodies(a);
+  std::string what = angular ? (mb.conserved ? "Conservation of angular momentum" : "Angular impulse and momentum")
+                             : (mb.conserved ? "Conservation of linear momentum" : "Linear impulse and momentum");
+  std::string about = !angular ? "" : m.body_index(a.about()->text) >= 0 ? "the mass centre of " + a.about()->text : a.about()->text;
+  std::string where = angular ? " about " + about : (a.along() ? " along " + a.along()->name : "");
+  w.section(what + where + ", states " + text_interval(S1, S2));
+  Tags tags{"M" + std::to_string(k)};
+  std::string dt_tex = "\\int_{" + (digits_only(S1) ? "t_{" + S1 + "}" : "t_{\\mathrm{" + S1 + "}}") + "}^{" +
+                       (digits_only(S2) ? "t_{" + S2 + "}" : "t_{\\mathrm{" + S2 + "}}") + "}";
+  if (angular) {
+    std::string P = about_tex(m, a.about()->text);
+    std::string H = "H_{" + P + "}";
+    w.para({W("Bodies: " + bodies + ". The angular momentum about " + about + " is "),
+          N(H + " = \\sum \\left(\\bar{I}\\omega + (\\bar{r} - r_{" + P + "})\\times m\\bar{v}\\right)",
+            "H = Σ (I*omega + (r_G - r_" + a.about()->text + ") × m*v)"),
+          W(", and "),
+          mb.conserved ? N(tex_at(H, S1) + " = " + tex_at(H, S2), text_at("H", S1) + " = " + text_at("H", S2))
+                       : N(tex_at(H, S1) + " + \\sum " + dt_tex + " M_{" + P + "}\\,dt = " + tex_at(H, S2),
+                           text_at("H", S1) + " + Σ ∫M dt = " + text_at("H", S2)),
+          W(mb.conserved ? " when no effect has a moment about " + about + "." : ".")});
+  } else {
+    w.para({W("Bodies: " + bodies + ". The linear momentum is "), N("L = \\sum m\\bar{v}", "L = Σ m*v"), W(", and "),
+          mb.conserved ? N(tex_at("L", S1) + " = " + tex_at("L", S2), text_at("L", S1) + " = " + text_at("L", S2))
+                       : N(tex_at("L", S1) + " + \\sum " + dt_tex + " F\\,dt = " + tex_at("L", S2),
+                           text_at("L", S1) + " + Σ ∫F dt = " + text_at("L", S2)),
+          W(mb.conserved ? " along a direction in which no effect has an impulse" : ""),
+          W(mb.components.size() > 1 ? ". Component by component:" : ".")});
+  }
+  w.momentum_figure(a, a.bodies, mb.shown, "Impulse-momentum diagram of " + bodies + ": the momenta at " + S1 + ", plus the impulses from " + S1 +
+                                  " to " + S2 + ", equal the momenta at " + S2 + ".");
+  for (auto& c : mb.components) {
+    std::string base_tex, base_text, comp;
+    if (angular) {
+      base_tex = "H_{" + about_tex(m, a.about()->text) + "}";
+      base_text = "H";
+      comp = "about " + about;
+    } else {
+      std::string n = c.name == "x" || c.name == "y" ? c.name : "n";
+      base_tex = "L_{" + n + "}";
+      base_text = "L_" + n;
+      comp = "along " + (c.name == "x" || c.name == "y" ? c.name : c.name + " (n)");
+    }
+    if (mb.components.size() > 1) w.subsection("Component " + comp);
+    std::vector<Row> r;
+    r.push_back(tags.row({Math::notation(tex_at(base_tex, S1), text_at(base_text, S1)), Math::of(w.sub(c.before))}));
+    Spans unknowns;
+    for (auto& imp : c.impulses) {
+      ex v = w.sub(imp.value);
+      bool reaction = imp.kind == principles::ImpulseTerm::Kind::Reaction;
+      std::string F = angular ? "M" : "F";
+      std::string sub_ = angular ? "_{" + about_tex(m, a.about()->text) + "}" : "_{" + std::string(c.name == "x" || c.name == "y" ? c.name : "n") + "}";
+      if (reaction) {
+        unknowns.push_back(W(std::string(unknowns.empty() ? "" : "; ") + imp.effect + ": " + imp.how + " "));
+        unknowns.push_back(M(v));
+        continue;
+      }
+      if (imp.kind == principles::ImpulseTerm::Kind::Given) {
+        r.push_back(tags.row({Math::notation("J" + sub_ + "^{" + tex_word(imp.effect) + "}", "J(" + imp.effect + ")"), Math::of(v)}));
+        continue;
+      }
+      r.push_back(tags.row({Math::notation(dt_tex + " " + F + sub_ + "^{" + tex_word(imp.effect) + "}\\,dt",
+                                           "∫" + F + " dt (" + imp.effect + ")"),
+                            Math::of(v)}));
+    }
+    r.push_back(tags.row({Math::notation(tex_at(base_tex, S2), text_at(base_text, S2)), Math::of(w.sub(c.after))}));
+    w.rows(r);
+    if (!unknowns.empty()) {
+      unknowns.insert(unknowns.begin(), W("Unknown impulses: "));
+      unknowns.push_back(W("."));
+      w.para(unknowns);
+    }
+    if (mb.conserved)
+      w.para({W("No effect acting on " + bodies + " has an impulse " + comp + " between states " + S1 + " and " + S2 +
+              " (each effect was checked), so the " + std::string(angular ? "angular" : "linear") + " momentum " + comp +
+              " is conserved:")});
+    else if (c.impulses.empty())
+      w.para({W("No impulse acts " + comp + ", so the " + std::string(angular ? "angular" : "linear") + " momentum " + comp +
+              " does not change:")});
+    else
+      w.para({W("So:")});
+    w.rows({w.equation(tags, c.equation)});
+  }
+}
+
+}  // namespace kinergy::analyses
