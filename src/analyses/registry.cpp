@@ -7,7 +7,8 @@
   X(energy)                       \
   X(momentum)                     \
   X(angular_momentum)             \
-  X(impact)
+  X(impact)                       \
+  X(kinetics)
 
 namespace kinergy::analyses {
 #define KINERGY_DECLARE(k) const model::AnalysisKind& k();

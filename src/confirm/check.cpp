@@ -159,6 +159,8 @@ std::vector<Leg> legs(const Solution& s) {
       for (double x : {leg.start.q[i], leg.expect.q[i]})
         if (leg.why_not.empty() && std::isfinite(x) && std::fabs(x) > 0x1p40)
           leg.why_not = m.coords[i].name + " = " + num(x) + " is beyond what a simulation in doubles resolves";
+    if (leg.why_not.empty() && a.type->at_state())
+      leg.why_not = "taken at one state, no motion to run (its accelerations are checked against the equations of motion there)";
     if (!leg.why_not.empty()) {
       out.push_back(leg);
       continue;

@@ -8,6 +8,7 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/confirm/check.hpp"
+#include "kinergy/principles/kinetics.hpp"
 
 namespace kinergy {
 
@@ -54,6 +55,69 @@ std::optional<double> residuals(const Solution& s, std::string& which) {
   return worst;
 }
 
+/// Kinetics at a state, a second way: the accelerations q̈ its Newton–Euler equations gave
+/// against the simulator's equations of motion (Kane's form, compiled apart) at the same state,
+/// and every equation it did not solve (implied by the others) holding at the solution at 50
+/// digits. The accelerations are compared relative to their own size or, where they vanish (a
+/// pendulum at its lowest point), to q̇² of the state.
+/// @throws SceneError (both numbers shown) when they disagree.
+void confirm_kinetics(const Solution& s, const principles::KineticsBalance& kb, const simulate::Leg& leg, const simulate::Options& o,
+                      const std::string& at, Confirmed& c) {
+  const model::Model& m = s.model;
+  const model::Analysis& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
+  const exmap given = m.given_values(), env = m.numeric_environment();
+  simulate::Simulator sim(m, parameter_values(s), o);
+  const std::size_t n = m.coords.size();
+  std::vector<double> y(sim.size(), 0.0), dy(sim.size(), 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    y[i] = leg.start.q[i];
+    y[n + i] = leg.start.qd[i];
+  }
+  sim.rhs(y.data(), leg.start.t, dy.data());
+  double worst = 0, scale = 0;
+  std::string what;
+  std::vector<std::pair<double, double>> pairs;
+  for (std::size_t i = 0; i < n; ++i) {
+    auto v = numerics::evaluate(m.bind(m.coords[i].qdd, a.from).subs(given).subs(s.branch.sol).subs(given), env, 30);
+    if (!v || !v->is_real()) throw SceneError(a.pos, at + ": " + m.coords[i].name + "_ddot has no value at the solution", "report the scene");
+    pairs.push_back({v->to_double(), dy[n + i]});
+    scale = std::max({scale, std::fabs(pairs.back().first), std::fabs(pairs.back().second), y[n + i] * y[n + i]});
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = scale > 0 ? std::fabs(pairs[i].first - pairs[i].second) / scale : 0;
+    if (d > worst || !std::isfinite(d)) {
+      worst = d;
+      std::ostringstream os;
+      os.precision(10);
+      os << m.coords[i].name << "_ddot@" << m.states[static_cast<std::size_t>(a.from)].name << ": Newton-Euler " << pairs[i].first
+         << ", the equations of motion " << pairs[i].second;
+      what = os.str();
+    }
+  }
+  if (!(worst <= kConfirmSimulation))
+    throw SceneError(a.pos, at + " is not confirmed by the equations of motion at that state: " + what + " (relative difference " + num(worst) +
+                                ", more than " + num(kConfirmSimulation) + ")",
+                     "check the supports the scene declares against the coordinates; '--no-confirm' prints the closed form without this check");
+  // the equations it did not solve hold at the solution
+  for (auto& r : kb.rows) {
+    if (r.used) continue;
+    const ex res = (r.equation.lhs - r.equation.rhs).subs(given).subs(s.branch.sol).subs(given);
+    auto v = numerics::evaluate(res, env, 50);
+    auto size = numerics::evaluate(abs(r.equation.lhs.subs(given).subs(s.branch.sol).subs(given)) +
+                                       abs(r.equation.rhs.subs(given).subs(s.branch.sol).subs(given)),
+                                   env, 50);
+    if (!v || !size) continue;
+    const double rel = size->is_zero() ? abs(*v).to_double() : (abs(*v) / *size).to_double();
+    if (rel > kConfirmResidual)
+      throw SceneError(a.pos, at + ": the " + r.equation.label + " does not hold at the solution (off by " + num(rel) + " of its size)",
+                       "report the scene: the solution is not confirmed ('--no-confirm' prints it anyway)");
+  }
+  c.by = "equations of motion";
+  c.difference = std::max(worst, 1e-16);
+  c.tolerance = kConfirmSimulation;
+  c.note = "the simulator's accelerations at the state, and the equations not solved checked at 50 digits";
+}
+
 }  // namespace
 
 void confirm(Solution& s) {
@@ -75,7 +139,18 @@ void confirm(Solution& s) {
                                 m.states[static_cast<std::size_t>(a.to)].name + "'";
     Confirmed c;
     c.analysis = leg.analysis;
-    if (!leg.why_not.empty()) {
+    bool placed = true;  // the state's positions and rates are known (a kinetics analysis needs no leg)
+    for (std::size_t i = 0; i < leg.start.q.size(); ++i) placed = placed && std::isfinite(leg.start.q[i]) && std::isfinite(leg.start.qd[i]);
+    if (const auto* kb = s.balance<principles::KineticsBalance>(static_cast<std::size_t>(leg.analysis)); kb && placed) {
+      const std::string at = "the kinetics at state '" + m.states[static_cast<std::size_t>(a.from)].name + "'";
+      try {
+        confirm_kinetics(s, *kb, leg, o, at, c);
+      } catch (const SceneError&) {
+        throw;
+      } catch (const std::exception& err) {
+        c.note = std::string("not checked against the equations of motion: ") + err.what();
+      }
+    } else if (!leg.why_not.empty()) {
       c.note = "not simulated: " + leg.why_not;
     } else {
       std::optional<simulate::LegCheck> run;

@@ -64,6 +64,8 @@ public:
     solution();
     results();
     if (o_.checks) checks();
+    d_.legend = "Equations are tagged by where they come from: K kinematics, E energy, M momentum, I impact, " + legend_ +
+                "C constraints and conditions, S solution, R results, A claimed answers.";
     return d_;
   }
 
@@ -76,6 +78,7 @@ private:
   exmap given_;
   std::vector<std::string> tag_of_;  ///< tag of each equation of s_.equations where first shown
   int figures_ = 0;
+  std::string legend_;  ///< the tags the analysis kinds add ("N Newton's second law at a state, ")
 
   // --- what an analysis kind writes its section with (Sections: called through it) ------------
 
@@ -93,6 +96,13 @@ private:
   void momentum_figure(const model::Analysis& a, const std::vector<int>& bodies, const std::vector<principles::Shown>& shown,
                        const std::string& caption) override {
     if (auto sheet = momentum_diagram(s_, a, bodies, shown, &d_.names)) figure(std::move(*sheet), caption);
+  }
+  void legend(const std::string& letter, const std::string& meaning) override {
+    const std::string entry = letter + " " + meaning + ", ";
+    if (legend_.find(entry) == std::string::npos) legend_ += entry;
+  }
+  void kinetic_figure(const model::Analysis& a, int body, const std::vector<principles::BodyLoad>& loads, const std::string& caption) override {
+    if (auto sheet = kinetic_diagram(s_, a, body, loads, &d_.names)) figure(std::move(*sheet), caption);
   }
   void rows(std::vector<Row> r) override {
     if (!r.empty()) d_.blocks.push_back({Block::Kind::Equations, "", {}, std::move(r), {}, {}, nullptr});

@@ -118,8 +118,7 @@ std::string html(const Derivation& d, const std::vector<std::string>& animations
      << draw::kAnimationStyle << "</style>\n</head>\n<body>\n<main>\n"
      << "<h1>" << escape(d.title) << "</h1>\n<p class=\"from\">Worked solution from <code>" << escape(d.file) << "</code></p>\n";
   if (!d.description.empty()) os << "<h2>Problem</h2>\n<p>" << escape(d.description) << "</p>\n";
-  os << "<p>Equations are tagged by where they come from: K kinematics, E energy, M momentum, I impact, C constraints and "
-        "conditions, S solution, R results, A claimed answers.</p>\n";
+  os << "<p>" << escape(d.legend) << "</p>\n";
   int section = 0;
   for (auto& b : d.blocks) {
     switch (b.kind) {

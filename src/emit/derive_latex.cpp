@@ -452,8 +452,7 @@ std::string latex(const Derivation& d) {
      << "\\vspace{-6ex}\n"
      << "\\begin{center}\\small Worked solution from \\texttt{" << tex_text(d.file) << "}\\end{center}\n";
   if (!d.description.empty()) os << "\\section*{Problem}\n" << tex_text(d.description) << "\n\n";
-  os << "Equations are tagged by where they come from: K kinematics, E energy, M momentum, I impact, "
-        "C constraints and conditions, S solution, R results, A claimed answers.\n\n";
+  os << tex_text(d.legend) << "\n\n";
   for (auto& b : d.blocks) {
     switch (b.kind) {
       case Block::Kind::Section:

@@ -210,9 +210,7 @@ std::string text(const Derivation& d) {
   os << d.title << "\n" << underline(d.title, "\u2550") << "\n";
   if (!d.description.empty()) os << "\n" << wrap({Span::w(d.description)}, d, 0, kWidth);
   os << "\n"
-     << wrap({Span::w("Equations are tagged by where they come from: K kinematics, E energy, M momentum, I impact, "
-                      "C constraints and conditions, S solution, R results, A claimed answers.")},
-             d, 0, kWidth);
+     << wrap({Span::w(d.legend)}, d, 0, kWidth);
   for (auto& b : d.blocks) {
     switch (b.kind) {
       case Block::Kind::Section:

@@ -30,6 +30,7 @@ static std::string decade(double d) {
 /// "energy 1 -> 2" for analysis i.
 static std::string analysis_name(const Solution& s, int i) {
   const auto& a = s.model.analyses[static_cast<std::size_t>(i)];
+  if (a.type->at_state()) return a.kind + " at " + s.model.states[static_cast<std::size_t>(a.from)].name;
   return a.kind + " " + s.model.states[static_cast<std::size_t>(a.from)].name + " -> " + s.model.states[static_cast<std::size_t>(a.to)].name;
 }
 
@@ -38,6 +39,7 @@ static std::string confirmed_text(const Confirmed& c) {
   const std::string d = c.difference > 0 ? "<= " + decade(c.difference) : "0";
   std::string t = c.by == "simulation"  ? "by simulation, relative difference " + d
                   : c.by == "residuals" ? "by the equations' residuals at 50 digits, relative " + d
+                  : c.by == "equations of motion" ? "by the equations of motion, relative difference " + d
                                         : "not confirmed";
   return t + (c.note.empty() ? "" : " (" + c.note + ")");
 }

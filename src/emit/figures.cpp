@@ -151,9 +151,69 @@ struct Diagram {
     about_point(f, at1);
     return f;
   }
+
+  // the forces and couples on body b at the state, as the free-body diagram shows them
+  draw::Figure free_body(int b, const std::vector<principles::BodyLoad>& loads) const {
+    draw::Figure f;
+    f.set_glyph(g);
+    draw::body(m, at1, b, f, false);
+    const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+    for (auto& l : loads) {
+      if (l.body != b) continue;
+      const double x = solved(l.x), y = solved(l.y);
+      const std::string word = "\\mathrm{" + tex_text(l.effect) + "}";
+      if (!l.M.is_zero()) turning(f, at1(B.x), at1(B.y), solved(l.M), draw::Ink::Force, l.effect, word);
+      if (l.Fx.is_zero() && l.Fy.is_zero()) continue;
+      if (l.unknown) {
+        // a reaction: one arrow along each of its unknowns' directions (F = Σ u ∂F/∂u), named by u
+        for (const ex& u : a.unknowns)
+          if (is_a<symbol>(u) && (l.Fx.has(u) || l.Fy.has(u))) {
+            const std::string name = model::text(u);
+            arrow(f, x, y, solved(l.Fx.diff(ex_to<symbol>(u))), solved(l.Fy.diff(ex_to<symbol>(u))), draw::Ink::Force,
+                  name.substr(0, name.find('@')), latex(u, names));
+          }
+        continue;
+      }
+      arrow(f, x, y, solved(l.Fx), solved(l.Fy), draw::Ink::Force, l.effect, word);
+    }
+    return f;
+  }
+
+  // m ā at the mass centre along the acceleration solved, Ī α round it
+  draw::Figure kinetic(int b) const {
+    draw::Figure f;
+    f.set_glyph(g);
+    draw::body(m, at1, b, f, false);
+    const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+    const double x = at1(B.x), y = at1(B.y);
+    auto acc = [&](const ex& e) { return solved(m.bind(m.d_dt(m.rate(e)), a.from)); };
+    arrow(f, x, y, acc(B.x), acc(B.y), draw::Ink::Momentum, "m a\u0304", "m\\bar{a}");
+    if (at1(B.inertia) > 0) turning(f, x, y, acc(B.angle), draw::Ink::Momentum, "I\u0304 \u03b1", "\\bar{I}\\alpha");
+    return f;
+  }
 };
 
 }  // namespace
+
+std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analysis& a, int body, const std::vector<principles::BodyLoad>& loads,
+                                           const TexSymbols* names) {
+  const model::Model& m = s.model;
+  const std::vector<int> bodies{body};
+  Diagram d{s, m, a, bodies, names, parameter_values(s), {}, {}};
+  try {
+    d.at1 = draw::state_values(m, s.branch.sol, d.params, a.from);
+  } catch (const SceneError&) {
+    return std::nullopt;
+  }
+  d.at2 = d.at1;
+  d.g = draw::glyph_for(m, d.at1);
+  d.len = 5 * d.g;
+  draw::Sheet sheet;
+  sheet.add(d.free_body(body, loads), "free-body diagram");
+  sheet.then("=", "=");
+  sheet.add(d.kinetic(body), "kinetic diagram");
+  return sheet;
+}
 
 std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Analysis& a, const std::vector<int>& bodies,
                                             const std::vector<principles::Shown>& shown, const TexSymbols* names) {

@@ -7,6 +7,7 @@
 
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/latex.hpp"
+#include "kinergy/principles/kinetics.hpp"
 #include "kinergy/principles/momentum.hpp"
 #include "kinergy/problem.hpp"
 
@@ -22,5 +23,12 @@ std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string
 /// state. `names`: TeX names of symbols that need them. None when a state cannot be drawn.
 std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Analysis& a, const std::vector<int>& bodies,
                                           const std::vector<principles::Shown>& shown, const TexSymbols* names);
+
+/// Kinetics at a state, for body `body`: its free-body diagram (each force of `loads` on it at its
+/// point, named — a support's reaction by its unknowns — and each couple round its mass centre)
+/// equal to its kinetic diagram (m ā at the mass centre along the acceleration solved, Ī α round
+/// it). None when the state cannot be drawn.
+std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analysis& a, int body, const std::vector<principles::BodyLoad>& loads,
+                                           const TexSymbols* names);
 
 }  // namespace kinergy::emit

@@ -106,8 +106,11 @@ std::string tex_name(const std::string& full) {
     name = name.substr(0, at);
   }
   if (auto br = name.find('['); br != std::string::npos) name = name.substr(0, br);  // J_hit[before,after]
-  bool dot = false;
-  if (name.size() > 4 && name.compare(name.size() - 4, 4, "_dot") == 0) {
+  bool dot = false, ddot = false;
+  if (name.size() > 5 && name.compare(name.size() - 5, 5, "_ddot") == 0) {
+    ddot = true;
+    name = name.substr(0, name.size() - 5);
+  } else if (name.size() > 4 && name.compare(name.size() - 4, 4, "_dot") == 0) {
     dot = true;
     name = name.substr(0, name.size() - 4);
   }
@@ -128,7 +131,7 @@ std::string tex_name(const std::string& full) {
   if (!rest.empty()) subs.push_back(sub_part(rest));
   for (std::size_t i = 1; i < parts.size(); ++i)
     if (!parts[i].empty()) subs.push_back(sub_part(parts[i]));
-  std::string tex = dot ? "\\dot{" + base + "}" : base;
+  std::string tex = ddot ? "\\ddot{" + base + "}" : dot ? "\\dot{" + base + "}" : base;
   if (!subs.empty()) {
     tex += "_{";
     for (std::size_t i = 0; i < subs.size(); ++i) tex += (i ? "," : "") + subs[i];
@@ -293,7 +296,7 @@ struct Measure {
       }
       if (cmd == "\\sqrt") return arg(style) + 1.0 * k;
       if (cmd == "\\mathrm" || cmd == "\\text" || cmd == "\\mathit" || cmd == "\\operatorname") return 0.95 * arg(style);
-      if (cmd == "\\dot" || cmd == "\\bar" || cmd == "\\hat" || cmd == "\\vec" || cmd == "\\overline") return arg(style);
+      if (cmd == "\\dot" || cmd == "\\ddot" || cmd == "\\bar" || cmd == "\\hat" || cmd == "\\vec" || cmd == "\\overline") return arg(style);
       if (cmd == "\\left" || cmd == "\\right" || cmd == "\\bigl" || cmd == "\\bigr" || cmd == "\\Bigl" ||
           cmd == "\\Bigr" || cmd == "\\Big" || cmd == "\\big") {
         if (i < s.size()) {

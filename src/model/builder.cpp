@@ -59,6 +59,7 @@ static void check_cut(const Node& n) {
 class Builder : public EffectReader {
 public:
   explicit Builder(const scene::SceneDef& d) : d_(d) {}
+  std::set<std::size_t> added_kinetics_;  ///< kinetics analyses added for a result (kinetics_for)
 
   Model run() {
     m_.file = d_.file;
@@ -205,6 +206,7 @@ private:
     for (auto& c : d_.coordinates) {
       reserve(c.name, c.pos, "coordinate");
       reserve(c.name + "_dot", c.pos, "rate");
+      reserve(c.name + "_ddot", c.pos, "second rate");
       units::Unit u = read_at(c.unit, units::parse_unit);
       if (!u.dim.dimensionless() && u.dim != Dimension::length())
         throw SceneError(c.unit.pos, "coordinate '" + c.name + "' has unit '" + c.unit.s +
@@ -215,6 +217,9 @@ private:
       m_.add_symbol(co.qd, co.dim / Dimension::time());
       m_.names_[c.name] = co.q;
       m_.names_[c.name + "_dot"] = co.qd;
+      co.qdd = realsymbol(c.name + "_ddot");
+      m_.add_symbol(co.qdd, co.dim / (Dimension::time() * Dimension::time()));
+      m_.names_[c.name + "_ddot"] = co.qdd;
       m_.coords.push_back(co);
     }
     m_.add_symbol(m_.t, Dimension::time());
@@ -487,16 +492,60 @@ private:
     for (auto& e : m_.effects) e.check(m_, -1, {});
   }
 
+  /// Kinetics at an instant: each support's reaction as generic unknowns (a pin's Rx, Ry, a
+  /// track's N, a relation's F along û; a contact acts in impacts only), and a multiplier λ_k for
+  /// each constraint no effect holds.
+  void instant_unknowns() {
+    const Dimension F = Dimension::mass() * Dimension::length() / (Dimension::time() * Dimension::time());
+    for (auto& e : m_.effects) {
+      auto r = e.reaction(m_);
+      if (!r) continue;
+      std::vector<std::string> parts;
+      switch (r->kind) {
+        case Reaction::Kind::Pin: parts = {"Rx", "Ry"}; break;
+        case Reaction::Kind::Track: parts = {"N"}; break;
+        case Reaction::Kind::Relation: parts = {"F"}; break;
+        case Reaction::Kind::Contact: break;
+      }
+      for (auto& p : parts) {
+        realsymbol x(p + "_" + e.name);
+        m_.add_symbol(x, F);
+        m_.instant_reactions[e.name].push_back(x);
+      }
+    }
+    // λ_k ∂c_k/∂q_i is a generalized force (energy / [q_i]): λ_k has energy / [c_k]
+    const Dimension E = F * Dimension::length();
+    for (std::size_t k = 0; k < m_.constraints.size(); ++k) {
+      realsymbol lam("lambda" + std::to_string(k + 1));
+      m_.add_symbol(lam, E / m_.dimension(m_.constraints[k].first));
+      m_.instant_lambdas.push_back(lam);
+    }
+  }
+
   void states() {
+    instant_unknowns();
     for (auto& sd : d_.states) {
       State s;
       s.name = sd.name;
       s.pos = sd.pos;
       for (auto& c : m_.coords) {
-        realsymbol q(c.name + "@" + sd.name), qd(c.name + "_dot@" + sd.name);
+        realsymbol q(c.name + "@" + sd.name), qd(c.name + "_dot@" + sd.name), qdd(c.name + "_ddot@" + sd.name);
         m_.add_symbol(q, c.dim);
         m_.add_symbol(qd, c.dim / Dimension::time());
+        m_.add_symbol(qdd, c.dim / (Dimension::time() * Dimension::time()));
         s.sym.emplace(c.name, std::make_pair(q, qd));
+        s.instant[c.qdd] = qdd;
+      }
+      for (auto& [name, parts] : m_.instant_reactions)
+        for (auto& g : parts) {
+          realsymbol x(g.get_name() + "@" + sd.name);
+          m_.add_symbol(x, m_.dimension(g));
+          s.instant[g] = x;
+        }
+      for (auto& g : m_.instant_lambdas) {
+        realsymbol x(g.get_name() + "@" + sd.name);
+        m_.add_symbol(x, m_.dimension(g));
+        s.instant[g] = x;
       }
       s.t = realsymbol("t@" + sd.name);
       m_.add_symbol(s.t, Dimension::time());
@@ -558,7 +607,8 @@ private:
   int state_ref(const Node& opts, const std::string& key, const SourcePos& pos, const std::string& kind) {
     const Node* n = opts.get(key);
     if (!n)
-      throw SceneError(pos, kind + " analysis has no '" + key + "'", "write '" + kind + ": {from: 1, to: 2}'");
+      throw SceneError(pos, kind + " analysis has no '" + key + "'",
+                       key == "at" ? "write '" + kind + ": {at: 2}'" : "write '" + kind + ": {from: 1, to: 2}'");
     if (!n->is_scalar()) throw SceneError(n->pos, "'" + key + "' must name a state", "write '" + key + ": 1'");
     int i = m_.state_index(n->scalar);
     if (i < 0) {
@@ -623,7 +673,8 @@ private:
       }
       if (!ad.options.is_map())
         throw SceneError(ad.pos, "'" + ad.kind + "' needs its states", "write '" + ad.kind + ": {from: 1, to: 2}'");
-      std::vector<std::string> keys = {"from", "to"};
+      const bool one = (*kind)->at_state();
+      std::vector<std::string> keys = one ? std::vector<std::string>{"at"} : std::vector<std::string>{"from", "to"};
       for (auto& k : (*kind)->keys()) keys.push_back(k);
       for (auto& [k, v] : ad.options.entries)
         if (std::find(keys.begin(), keys.end(), k.scalar) == keys.end()) {
@@ -636,9 +687,9 @@ private:
       a.kind = ad.kind;
       a.type = *kind;
       a.pos = ad.pos;
-      a.from = state_ref(ad.options, "from", ad.pos, ad.kind);
-      a.to = state_ref(ad.options, "to", ad.pos, ad.kind);
-      if (a.from == a.to)
+      a.from = state_ref(ad.options, one ? "at" : "from", ad.pos, ad.kind);
+      a.to = one ? a.from : state_ref(ad.options, "to", ad.pos, ad.kind);
+      if (!one && a.from == a.to)
         throw SceneError(ad.options.get("to")->pos, "'from' and 'to' are the same state", "name two different states");
       const std::string S1 = m_.states[a.from].name, S2 = m_.states[a.to].name;
       if (auto* b = ad.options.get("bodies")) a.bodies = body_set(*b);
@@ -650,7 +701,7 @@ private:
         a.conserved = c->scalar == "true";
       }
       a.type->read(*this, ad, a);
-      if (!a.instant()) time_order(a);
+      if (!a.instant() && !one) time_order(a);
       if (a.type->takes_reactions()) {
         // supports between the body set and the rest (pins, constraints) carry unknown reactions
         for (auto& e : m_.effects) {
@@ -797,7 +848,61 @@ private:
                            "use " + (units::si_name(f.dim).empty() ? std::string("rad, deg or no unit") : "a unit of " + units::si_name(f.dim)));
         f.unit = u;
       }
+      kinetics_for(f);
       m_.finds.push_back(f);
+    }
+  }
+
+  /// A result that asks for an acceleration or a support's force at a state (alpha(bar)@2,
+  /// Rx(pivot)@2, theta_ddot@2) needs Newton's second law there. Where the scene has no kinetics
+  /// analysis at that state one is added, over the bodies the asked supports act on (none: the
+  /// equations of motion alone give the accelerations); one the scene declares must solve for
+  /// what is asked.
+  void kinetics_for(const Find& f) {
+    const auto& kinds = analysis_kinds();
+    auto kind = std::find_if(kinds.begin(), kinds.end(), [](const AnalysisKind* k) { return k->at_state(); });
+    if (kind == kinds.end()) return;
+    for (std::size_t si = 0; si < m_.states.size(); ++si) {
+      const int S = static_cast<int>(si);
+      std::vector<ex> asked;
+      for (auto& [generic, bound] : m_.states[si].instant)
+        if (f.value.has(bound)) asked.push_back(bound);
+      if (asked.empty()) continue;
+      std::vector<int> bodies;  // the bodies the asked supports act on
+      for (auto& [name, parts] : m_.instant_reactions)
+        for (auto& g : parts)
+          if (f.value.has(m_.states[si].instant.at(g)))
+            if (auto r = m_.effects[static_cast<std::size_t>(m_.effect_index(name))].reaction(m_))
+              for (int b : r->bodies())
+                if (std::find(bodies.begin(), bodies.end(), b) == bodies.end()) bodies.push_back(b);
+      auto it = std::find_if(m_.analyses.begin(), m_.analyses.end(), [&](const Analysis& a) { return a.type->at_state() && a.from == S; });
+      if (it == m_.analyses.end()) {
+        Analysis a;
+        a.kind = (*kind)->name;
+        a.type = *kind;
+        a.pos = f.pos;
+        a.from = a.to = S;
+        a.bodies = bodies;
+        std::sort(a.bodies.begin(), a.bodies.end());
+        a.type->read(*this, scene::AnalysisDef{}, a);
+        added_kinetics_.insert(m_.analyses.size());
+        m_.analyses.push_back(a);
+        continue;
+      }
+      Analysis& a = *it;
+      if (added_kinetics_.count(static_cast<std::size_t>(it - m_.analyses.begin()))) {
+        for (int b : bodies)
+          if (std::find(a.bodies.begin(), a.bodies.end(), b) == a.bodies.end()) a.bodies.push_back(b);
+        std::sort(a.bodies.begin(), a.bodies.end());
+        a.unknowns.clear();
+        a.type->read(*this, scene::AnalysisDef{}, a);
+        continue;
+      }
+      for (auto& x : asked)
+        if (std::none_of(a.unknowns.begin(), a.unknowns.end(), [&](const ex& u) { return u.is_equal(x); }))
+          throw SceneError(f.pos, "'" + f.name + "' asks for " + model::text(x) + ", which the kinetics analysis at state '" + m_.states[si].name +
+                                      "' does not solve for: the support acts on no body of its 'bodies'",
+                           "list in that analysis' 'bodies' a body the support holds, or leave its 'bodies' out (all bodies)");
     }
   }
 

@@ -138,6 +138,16 @@ public:
       if (f == "vy") return vy;
       return sqrt(trig_simplify(vx * vx + vy * vy));
     }
+    if (f == "alpha") return m_.d_dt(m_.omega(body(one("body"))));
+    if (f == "ax" || f == "ay" || f == "a") {
+      // a_P = d v_P / dt (q̈ at the state: kinetics at that instant)
+      auto [vx, vy] = m_.velocity(m_.point(one("P")));
+      ex ax = m_.d_dt(vx), ay = m_.d_dt(vy);
+      if (f == "ax") return ax;
+      if (f == "ay") return ay;
+      return sqrt(ax * ax + ay * ay);
+    }
+    if (f == "Rx" || f == "Ry" || f == "R" || f == "N" || f == "F") return reaction(f, one("support"));
     if (f == "power") {
       int e = m_.effect_index(one("effect"));
       if (e < 0) throw InputError("no effect named '" + args[0] + "'", "name an effect of the scene");
@@ -192,9 +202,35 @@ public:
       return m_.effects[e].impulse_size(m_, ai, x, y);
     }
     throw InputError("unknown function '" + f + "'",
-                     "use T, V, T(body), omega(body), x(P), y(P), vx(P), vy(P), speed(P), power(effect), "
+                     "use T, V, T(body), omega(body), alpha(body), x(P), y(P), vx(P), vy(P), speed(P), ax(P), ay(P), a(P), "
+                     "Rx(pin), Ry(pin), R(pin), N(track), F(constraint), power(effect), "
                      "H(P), H(P, body), px, py, impulse(effect, S1, S2), impulse_x, impulse_y, loss(contact, S1, S2), force(effect, S1, S2) "
                      "or a math function");
+  }
+
+  /// What a support pushes with at an instant (kinetics at a state): a pin's Rx, Ry on its first
+  /// party and R = |(Rx, Ry)|, a track's N along its normal, a constraint's F along û.
+  ex reaction(const std::string& f, const std::string& name) const {
+    int e = m_.effect_index(name);
+    if (e < 0) throw InputError("no effect named '" + name + "'", "name a pin, a track or a constraint of the scene");
+    auto it = m_.instant_reactions.find(name);
+    auto r = m_.effects[e].reaction(m_);
+    const bool pin = r && r->kind == Reaction::Kind::Pin, track = r && r->kind == Reaction::Kind::Track,
+               relation = r && r->kind == Reaction::Kind::Relation;
+    if (it == m_.instant_reactions.end() || (f == "N" && !track) || (f == "F" && !relation) || ((f == "Rx" || f == "Ry" || f == "R") && !pin)) {
+      const std::string forces = pin ? "Rx(" + name + "), Ry(" + name + "), R(" + name + ")"
+                                 : track ? "N(" + name + ")"
+                                 : relation ? "F(" + name + ")"
+                                            : "";
+      const std::string what = pin ? "a pin" : track ? "a track" : relation ? "a constraint" : "no support";
+      throw InputError(f + "(" + name + ") is not a force '" + name + "' exerts: it is " + what,
+                       forces.empty() ? "name a pin, a track or a constraint" : "write " + forces);
+    }
+    const auto& p = it->second;
+    if (f == "Rx") return p[0];
+    if (f == "Ry") return p[1];
+    if (f == "R") return sqrt(p[0] * p[0] + p[1] * p[1]);
+    return p[0];
   }
 
   ex at_state(const ex& e, const std::string& s) override {

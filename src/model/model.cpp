@@ -94,6 +94,13 @@ ex Model::rate(const ex& e) const {
   return r;
 }
 
+ex Model::d_dt(const ex& e) const {
+  // d/dt e(q, q̇, t) = Σ ∂e/∂q_i q̇_i + Σ ∂e/∂q̇_i q̈_i + ∂e/∂t
+  ex r = rate(e);
+  for (auto& c : coords) r += e.diff(c.qd) * c.qdd;
+  return r;
+}
+
 std::pair<ex, ex> Model::position(const PointRef& p) const {
   if (p.body < 0 || p.world_place) return {p.wx, p.wy};
   const Body& b = bodies[p.body];
@@ -223,6 +230,7 @@ ex Model::bind(const ex& e, int s) const {
     m[c.qd] = qd;
   }
   m[t] = st.t;
+  for (auto& [g, v] : st.instant) m[g] = v;
   return e.subs(m);
 }
 

@@ -165,7 +165,8 @@ TEST_CASE("kinergy draw -o FILE.tex: a TikZ picture that pdflatex compiles", "[d
   CHECK(run.ok);
 }
 
-TEST_CASE("every derivation's LaTeX draws its states, and each momentum analysis and impact its impulse-momentum diagram",
+TEST_CASE("every derivation's LaTeX draws its states, each momentum analysis and impact its impulse-momentum diagram, each "
+          "kinetics analysis a free-body diagram of each body",
           "[draw][derive]") {
   int diagrams = 0;
   for (const auto& file : kt::scene_files("derivations")) {
@@ -173,11 +174,16 @@ TEST_CASE("every derivation's LaTeX draws its states, and each momentum analysis
     kinergy::Solution s = kinergy::solve_file(file);
     const std::string tex = kinergy::emit::latex(kinergy::emit::derive(s));
     CHECK(tex.find("The scene at its states") != std::string::npos);
-    std::size_t want = 0;
-    for (auto& a : s.model.analyses) want += a.kind == "energy" ? 0 : 1;
-    std::size_t got = 0;
+    std::size_t want = 0, want_free = 0;
+    for (auto& a : s.model.analyses) {
+      if (a.type->at_state()) want_free += a.bodies.size();
+      else want += a.kind == "energy" ? 0 : 1;
+    }
+    std::size_t got = 0, free = 0;
     for (std::size_t i = tex.find("Impulse-momentum diagram of"); i != std::string::npos; i = tex.find("Impulse-momentum diagram of", i + 1)) ++got;
+    for (std::size_t i = tex.find("Free-body diagram of"); i != std::string::npos; i = tex.find("Free-body diagram of", i + 1)) ++free;
     CHECK(got >= want);
+    CHECK(free == want_free);
     diagrams += static_cast<int>(got);
   }
   CHECK(diagrams >= 40);

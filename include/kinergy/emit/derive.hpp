@@ -72,6 +72,7 @@ struct Block {
 struct Derivation {
   std::string title, description, file;
   std::vector<Block> blocks;
+  std::string legend;       ///< "Equations are tagged by where they come from: K kinematics, …"
   SymbolTexts values_text;  ///< parameter → "9.81 m/s^2" (plain)
   TexSymbols values_tex;    ///< parameter → 9.81\,\mathrm{m/s^{2}}
   TexSymbols names;         ///< symbols whose TeX name would clash with another's

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "kinergy/emit/derive.hpp"
+#include "kinergy/principles/kinetics.hpp"
 #include "kinergy/principles/momentum.hpp"
 #include "kinergy/principles/principles.hpp"
 
@@ -63,8 +64,14 @@ public:
   /// is nothing to draw).
   virtual void momentum_figure(const model::Analysis& a, const std::vector<int>& bodies, const std::vector<principles::Shown>& shown,
                                const std::string& caption) = 0;
+  /// The free-body diagram of `body` at analysis `a`'s state equal to its kinetic diagram (nothing
+  /// when there is nothing to draw).
+  virtual void kinetic_figure(const model::Analysis& a, int body, const std::vector<principles::BodyLoad>& loads, const std::string& caption) = 0;
   /// Displayed equations (nothing when there are none).
   virtual void rows(std::vector<Row> r) = 0;
+  /// Its equations' tag letter and what it stands for, in the legend (after the kinds' own: K
+  /// kinematics, E energy, M momentum, I impact).
+  virtual void legend(const std::string& letter, const std::string& meaning) = 0;
   /// The system's equation `q` is first shown here, under `tag` (the system section refers to it).
   virtual void remember(const principles::Equation& q, const std::string& tag) = 0;
 

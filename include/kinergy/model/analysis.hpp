@@ -27,7 +27,10 @@ public:
   explicit AnalysisKind(std::string n) : name(std::move(n)) {}
   virtual ~AnalysisKind() = default;
 
-  /// The option keys it takes besides `from` and `to`.
+  /// Is it taken at one state (`at`: kinetics at an instant) rather than between two (`from`,
+  /// `to`)? Its analysis then has from = to = that state.
+  virtual bool at_state() const { return false; }
+  /// The option keys it takes besides `from` and `to` (or `at`).
   virtual std::vector<std::string> keys() const { return {}; }
   /// Read its own options (the builder has read from, to, bodies and conserved); add the
   /// unknowns it brings through `r.unknown`.

@@ -33,6 +33,7 @@ struct Coordinate {
   SourcePos pos;
   GiNaC::realsymbol q, qd;  ///< q and q_dot (generic, not bound to a state)
   Dimension dim;
+  GiNaC::realsymbol qdd;    ///< q_ddot (generic): kinetics at an instant
 };
 
 struct Body {
@@ -51,6 +52,9 @@ struct State {
   std::map<std::string, std::pair<GiNaC::realsymbol, GiNaC::realsymbol>> sym;  ///< q → (q@S, q_dot@S)
   GiNaC::realsymbol t;                   ///< t@S
   GiNaC::exmap given;                    ///< state symbol → value (parameters)
+  /// Kinetics at an instant: each generic q̈ and support reaction (Model::instant_reactions,
+  /// instant_lambdas) → its symbol at this state (theta_ddot@2, Rx_pivot@2).
+  GiNaC::exmap instant;
   std::vector<std::pair<ex, SourcePos>> where;  ///< bound conditions (== 0)
 };
 
@@ -172,6 +176,12 @@ public:
   std::vector<Find> finds;
   std::vector<Expect> expects;
   GiNaC::realsymbol t{"t"};
+  /// Kinetics at an instant: what each support pushes with at a state, as generic unknowns — a
+  /// pin's Rx, Ry, a track's N along its normal, a relation's F along û (constraint effects) —
+  /// by effect name; and the multiplier λ_k of each constraint no effect holds (by index; unused
+  /// for one an effect holds). Bound to a state by bind().
+  std::map<std::string, std::vector<GiNaC::realsymbol>> instant_reactions;
+  std::vector<GiNaC::realsymbol> instant_lambdas;
 
   // --- kinematics (generic: coordinates, rates, t) ---
   std::pair<ex, ex> position(const PointRef& p) const;
@@ -179,6 +189,9 @@ public:
   ex omega(int body) const;
   /// d/dt of a generic expression of q and t: Σ ∂e/∂q q̇ + ∂e/∂t.
   ex rate(const ex& e) const;
+  /// The whole time derivative of a generic expression of q, q̇ and t:
+  /// d/dt e = Σ ∂e/∂q q̇ + Σ ∂e/∂q̇ q̈ + ∂e/∂t (an acceleration from a velocity).
+  ex d_dt(const ex& e) const;
   /// The rates q̇ as a list (to collect in).
   GiNaC::lst rates() const;
 

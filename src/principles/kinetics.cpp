@@ -1,0 +1,314 @@
+// Newton's second law at a state: the accelerations and the supports' forces at an instant, from
+// the loads the effects declare and the reactions the supports declare (src/model/loads.cpp).
+#include "kinergy/principles/kinetics.hpp"
+
+#include <cmath>
+
+#include "kinergy/common/error.hpp"
+#include "kinergy/model/simplify.hpp"
+
+namespace kinergy::principles {
+
+using namespace GiNaC;
+using model::Analysis;
+using model::Effect;
+using model::Model;
+using model::PointRef;
+using model::Reaction;
+
+namespace {
+
+/// Does effect e act at state s? @throws SceneError when it switches there (its force jumps).
+bool acts_at(const Model& m, const Effect& e, const Analysis& a) {
+  const int s = a.from;
+  if (e.on == s || e.off == s)
+    throw SceneError(a.pos, "effect '" + e.name + "' switches " + (e.on == s ? "on" : "off") + " at state '" + m.states[s].name +
+                                "', so its force jumps there and the accelerations at that instant are not one value",
+                     "take the kinetics at a state just before or after it");
+  return (e.on < 0 || e.on < s) && (e.off < 0 || s < e.off);
+}
+
+/// Does the reaction act on a body of the set?
+bool touches(const Reaction& r, const std::vector<int>& set) {
+  for (int b : r.bodies())
+    if (std::find(set.begin(), set.end(), b) != set.end()) return true;
+  return false;
+}
+
+bool is_body(const PointRef& p) { return p.body >= 0 && !p.ground; }
+
+/// The generic unknowns: q̈, the reactions of the supports on the set (a constraint effect's
+/// always: its force enters Lagrange's equations), the multipliers of the constraints no effect holds.
+std::vector<ex> generic_unknowns(const Model& m, const Analysis& a) {
+  std::vector<ex> u;
+  for (auto& c : m.coords) u.push_back(c.qdd);
+  for (auto& e : m.effects) {
+    auto r = e.reaction(m);
+    if (!r || !acts_at(m, e, a)) continue;
+    if (r->kind == Reaction::Kind::Relation || touches(*r, a.bodies))
+      if (auto it = m.instant_reactions.find(e.name); it != m.instant_reactions.end()) u.insert(u.end(), it->second.begin(), it->second.end());
+  }
+  for (std::size_t k = 0; k < m.constraints.size(); ++k)
+    if (!m.carrier(k) && m.constraint_at(k, a.from, true)) u.push_back(m.instant_lambdas[k]);
+  return u;
+}
+
+/// Every force and couple on the bodies (generic): the effects' loads (a load's partner takes
+/// −F, −M: Newton's third law) and the supports' reactions.
+std::vector<BodyLoad> body_loads(const Model& m, const Analysis& a) {
+  std::vector<BodyLoad> out;
+  auto put = [&](const std::string& name, const PointRef& p, const ex& Fx, const ex& Fy, const ex& M, bool unknown) {
+    if (!is_body(p)) return;
+    auto [x, y] = m.position(p);
+    out.push_back({name, p.body, x, y, Fx, Fy, M, unknown});
+  };
+  for (auto& e : m.effects) {
+    if (!acts_at(m, e, a)) continue;
+    for (const model::Load& l : e.loads(m)) {
+      ex Fx = l.Fx, Fy = l.Fy, M = l.M;
+      switch (l.kind) {
+        case model::Load::Kind::Given: break;
+        case model::Load::Kind::Slide: {
+          // kinetic friction: −size v̂_rel at the point, against its slip over the partner
+          auto [vx, vy] = model::relative_velocity(m, l);
+          ex v = sqrt(vx * vx + vy * vy);
+          Fx = -l.size * vx / v;
+          Fy = -l.size * vy / v;
+          M = 0;
+          break;
+        }
+        case model::Load::Kind::Turn: {
+          // a friction couple −size sgn(ω_rel)
+          ex w = model::relative_omega(m, l);
+          Fx = Fy = 0;
+          M = -l.size * w / sqrt(w * w);
+          break;
+        }
+      }
+      put(e.name, l.at, Fx, Fy, M, false);
+      if (l.partner) put(e.name, *l.partner, -Fx, -Fy, -M, false);
+    }
+    auto r = e.reaction(m);
+    auto it = m.instant_reactions.find(e.name);
+    if (!r || it == m.instant_reactions.end()) continue;
+    const auto& u = it->second;
+    switch (r->kind) {
+      case Reaction::Kind::Pin: {
+        // R = (Rx, Ry) on its first party that is a body (what a textbook asks: the pin's force on
+        // the bar), −R on the other
+        const bool a_first = is_body(r->a);
+        put(e.name, a_first ? r->a : r->b, u[0], u[1], 0, true);
+        put(e.name, a_first ? r->b : r->a, -u[0], -u[1], 0, true);
+        break;
+      }
+      case Reaction::Kind::Track:  // N n̂ on party a
+        put(e.name, r->a, u[0] * r->dir_x, u[0] * r->dir_y, 0, true);
+        break;
+      case Reaction::Kind::Relation:  // F û on party a, −F û on party b
+        put(e.name, r->a, u[0] * r->dir_x, u[0] * r->dir_y, 0, true);
+        put(e.name, r->b, -u[0] * r->dir_x, -u[0] * r->dir_y, 0, true);
+        break;
+      case Reaction::Kind::Contact: break;  // impacts only
+    }
+  }
+  return out;
+}
+
+/// The rows, generic: Lagrange's equation along each coordinate, c̈ = 0 for each constraint, and
+/// Newton–Euler for each body of the set.
+std::vector<KineticsBalance::Row> generic_rows(const Model& m, const Analysis& a, const std::vector<BodyLoad>& loads) {
+  using Kind = KineticsBalance::Row::Kind;
+  std::vector<KineticsBalance::Row> rows;
+  const std::string S = m.states[a.from].name;
+  auto row = [&](Kind kind, int body, int coord, const ex& lhs, const ex& rhs, const std::string& label) {
+    rows.push_back({kind, body, coord, {model::trig_simplify(lhs), model::trig_simplify(rhs), "kinetics", label + " at state " + S, a.pos}, false});
+  };
+  // along each coordinate q_i (the supports that the coordinates hold do no virtual work):
+  //   Σ_b m_b a_G·∂r_G/∂q_i + Ī_b α_b ∂φ_b/∂q_i = Σ loads Q_i + Σ relations F û·(∂r_a − ∂r_b)/∂q_i + Σ λ_k ∂c_k/∂q_i
+  for (std::size_t i = 0; i < m.coords.size(); ++i) {
+    const symbol& q = m.coords[i].q;
+    ex lhs = 0, rhs = 0;
+    for (auto& b : m.bodies)
+      lhs += b.mass * (m.d_dt(m.rate(b.x)) * b.x.diff(q) + m.d_dt(m.rate(b.y)) * b.y.diff(q)) +
+             b.inertia * m.d_dt(m.rate(b.angle)) * b.angle.diff(q);
+    for (auto& e : m.effects) {
+      if (!acts_at(m, e, a)) continue;
+      for (const model::Load& l : e.loads(m)) rhs += model::generalized_force(m, l, i);
+      auto r = e.reaction(m);
+      if (!r || r->kind != Reaction::Kind::Relation) continue;
+      auto [dax, day] = m.position_derivative(r->a, q);
+      auto [dbx, dby] = m.position_derivative(r->b, q);
+      rhs += m.instant_reactions.at(e.name)[0] * (r->dir_x * (dax - dbx) + r->dir_y * (day - dby));
+    }
+    for (std::size_t k = 0; k < m.constraints.size(); ++k)
+      if (!m.carrier(k) && m.constraint_at(k, a.from, true)) rhs += m.instant_lambdas[k] * m.constraints[k].first.diff(q);
+    row(Kind::Motion, -1, static_cast<int>(i), lhs, rhs, "equation of motion along " + m.coords[i].name);
+  }
+  // each constraint held at the state keeps holding: c̈ = 0
+  for (std::size_t k = 0; k < m.constraints.size(); ++k)
+    if (m.constraint_at(k, a.from, true))
+      row(Kind::Constraint, -1, static_cast<int>(k), m.d_dt(m.rate(m.constraints[k].first)), 0,
+          "second rate of constraint " + std::to_string(k + 1));
+  // each body of the set: ΣF = m a_G, ΣM_G = Ī α
+  for (int bi : a.bodies) {
+    const model::Body& b = m.bodies[static_cast<std::size_t>(bi)];
+    ex Fx = 0, Fy = 0, MG = 0;
+    for (auto& l : loads) {
+      if (l.body != bi) continue;
+      Fx += l.Fx;
+      Fy += l.Fy;
+      // M_G = (r − r_G) × F + M
+      MG += (l.x - b.x) * l.Fy - (l.y - b.y) * l.Fx + l.M;
+    }
+    row(Kind::ForceX, bi, -1, b.mass * m.d_dt(m.rate(b.x)), Fx, "Newton's second law for " + b.name + " along x");
+    row(Kind::ForceY, bi, -1, b.mass * m.d_dt(m.rate(b.y)), Fy, "Newton's second law for " + b.name + " along y");
+    if (!b.inertia.is_zero()) row(Kind::Moment, bi, -1, b.inertia * m.d_dt(m.rate(b.angle)), MG, "moments about the mass centre of " + b.name);
+  }
+  return rows;
+}
+
+/// A number for a symbol at the sample point (GiNaC evaluation in doubles).
+double number(const ex& e, const exmap& at) {
+  ex v = e.subs(at).evalf();
+  if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nan("");
+  return ex_to<numeric>(v).to_double();
+}
+
+/// Solve the n×n system A u = b in place by Gaussian elimination with partial pivoting.
+std::vector<double> solve_dense(std::vector<std::vector<double>> A, std::vector<double> b) {
+  const std::size_t n = b.size();
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t p = c;
+    for (std::size_t r = c + 1; r < n; ++r)
+      if (std::fabs(A[r][c]) > std::fabs(A[p][c])) p = r;
+    std::swap(A[c], A[p]);
+    std::swap(b[c], b[p]);
+    for (std::size_t r = c + 1; r < n; ++r) {
+      double f = A[r][c] / A[c][c];
+      for (std::size_t k = c; k < n; ++k) A[r][k] -= f * A[c][k];
+      b[r] -= f * b[c];
+    }
+  }
+  std::vector<double> u(n);
+  for (std::size_t c = n; c-- > 0;) {
+    double s = b[c];
+    for (std::size_t k = c + 1; k < n; ++k) s -= A[c][k] * u[k];
+    u[c] = s / A[c][c];
+  }
+  return u;
+}
+
+std::string names_of(const std::vector<ex>& xs) {
+  std::string s;
+  for (std::size_t i = 0; i < xs.size(); ++i) s += (i ? ", " : "") + model::text(xs[i]);
+  return s;
+}
+
+}  // namespace
+
+std::vector<ex> kinetics_unknowns(const Model& m, const Analysis& a) {
+  std::vector<ex> out;
+  for (auto& g : generic_unknowns(m, a)) out.push_back(m.bind(g, a.from));
+  return out;
+}
+
+KineticsBalance kinetics(const Model& m, const Analysis& a, const Knowledge&) {
+  KineticsBalance out;
+  const int S = a.from;
+  out.state = S;
+  out.unknowns = kinetics_unknowns(m, a);
+  std::vector<BodyLoad> loads = body_loads(m, a);
+  out.rows = generic_rows(m, a, loads);
+  for (auto& r : out.rows) r.equation = {m.bind(r.equation.lhs, S), m.bind(r.equation.rhs, S), r.equation.principle, r.equation.label, r.equation.pos};
+  for (auto& l : loads)
+    if (std::find(a.bodies.begin(), a.bodies.end(), l.body) != a.bodies.end())
+      out.loads.push_back({l.effect, l.body, m.bind(l.x, S), m.bind(l.y, S), m.bind(l.Fx, S), m.bind(l.Fy, S), m.bind(l.M, S), l.unknown});
+
+  // a sample point: the parameters' values, the values given at S, and for every other symbol of
+  // the state a fixed sample (the rows are linear in the unknowns: which of them are independent,
+  // and whether the others follow, does not depend on where)
+  exmap at = m.numeric_environment();
+  for (auto& [k, v] : m.states[static_cast<std::size_t>(S)].given) at[k] = v;
+  int j = 0;
+  const model::State& st = m.states[static_cast<std::size_t>(S)];
+  for (auto& c : m.coords)
+    for (const ex& x : {ex(st.sym.at(c.name).first), ex(st.sym.at(c.name).second)})
+      if (!at.count(x)) at[x] = numeric(30 + 17 * (j++), 100);
+  if (!at.count(st.t)) at[st.t] = numeric(1, 3);
+  for (auto& p : m.params)
+    if (p.unknown) at[p.sym] = numeric(1) + numeric(13 * (++j) % 29, 29);
+  exmap zero;
+  for (auto& u : out.unknowns) zero[u] = 0;
+
+  // each row r(u) = A u − b: its coefficients at the sample point
+  const std::size_t n = out.unknowns.size();
+  std::vector<std::vector<double>> A;
+  std::vector<double> b;
+  for (auto& r : out.rows) {
+    ex res = r.equation.lhs - r.equation.rhs;
+    std::vector<double> row;
+    for (auto& u : out.unknowns) row.push_back(number(res.diff(ex_to<symbol>(u)), at));
+    A.push_back(row);
+    b.push_back(-number(res.subs(zero), at));
+  }
+  // independent rows, in order (Lagrange's equations and the constraints first): Gram–Schmidt
+  std::vector<std::vector<double>> basis;
+  std::vector<std::size_t> chosen;
+  for (std::size_t i = 0; i < out.rows.size(); ++i) {
+    std::vector<double> v = A[i];
+    double norm0 = 0;
+    for (double x : v) norm0 += x * x;
+    if (!(norm0 > 0) || !std::isfinite(norm0)) continue;
+    for (auto& e : basis) {
+      double d = 0;
+      for (std::size_t k = 0; k < n; ++k) d += v[k] * e[k];
+      for (std::size_t k = 0; k < n; ++k) v[k] -= d * e[k];
+    }
+    double norm = 0;
+    for (double x : v) norm += x * x;
+    if (norm <= 1e-18 * norm0) continue;
+    for (double& x : v) x /= std::sqrt(norm);
+    basis.push_back(v);
+    chosen.push_back(i);
+  }
+  if (chosen.size() < n) {
+    // the unknowns outside the rows' span are what Newton's law leaves open
+    std::vector<ex> open;
+    for (std::size_t k = 0; k < n; ++k) {
+      double in = 0;
+      for (auto& e : basis) in += e[k] * e[k];
+      if (in < 1 - 1e-9) open.push_back(out.unknowns[k]);
+    }
+    throw SceneError(a.pos, "Newton's second law at state '" + m.states[S].name + "' does not determine " + names_of(open) +
+                                ": the supports on the bodies of this kinetics analysis are more than their motion needs (statically indeterminate)",
+                     "remove a support the coordinates make redundant, or leave out of 'bodies' the body it holds");
+  }
+  std::vector<std::vector<double>> As;
+  std::vector<double> bs;
+  for (std::size_t i : chosen) {
+    As.push_back(A[i]);
+    bs.push_back(b[i]);
+    out.rows[i].used = true;
+  }
+  const std::vector<double> u = solve_dense(As, bs);
+  // every other row follows from the chosen ones, or a force is missing from it
+  for (std::size_t i = 0; i < out.rows.size(); ++i) {
+    if (out.rows[i].used) continue;
+    double lhs = 0, scale = std::fabs(b[i]);
+    for (std::size_t k = 0; k < n; ++k) {
+      lhs += A[i][k] * u[k];
+      scale = std::max(scale, std::fabs(A[i][k] * u[k]));
+    }
+    if (!std::isfinite(lhs) || std::fabs(lhs - b[i]) <= 1e-8 * std::max(scale, 1e-300)) continue;
+    const auto& r = out.rows[i];
+    const std::string who = r.body >= 0 ? m.bodies[static_cast<std::size_t>(r.body)].name : "";
+    throw SceneError(a.pos, r.equation.label + " does not hold with the supports the scene declares: a force the scene does not "
+                                "declare acts on " + (who.empty() ? std::string("the bodies") : who) +
+                                " (its coordinates hold it to a path, or a constraint without an effect acts on it)",
+                     "declare that support (a pin, a track, a constraint effect), or leave " + (who.empty() ? std::string("that body") : who) +
+                         " out of the kinetics analysis' 'bodies'");
+  }
+  return out;
+}
+
+}  // namespace kinergy::principles

@@ -1,0 +1,89 @@
+// Kinetics at an instant (issue 27): Newton's second law at a state. Expected values by hand
+// (the bar: moments about O, I_O alpha = -m g L/2 cos(theta), I_O = m L^2/3; m a_G = R + W), not
+// from kinergy's output.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "../support/helpers.hpp"
+#include "kinergy/confirm/confirm.hpp"
+
+namespace {
+
+using kt::solve_text;
+using GiNaC::ex;
+
+std::string bar_scene() {
+  std::ifstream f(std::string(KINERGY_SOURCE_DIR) + "/derivations/kinetics/bar_released_pin_reaction.yaml");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+double value(const kinergy::Solution& s, const std::string& name) {
+  for (auto& r : s.results)
+    if (r.name == name) return GiNaC::ex_to<GiNaC::numeric>(r.closed.subs(s.model.parameter_values()).evalf()).to_double();
+  FAIL("no result " << name);
+  return 0;
+}
+
+}  // namespace
+
+TEST_CASE("kinetics at an instant: a pinned bar at an angle with a rate, its pin's force by hand", "[kinetics]") {
+  // theta = 30 deg, theta_dot = 2 rad/s (given): alpha = -(3 g/(2 L)) cos(theta);
+  // a_G = (L/2)(-alpha sin - w^2 cos, alpha cos - w^2 sin); R = m a_G - (0, -m g)
+  std::string text = kt::edit(bar_scene(), "2: {theta: -pi/2}", "2: {theta: pi/6, theta_dot: 2 rad/s}");
+  text = kt::edit(text, "  - energy: {from: 1, to: 2}\n", "");
+  text = kt::edit(text, "  omega2: {value: theta_dot@2, root: negative, unit: rad/s}\n", "");
+  auto cut = text.find("expect:");
+  text = text.substr(0, cut);
+  auto s = solve_text(text);
+  const double m = 4, L = 0.9, g = 9.81, th = M_PI / 6, w = 2;
+  const double alpha = -3 * g / (2 * L) * std::cos(th);
+  const double ax = L / 2 * (-alpha * std::sin(th) - w * w * std::cos(th)), ay = L / 2 * (alpha * std::cos(th) - w * w * std::sin(th));
+  CHECK(value(s, "alpha2") == Approx(alpha).epsilon(1e-12));
+  CHECK(value(s, "Rx2") == Approx(m * ax).epsilon(1e-12));
+  CHECK(value(s, "Ry2") == Approx(m * ay + m * g).epsilon(1e-12));
+  kinergy::confirm(s);  // the accelerations against the simulator's equations of motion at the state
+  REQUIRE(s.confirmed.size() == 2);
+  for (auto& c : s.confirmed) CHECK(c.by == "equations of motion");
+}
+
+TEST_CASE("kinetics at an instant: asked without the analysis, it is added at that state", "[kinetics]") {
+  std::string text = bar_scene();
+  text = kt::edit(text, "  - kinetics: {at: 1}\n", "");
+  text = kt::edit(text, "  - kinetics: {at: 2}\n", "");
+  auto s = solve_text(text);
+  CHECK(s.model.analyses.size() == 3);
+  CHECK(value(s, "Ry1") == Approx(4 * 9.81 / 4).epsilon(1e-12));
+  CHECK(value(s, "Ry2") == Approx(5 * 4 * 9.81 / 2).epsilon(1e-12));
+}
+
+TEST_CASE("kinetics at an instant: what is refused", "[kinetics]") {
+  const std::string base = bar_scene().substr(0, bar_scene().find("expect:"));
+  SECTION("a force a support does not exert") {
+    REQUIRE_THROWS_WITH(solve_text(kt::edit(base, "Rx(pivot)@1", "N(pivot)@1")),
+                        Catch::Contains("N(pivot) is not a force 'pivot' exerts: it is a pin") && Catch::Contains("write Rx(pivot), Ry(pivot), R(pivot)"));
+    REQUIRE_THROWS_WITH(solve_text(kt::edit(base, "Rx(pivot)@1", "Rx(gravity)@1")), Catch::Contains("it is no support"));
+  }
+  SECTION("an analysis without its state") {
+    REQUIRE_THROWS_WITH(solve_text(kt::edit(base, "kinetics: {at: 1}", "kinetics: {from: 1}")),
+                        Catch::Contains("unknown key 'from' in kinetics analysis"));
+    REQUIRE_THROWS_WITH(solve_text(kt::edit(base, "kinetics: {at: 1}", "kinetics: {bodies: [bar]}")),
+                        Catch::Contains("kinetics analysis has no 'at'") && Catch::Contains("kinetics: {at: 2}"));
+  }
+  SECTION("a body held to a path by its coordinates with no support declared") {
+    // the bar's pin left out: its coordinates still hold O fixed, Newton's law for it cannot hold
+    std::string text = kt::edit(base, "  pivot: {pin: [O, bar.O]}\n", "");
+    text = kt::edit(text, "  Rx1: {value: Rx(pivot)@1, unit: N}\n  Ry1: {value: Ry(pivot)@1, unit: N}\n", "");
+    text = kt::edit(text, "  Rx2: {value: Rx(pivot)@2, unit: N}\n  Ry2: {value: Ry(pivot)@2, unit: N}\n", "");
+    REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("does not hold with the supports the scene declares") &&
+                                              Catch::Contains("declare that support"));
+  }
+  SECTION("an effect that switches at the state") {
+    std::string text = kt::edit(base, "  gravity: {g: g}\n", "  gravity: {g: g}\n  push: {couple: bar, M: m*g*L, off: 2}\n");
+    REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("effect 'push' switches off at state '2'"));
+  }
+}
