@@ -814,6 +814,10 @@ private:
   }
 
   void finds() {
+    // a condition on a support's force at a state (a contact lost where N(dome)@2 = 0) needs the
+    // kinetics there too
+    for (auto& st : m_.states)
+      for (auto& [e, pos] : st.where) kinetics_for(e, pos, "the condition at state '" + st.name + "'");
     for (auto& fd : d_.finds) {
       Find f;
       f.name = fd.name;
@@ -848,7 +852,7 @@ private:
                            "use " + (units::si_name(f.dim).empty() ? std::string("rad, deg or no unit") : "a unit of " + units::si_name(f.dim)));
         f.unit = u;
       }
-      kinetics_for(f);
+      kinetics_for(f.value, f.pos, "'" + f.name + "'");
       m_.finds.push_back(f);
     }
   }
@@ -858,7 +862,7 @@ private:
   /// analysis at that state one is added, over the bodies the asked supports act on (none: the
   /// equations of motion alone give the accelerations); one the scene declares must solve for
   /// what is asked.
-  void kinetics_for(const Find& f) {
+  void kinetics_for(const ex& value, const SourcePos& pos, const std::string& what) {
     const auto& kinds = analysis_kinds();
     auto kind = std::find_if(kinds.begin(), kinds.end(), [](const AnalysisKind* k) { return k->at_state(); });
     if (kind == kinds.end()) return;
@@ -866,12 +870,12 @@ private:
       const int S = static_cast<int>(si);
       std::vector<ex> asked;
       for (auto& [generic, bound] : m_.states[si].instant)
-        if (f.value.has(bound)) asked.push_back(bound);
+        if (value.has(bound)) asked.push_back(bound);
       if (asked.empty()) continue;
       std::vector<int> bodies;  // the bodies the asked supports act on
       for (auto& [name, parts] : m_.instant_reactions)
         for (auto& g : parts)
-          if (f.value.has(m_.states[si].instant.at(g)))
+          if (value.has(m_.states[si].instant.at(g)))
             if (auto r = m_.effects[static_cast<std::size_t>(m_.effect_index(name))].reaction(m_))
               for (int b : r->bodies())
                 if (std::find(bodies.begin(), bodies.end(), b) == bodies.end()) bodies.push_back(b);
@@ -880,7 +884,7 @@ private:
         Analysis a;
         a.kind = (*kind)->name;
         a.type = *kind;
-        a.pos = f.pos;
+        a.pos = pos;
         a.from = a.to = S;
         a.bodies = bodies;
         std::sort(a.bodies.begin(), a.bodies.end());
@@ -900,7 +904,7 @@ private:
       }
       for (auto& x : asked)
         if (std::none_of(a.unknowns.begin(), a.unknowns.end(), [&](const ex& u) { return u.is_equal(x); }))
-          throw SceneError(f.pos, "'" + f.name + "' asks for " + model::text(x) + ", which the kinetics analysis at state '" + m_.states[si].name +
+          throw SceneError(pos, what + " asks for " + model::text(x) + ", which the kinetics analysis at state '" + m_.states[si].name +
                                       "' does not solve for: the support acts on no body of its 'bodies'",
                            "list in that analysis' 'bodies' a body the support holds, or leave its 'bodies' out (all bodies)");
     }

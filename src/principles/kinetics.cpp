@@ -167,9 +167,10 @@ std::vector<KineticsBalance::Row> generic_rows(const Model& m, const Analysis& a
   return rows;
 }
 
-/// A number for a symbol at the sample point (GiNaC evaluation in doubles).
-double number(const ex& e, const exmap& at) {
-  ex v = e.subs(at).evalf();
+/// A number at the sample point: the state's values, then the parameters' (GiNaC's substitution
+/// is one pass: a state value written in parameters needs the second). NaN where it has none.
+double number(const ex& e, const exmap& state, const exmap& env) {
+  ex v = e.subs(state).subs(env).evalf();
   if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nan("");
   return ex_to<numeric>(v).to_double();
 }
@@ -227,7 +228,8 @@ KineticsBalance kinetics(const Model& m, const Analysis& a, const Knowledge&) {
   // a sample point: the parameters' values, the values given at S, and for every other symbol of
   // the state a fixed sample (the rows are linear in the unknowns: which of them are independent,
   // and whether the others follow, does not depend on where)
-  exmap at = m.numeric_environment();
+  const exmap env = m.numeric_environment();
+  exmap at;
   for (auto& [k, v] : m.states[static_cast<std::size_t>(S)].given) at[k] = v;
   int j = 0;
   const model::State& st = m.states[static_cast<std::size_t>(S)];
@@ -235,8 +237,9 @@ KineticsBalance kinetics(const Model& m, const Analysis& a, const Knowledge&) {
     for (const ex& x : {ex(st.sym.at(c.name).first), ex(st.sym.at(c.name).second)})
       if (!at.count(x)) at[x] = numeric(30 + 17 * (j++), 100);
   if (!at.count(st.t)) at[st.t] = numeric(1, 3);
+  exmap env_all = env;
   for (auto& p : m.params)
-    if (p.unknown) at[p.sym] = numeric(1) + numeric(13 * (++j) % 29, 29);
+    if (p.unknown) env_all[p.sym] = numeric(1) + numeric(13 * (++j) % 29, 29);
   exmap zero;
   for (auto& u : out.unknowns) zero[u] = 0;
 
@@ -247,9 +250,20 @@ KineticsBalance kinetics(const Model& m, const Analysis& a, const Knowledge&) {
   for (auto& r : out.rows) {
     ex res = r.equation.lhs - r.equation.rhs;
     std::vector<double> row;
-    for (auto& u : out.unknowns) row.push_back(number(res.diff(ex_to<symbol>(u)), at));
+    try {
+      for (auto& u : out.unknowns) row.push_back(number(res.diff(ex_to<symbol>(u)), at, env_all));
+      b.push_back(-number(res.subs(zero), at, env_all));
+    } catch (const std::exception& err) {
+      throw SceneError(a.pos, "the kinetics at state '" + m.states[static_cast<std::size_t>(S)].name + "' cannot be taken: the " + r.equation.label +
+                                  " is undefined there (" + model::math_fault(err) + ")",
+                       "a kinetic friction where nothing slides, or a drive at rest, has no force there: take the kinetics at another state");
+    }
+    for (double x : row)
+      if (!std::isfinite(x))
+        throw SceneError(a.pos, "the kinetics at state '" + m.states[static_cast<std::size_t>(S)].name + "' cannot be taken: the " +
+                                    r.equation.label + " has no value at the state's values",
+                         "give the positions and rates at that state, or take the kinetics at another state");
     A.push_back(row);
-    b.push_back(-number(res.subs(zero), at));
   }
   // independent rows, in order (Lagrange's equations and the constraints first): Gram–Schmidt
   std::vector<std::vector<double>> basis;

@@ -87,3 +87,42 @@ TEST_CASE("kinetics at an instant: what is refused", "[kinetics]") {
     REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("effect 'push' switches off at state '2'"));
   }
 }
+
+TEST_CASE("kinetics at an instant: kinetic friction, where it slides and where nothing does", "[kinetics]") {
+  // a block pushed by F0 against kinetic friction mu m g: a = (F0 - mu m g)/m while it slides
+  const std::string text = R"Y(title: block with friction
+parameters: {m: 2 kg, g: 9.81 m/s^2, mu: 0.3, F0: 10 N}
+coordinates: {x: m}
+bodies:
+  block: {mass: m, inertia: particle, position: [x, 0]}
+effects:
+  push: {force: block, F: [F0, 0]}
+  rub: {friction: block, mu: mu, normal: m*g}
+states:
+  1: {x: 0, x_dot: 0}
+  2: {x: 1 m, x_dot: 2 m/s}
+find:
+  a2: {value: x_ddot@2, unit: m/s^2}
+)Y";
+  auto s = solve_text(text);
+  CHECK(value(s, "a2") == Approx((10 - 0.3 * 2 * 9.81) / 2).epsilon(1e-12));
+  // at rest the friction force is not mu N: refused, not a number
+  REQUIRE_THROWS_WITH(solve_text(kt::edit(text, "x_ddot@2", "x_ddot@1")),
+                      Catch::Contains("the kinetics at state '1' cannot be taken") && Catch::Contains("is undefined there") &&
+                          Catch::Contains("a kinetic friction where nothing slides"));
+}
+
+TEST_CASE("kinetics at an instant: a declared analysis must solve for the force asked", "[kinetics]") {
+  // a second bar hangs free (its own pin): the kinetics over bar2 alone does not solve for the
+  // first bar's pin
+  std::string text = bar_scene().substr(0, bar_scene().find("expect:"));
+  text = kt::edit(text, "  pivot: {pin: [O, bar.O]}\n", "  pivot: {pin: [O, bar.O]}\n  pivot2: {pin: [O, bar2.O]}\n");
+  text = kt::edit(text, "effects:\n", "  bar2:\n    mass: m\n    inertia: {slender_rod: L}\n    position: [L/2*cos(phi), L/2*sin(phi)]\n"
+                                      "    angle: phi\n    points: {O: [-L/2, 0]}\neffects:\n");
+  text = kt::edit(text, "  theta: rad\n", "  theta: rad\n  phi: rad\n");
+  text = kt::edit(text, "1: {theta: 0, theta_dot: 0}", "1: {theta: 0, theta_dot: 0, phi: 0, phi_dot: 0}");
+  text = kt::edit(text, "2: {theta: -pi/2}", "2: {theta: -pi/2, phi: 0}");
+  text = kt::edit(text, "  - kinetics: {at: 1}\n", "  - kinetics: {at: 1, bodies: [bar2]}\n");
+  REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("'Rx1' asks for Rx_pivot@1, which the kinetics analysis at state '1' does not solve for") &&
+                                            Catch::Contains("list in that analysis' 'bodies' a body the support holds"));
+}
