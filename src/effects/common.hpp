@@ -111,6 +111,17 @@ inline model::Load couple_on(const Model& m, int b, const ex& M, std::optional<i
   return l;
 }
 
+/// The body a couple acts against (`against: B`: it takes −M), checked to be another body; none
+/// when the option is absent.
+inline std::optional<int> against(EffectReader& r, const EffectDef& ed, int body) {
+  const scene::Node* n = ed.options.get("against");
+  if (!n) return std::nullopt;
+  const int b = r.body_ref(*n, "against");
+  if (b == body)
+    throw SceneError(n->pos, ed.kind + " '" + ed.name + "' acts against the body it turns", "name the other body, which takes the opposite couple");
+  return b;
+}
+
 /// A force F at point `at`; with a partner, −F at that point (an interaction).
 inline model::Load force_at(const PointRef& at, const ex& Fx, const ex& Fy, std::optional<PointRef> partner = std::nullopt) {
   model::Load l;
