@@ -246,7 +246,11 @@ private:
       b.name = bd.name;
       b.pos = bd.pos;
       b.mass = checked(bd.mass, SceneContext::ParamsOnly, M, "mass", "a mass is in kg, g or slug");
-      positive(b.mass, bd.mass.pos, "the mass of '" + bd.name + "'");
+      positive(b.mass, bd.mass.pos, "the mass of '" + bd.name + "'", true);
+      // 0: a light body, no kinetic energy and no weight. A mass that is 0 by its parameters'
+      // values is written 0, so that no closed form divides by it (m g h = m v²/2 would give v
+      // for m = 0, where nothing determines it)
+      if (auto v = value_of(b.mass, bd.mass.pos, "the mass of '" + bd.name + "'"); v && v->is_zero()) b.mass = 0;
       // Ī from the shape (model/inertia.cpp)
       const auto& in = bd.inertia;
       const InertiaShape& shape = inertia_shape(in.kind);

@@ -162,7 +162,10 @@ std::vector<KineticsBalance::Row> generic_rows(const Model& m, const Analysis& a
     }
     row(Kind::ForceX, bi, -1, b.mass * m.d_dt(m.rate(b.x)), Fx, "Newton's second law for " + b.name + " along x");
     row(Kind::ForceY, bi, -1, b.mass * m.d_dt(m.rate(b.y)), Fy, "Newton's second law for " + b.name + " along y");
-    if (!b.inertia.is_zero()) row(Kind::Moment, bi, -1, b.inertia * m.d_dt(m.rate(b.angle)), MG, "moments about the mass centre of " + b.name);
+    // (a particle's forces all act at its centre: 0 = 0, not written; a light body's moments
+    // balance, 0 = ΣM_G)
+    const ex lhs = b.inertia * m.d_dt(m.rate(b.angle));
+    if (!lhs.is_zero() || !model::trig_simplify(MG).is_zero()) row(Kind::Moment, bi, -1, lhs, MG, "moments about the mass centre of " + b.name);
   }
   return rows;
 }

@@ -126,3 +126,35 @@ TEST_CASE("kinetics at an instant: a declared analysis must solve for the force 
   REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("'Rx1' asks for Rx_pivot@1, which the kinetics analysis at state '1' does not solve for") &&
                                             Catch::Contains("list in that analysis' 'bodies' a body the support holds"));
 }
+
+TEST_CASE("a light body (mass 0): energy and kinetics hold, what is not determined is said", "[kinetics]") {
+  // a ball on a light rod: omega^2 = 2 g/L at the lowest point (by hand), and a light flap with
+  // its own coordinate whose rate nothing determines
+  const std::string text = R"Y(title: a light flap
+parameters: {m: 2 kg, L: 0.8 m, g: 9.81 m/s^2}
+points: {O: [0, 0]}
+coordinates: {theta: rad, phi: rad}
+bodies:
+  ball: {mass: m, inertia: particle, position: [L*cos(theta), L*sin(theta)]}
+  flap: {mass: 0, inertia: {slender_rod: L}, position: [L/2*cos(phi), L/2*sin(phi)], angle: phi}
+effects:
+  gravity: {g: g}
+states:
+  1: {theta: 0, theta_dot: 0, phi: 0, phi_dot: 1 rad/s}
+  2: {theta: -pi/2}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  w2: {value: theta_dot@2, root: negative, unit: rad/s}
+)Y";
+  auto s = solve_text(text);
+  CHECK(value(s, "w2") == Approx(-std::sqrt(2 * 9.81 / 0.8)).epsilon(1e-12));
+  kinergy::confirm(s);  // the flap's coordinate moves no mass: not simulated, said, confirmed by the residuals
+  REQUIRE(s.confirmed.size() == 1);
+  CHECK(s.confirmed[0].by == "residuals");
+  CHECK_THAT(s.confirmed[0].note, Catch::Contains("M(q) is not positive definite"));
+  REQUIRE_THROWS_WITH(solve_text(kt::edit(text, "value: theta_dot@2, root: negative", "value: phi_dot@2")),
+                      Catch::Contains("'w2' is not determined: phi_dot@2 is unknown"));
+  // a negative mass is still refused
+  REQUIRE_THROWS_WITH(solve_text(kt::edit(text, "mass: 0,", "mass: -m,")), Catch::Contains("must be zero or positive"));
+}
