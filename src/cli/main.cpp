@@ -419,6 +419,19 @@ struct SimulateCommand {
     int bad = 0;
     for (auto& leg : sim::legs(*sol)) {
       const auto& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
+      if (a.type->at_state()) {
+        // kinetics at a state: its accelerations against the equations of motion there
+        std::cout << a.kind << " at " << m.states[leg.from].name << ": ";
+        try {
+          auto k = kinergy::check_kinetics(*sol, leg.analysis);
+          std::cout << "the accelerations against the equations of motion; largest relative difference " << k.worst
+                    << (k.what.empty() ? "" : " (" + k.what + ")") << (k.ok ? " ok" : " FAILS") << "\n";
+          bad += k.ok ? 0 : 1;
+        } catch (const kinergy::SceneError& e) {
+          std::cout << "not checked: " << e.problem() << "\n";  // a state that does not fix a coordinate
+        }
+        continue;
+      }
       std::cout << a.kind << " " << m.states[leg.from].name << " -> " << m.states[leg.to].name << ": ";
       if (!leg.why_not.empty()) {
         std::cout << "not simulated: " << leg.why_not << "\n";

@@ -55,70 +55,67 @@ std::optional<double> residuals(const Solution& s, std::string& which) {
   return worst;
 }
 
-/// Kinetics at a state, a second way: the accelerations q̈ its Newton–Euler equations gave
-/// against the simulator's equations of motion (Kane's form, compiled apart) at the same state,
-/// and every equation it did not solve (implied by the others) holding at the solution at 50
-/// digits. The accelerations are compared relative to their own size or, where they vanish (a
-/// pendulum at its lowest point), to q̇² of the state.
-/// @throws SceneError (both numbers shown) when they disagree.
-void confirm_kinetics(const Solution& s, const principles::KineticsBalance& kb, const simulate::Leg& leg, const simulate::Options& o,
-                      const std::string& at, Confirmed& c) {
+}  // namespace
+
+KineticsCheck check_kinetics(const Solution& s, int ai) {
   const model::Model& m = s.model;
-  const model::Analysis& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
+  const model::Analysis& a = m.analyses[static_cast<std::size_t>(ai)];
+  const auto* kb = s.balance<principles::KineticsBalance>(static_cast<std::size_t>(ai));
+  if (!kb) throw std::logic_error("check_kinetics: analysis " + std::to_string(ai) + " is not kinetics at a state");
   const exmap given = m.given_values(), env = m.numeric_environment();
-  simulate::Simulator sim(m, parameter_values(s), o);
+  const std::string at = "the kinetics at state '" + m.states[static_cast<std::size_t>(a.from)].name + "'";
+  auto number = [&](const ex& e, int digits) { return numerics::evaluate(e.subs(given).subs(s.branch.sol).subs(given), env, digits); };
+  // the state: its positions and rates as solved
   const std::size_t n = m.coords.size();
+  simulate::Options o;
+  o.native = false;  // the tape: no compiler run for a check
+  simulate::Simulator sim(m, parameter_values(s), o);
   std::vector<double> y(sim.size(), 0.0), dy(sim.size(), 0.0);
+  const model::State& S = m.states[static_cast<std::size_t>(a.from)];
+  auto t = number(S.t, 30);
   for (std::size_t i = 0; i < n; ++i) {
-    y[i] = leg.start.q[i];
-    y[n + i] = leg.start.qd[i];
+    auto q = number(S.sym.at(m.coords[i].name).first, 30), qd = number(S.sym.at(m.coords[i].name).second, 30);
+    if (!q || !qd) throw SceneError(a.pos, at + ": state '" + S.name + "' does not fix " + m.coords[i].name, "give its position and rate there");
+    y[i] = q->to_double();
+    y[n + i] = qd->to_double();
   }
-  sim.rhs(y.data(), leg.start.t, dy.data());
-  double worst = 0, scale = 0;
-  std::string what;
-  std::vector<std::pair<double, double>> pairs;
+  sim.rhs(y.data(), t ? t->to_double() : 0.0, dy.data());
+  // q̈ by Newton–Euler against the equations of motion, relative to the accelerations' size (or
+  // q̇² where they vanish: a pendulum at its lowest point)
+  KineticsCheck c;
+  double scale = 0;
+  std::vector<double> ne(n);
   for (std::size_t i = 0; i < n; ++i) {
-    auto v = numerics::evaluate(m.bind(m.coords[i].qdd, a.from).subs(given).subs(s.branch.sol).subs(given), env, 30);
+    auto v = number(m.bind(m.coords[i].qdd, a.from), 30);
     if (!v || !v->is_real()) throw SceneError(a.pos, at + ": " + m.coords[i].name + "_ddot has no value at the solution", "report the scene");
-    pairs.push_back({v->to_double(), dy[n + i]});
-    scale = std::max({scale, std::fabs(pairs.back().first), std::fabs(pairs.back().second), y[n + i] * y[n + i]});
+    ne[i] = v->to_double();
+    scale = std::max({scale, std::fabs(ne[i]), std::fabs(dy[n + i]), y[n + i] * y[n + i]});
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const double d = scale > 0 ? std::fabs(pairs[i].first - pairs[i].second) / scale : 0;
-    if (d > worst || !std::isfinite(d)) {
-      worst = d;
+    const double d = scale > 0 ? std::fabs(ne[i] - dy[n + i]) / scale : 0;
+    if (d > c.worst || !std::isfinite(d)) {
+      c.worst = d;
       std::ostringstream os;
       os.precision(10);
-      os << m.coords[i].name << "_ddot@" << m.states[static_cast<std::size_t>(a.from)].name << ": Newton-Euler " << pairs[i].first
-         << ", the equations of motion " << pairs[i].second;
-      what = os.str();
+      os << m.coords[i].name << "_ddot@" << S.name << ": Newton-Euler " << ne[i] << ", the equations of motion " << dy[n + i];
+      c.what = os.str();
     }
   }
-  if (!(worst <= kConfirmSimulation))
-    throw SceneError(a.pos, at + " is not confirmed by the equations of motion at that state: " + what + " (relative difference " + num(worst) +
-                                ", more than " + num(kConfirmSimulation) + ")",
-                     "check the supports the scene declares against the coordinates; '--no-confirm' prints the closed form without this check");
+  c.ok = c.worst <= kConfirmSimulation;
   // the equations it did not solve hold at the solution
-  for (auto& r : kb.rows) {
-    if (r.used) continue;
-    const ex res = (r.equation.lhs - r.equation.rhs).subs(given).subs(s.branch.sol).subs(given);
-    auto v = numerics::evaluate(res, env, 50);
-    auto size = numerics::evaluate(abs(r.equation.lhs.subs(given).subs(s.branch.sol).subs(given)) +
-                                       abs(r.equation.rhs.subs(given).subs(s.branch.sol).subs(given)),
-                                   env, 50);
+  for (auto& r : kb->rows) {
+    if (r.used || !c.ok) continue;
+    auto v = number(r.equation.lhs - r.equation.rhs, 50), size = number(abs(r.equation.lhs) + abs(r.equation.rhs), 50);
     if (!v || !size) continue;
     const double rel = size->is_zero() ? abs(*v).to_double() : (abs(*v) / *size).to_double();
-    if (rel > kConfirmResidual)
-      throw SceneError(a.pos, at + ": the " + r.equation.label + " does not hold at the solution (off by " + num(rel) + " of its size)",
-                       "report the scene: the solution is not confirmed ('--no-confirm' prints it anyway)");
+    if (rel > kConfirmResidual) {
+      c.ok = false;
+      c.worst = rel;
+      c.what = "the " + r.equation.label + " does not hold at the solution (off by " + num(rel) + " of its size)";
+    }
   }
-  c.by = "equations of motion";
-  c.difference = std::max(worst, 1e-16);
-  c.tolerance = kConfirmSimulation;
-  c.note = "the simulator's accelerations at the state, and the equations not solved checked at 50 digits";
+  return c;
 }
-
-}  // namespace
 
 void confirm(Solution& s) {
   s.confirmed.clear();
@@ -141,14 +138,26 @@ void confirm(Solution& s) {
     c.analysis = leg.analysis;
     bool placed = true;  // the state's positions and rates are known (a kinetics analysis needs no leg)
     for (std::size_t i = 0; i < leg.start.q.size(); ++i) placed = placed && std::isfinite(leg.start.q[i]) && std::isfinite(leg.start.qd[i]);
-    if (const auto* kb = s.balance<principles::KineticsBalance>(static_cast<std::size_t>(leg.analysis)); kb && placed) {
-      const std::string at = "the kinetics at state '" + m.states[static_cast<std::size_t>(a.from)].name + "'";
+    if (s.balance<principles::KineticsBalance>(static_cast<std::size_t>(leg.analysis)) && placed) {
+      // kinetics at a state: its accelerations against the equations of motion there
+      std::optional<KineticsCheck> k;
       try {
-        confirm_kinetics(s, *kb, leg, o, at, c);
+        k = check_kinetics(s, leg.analysis);
       } catch (const SceneError&) {
         throw;
       } catch (const std::exception& err) {
         c.note = std::string("not checked against the equations of motion: ") + err.what();
+      }
+      if (k && !k->ok)
+        throw SceneError(a.pos, "the kinetics at state '" + m.states[static_cast<std::size_t>(a.from)].name +
+                                    "' is not confirmed by the equations of motion there: " + k->what + " (relative difference " + num(k->worst) +
+                                    ", more than " + num(kConfirmSimulation) + ")",
+                         "check the supports the scene declares against the coordinates; '--no-confirm' prints the closed form without this check");
+      if (k) {
+        c.by = "equations of motion";
+        c.difference = std::max(k->worst, 1e-16);
+        c.tolerance = kConfirmSimulation;
+        c.note = "the simulator's accelerations at the state, and the equations not solved checked at 50 digits";
       }
     } else if (!leg.why_not.empty()) {
       c.note = "not simulated: " + leg.why_not;

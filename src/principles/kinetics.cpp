@@ -10,16 +10,13 @@
 namespace kinergy::principles {
 
 using namespace GiNaC;
-using model::Analysis;
-using model::Effect;
 using model::Model;
-using model::PointRef;
 using model::Reaction;
 
 namespace {
 
 /// Does effect e act at state s? @throws SceneError when it switches there (its force jumps).
-bool acts_at(const Model& m, const Effect& e, const Analysis& a) {
+bool acts_at(const Model& m, const model::Effect& e, const model::Analysis& a) {
   const int s = a.from;
   if (e.on == s || e.off == s)
     throw SceneError(a.pos, "effect '" + e.name + "' switches " + (e.on == s ? "on" : "off") + " at state '" + m.states[s].name +
@@ -35,11 +32,11 @@ bool touches(const Reaction& r, const std::vector<int>& set) {
   return false;
 }
 
-bool is_body(const PointRef& p) { return p.body >= 0 && !p.ground; }
+bool is_body(const model::PointRef& p) { return p.body >= 0 && !p.ground; }
 
 /// The generic unknowns: q̈, the reactions of the supports on the set (a constraint effect's
 /// always: its force enters Lagrange's equations), the multipliers of the constraints no effect holds.
-std::vector<ex> generic_unknowns(const Model& m, const Analysis& a) {
+std::vector<ex> generic_unknowns(const Model& m, const model::Analysis& a) {
   std::vector<ex> u;
   for (auto& c : m.coords) u.push_back(c.qdd);
   for (auto& e : m.effects) {
@@ -55,9 +52,9 @@ std::vector<ex> generic_unknowns(const Model& m, const Analysis& a) {
 
 /// Every force and couple on the bodies (generic): the effects' loads (a load's partner takes
 /// −F, −M: Newton's third law) and the supports' reactions.
-std::vector<BodyLoad> body_loads(const Model& m, const Analysis& a) {
+std::vector<BodyLoad> body_loads(const Model& m, const model::Analysis& a) {
   std::vector<BodyLoad> out;
-  auto put = [&](const std::string& name, const PointRef& p, const ex& Fx, const ex& Fy, const ex& M, bool unknown) {
+  auto put = [&](const std::string& name, const model::PointRef& p, const ex& Fx, const ex& Fy, const ex& M, bool unknown) {
     if (!is_body(p)) return;
     auto [x, y] = m.position(p);
     out.push_back({name, p.body, x, y, Fx, Fy, M, unknown});
@@ -116,7 +113,7 @@ std::vector<BodyLoad> body_loads(const Model& m, const Analysis& a) {
 
 /// The rows, generic: Lagrange's equation along each coordinate, c̈ = 0 for each constraint, and
 /// Newton–Euler for each body of the set.
-std::vector<KineticsBalance::Row> generic_rows(const Model& m, const Analysis& a, const std::vector<BodyLoad>& loads) {
+std::vector<KineticsBalance::Row> generic_rows(const Model& m, const model::Analysis& a, const std::vector<BodyLoad>& loads) {
   using Kind = KineticsBalance::Row::Kind;
   std::vector<KineticsBalance::Row> rows;
   const std::string S = m.states[a.from].name;
@@ -210,13 +207,13 @@ std::string names_of(const std::vector<ex>& xs) {
 
 }  // namespace
 
-std::vector<ex> kinetics_unknowns(const Model& m, const Analysis& a) {
+std::vector<ex> kinetics_unknowns(const Model& m, const model::Analysis& a) {
   std::vector<ex> out;
   for (auto& g : generic_unknowns(m, a)) out.push_back(m.bind(g, a.from));
   return out;
 }
 
-KineticsBalance kinetics(const Model& m, const Analysis& a, const Knowledge&) {
+KineticsBalance kinetics(const Model& m, const model::Analysis& a, const Knowledge&) {
   KineticsBalance out;
   const int S = a.from;
   out.state = S;

@@ -158,3 +158,13 @@ find:
   // a negative mass is still refused
   REQUIRE_THROWS_WITH(solve_text(kt::edit(text, "mass: 0,", "mass: -m,")), Catch::Contains("must be zero or positive"));
 }
+
+TEST_CASE("simulate --check: kinetics at a state against the equations of motion there", "[kinetics][cli]") {
+  int st = 0;
+  const std::string out = kt::run_cli("simulate derivations/kinetics/bar_released_pin_reaction.yaml --check", st);
+  INFO(out);
+  CHECK(st == 0);
+  CHECK_THAT(out, Catch::Contains("kinetics at 1: the accelerations against the equations of motion") &&
+                      Catch::Contains("kinetics at 2: the accelerations against the equations of motion"));
+  CHECK_THAT(out, !Catch::Contains("FAILS") && !Catch::Contains("not checked"));
+}

@@ -18,6 +18,18 @@ constexpr double kConfirmFloor = 1e-6;
 /// Relative size a residual may have at the solution (numeric roots are refined to 40 digits).
 constexpr double kConfirmResidual = 1e-25;
 
+/// Kinetics at a state against the simulator's equations of motion there (Kane's form, compiled
+/// apart): the largest relative difference of the accelerations q̈ (relative to their own size,
+/// or q̇² where they vanish), which one, and whether it is within kConfirmSimulation and every
+/// equation the kinetics did not solve holds at the solution at 50 digits (`what` says which does
+/// not). @throws SceneError when a q̈ has no value at the solution.
+struct KineticsCheck {
+  double worst = 0;
+  std::string what;
+  bool ok = false;
+};
+KineticsCheck check_kinetics(const Solution& s, int analysis);
+
 /// Confirm every analysis of `s`, in order (fills s.confirmed).
 /// @throws SceneError at the analysis whose second way disagrees, showing both numbers.
 void confirm(Solution& s);
