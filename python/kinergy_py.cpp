@@ -239,7 +239,7 @@ PYBIND11_MODULE(kinergy, m) {
               py::dict d;
               d["analysis"] = a.kind + " " + s.s->model.states[static_cast<std::size_t>(a.from)].name + " -> " +
                               s.s->model.states[static_cast<std::size_t>(a.to)].name;
-              d["by"] = c.by.empty() ? py::object(py::none()) : py::object(py::str(c.by));
+              d["by"] = c.by == kinergy::Confirmed::By::None ? py::object(py::none()) : py::object(py::str(kinergy::Confirmed::name(c.by)));
               d["difference"] = c.difference;
               d["note"] = c.note;
               out.append(d);

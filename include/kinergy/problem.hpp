@@ -68,9 +68,12 @@ constexpr int kRootDigits = 35;
 /// How one analysis was confirmed a second way (kinergy/confirm.hpp), or why it could not be.
 struct Confirmed {
   int analysis = -1;
-  /// "simulation", "residuals" (the equations at the solution, at 50 digits), or "" (not confirmed:
-  /// `note` says why)
-  std::string by;
+  /// How: by a simulation of the same scene, by the equations' residuals at the solution at 50
+  /// digits, by the equations of motion at a state (kinetics), or not at all (`note` says why).
+  enum class By { None, Simulation, Residuals, EquationsOfMotion };
+  By by = By::None;
+  /// Its name in JSON and the Python module: "simulation", "residuals", "equations of motion", "".
+  static std::string name(By b);
   double difference = 0;  ///< the largest relative difference found
   double tolerance = 0;   ///< what it was checked against
   std::string note;       ///< how the simulation stood for the analysis (a nudge), or why none could

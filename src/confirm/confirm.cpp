@@ -57,6 +57,16 @@ std::optional<double> residuals(const Solution& s, std::string& which) {
 
 }  // namespace
 
+std::string Confirmed::name(By b) {
+  switch (b) {
+    case By::Simulation: return "simulation";
+    case By::Residuals: return "residuals";
+    case By::EquationsOfMotion: return "equations of motion";
+    case By::None: break;
+  }
+  return "";
+}
+
 KineticsCheck check_kinetics(const Solution& s, int ai) {
   const model::Model& m = s.model;
   const model::Analysis& a = m.analyses[static_cast<std::size_t>(ai)];
@@ -154,7 +164,7 @@ void confirm(Solution& s) {
                                     ", more than " + num(kConfirmSimulation) + ")",
                          "check the supports the scene declares against the coordinates; '--no-confirm' prints the closed form without this check");
       if (k) {
-        c.by = "equations of motion";
+        c.by = Confirmed::By::EquationsOfMotion;
         c.difference = std::max(k->worst, 1e-16);
         c.tolerance = kConfirmSimulation;
         c.note = "the simulator's accelerations at the state, and the equations not solved checked at 50 digits";
@@ -188,7 +198,7 @@ void confirm(Solution& s) {
         c.note = std::string("not simulated: ") + err.what();
       }
       if (run && run->ok) {
-        c.by = "simulation";
+        c.by = Confirmed::By::Simulation;
         c.difference = run->worst;
         c.tolerance = kConfirmSimulation;
         c.note = run->note;
@@ -217,14 +227,14 @@ void confirm(Solution& s) {
                          "'--no-confirm' prints the closed form without this check");
       }
     }
-    if (c.by.empty()) {
+    if (c.by == Confirmed::By::None) {
       if (!residual) residual = residuals(s, residual_of);
       if (*residual && **residual > kConfirmResidual)
         throw SceneError(a.pos, between + ": the equations do not hold at the solution found: the " + residual_of + " is off by " +
                                     num(**residual) + " of its size at 50 digits",
                          "report the scene: the solution is not confirmed ('--no-confirm' prints it anyway)");
       if (*residual) {
-        c.by = "residuals";
+        c.by = Confirmed::By::Residuals;
         // below 1e-30 a residual at 50 digits is the rounding of its terms, whose order (and so
         // the last digits) GiNaC may pick differently from run to run: said as 1e-30
         c.difference = std::max(**residual, 1e-30);

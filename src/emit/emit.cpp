@@ -37,9 +37,10 @@ static std::string analysis_name(const Solution& s, int i) {
 /// How an analysis was confirmed, in words.
 static std::string confirmed_text(const Confirmed& c) {
   const std::string d = c.difference > 0 ? "<= " + decade(c.difference) : "0";
-  std::string t = c.by == "simulation"  ? "by simulation, relative difference " + d
-                  : c.by == "residuals" ? "by the equations' residuals at 50 digits, relative " + d
-                  : c.by == "equations of motion" ? "by the equations of motion, relative difference " + d
+  using By = Confirmed::By;
+  std::string t = c.by == By::Simulation          ? "by simulation, relative difference " + d
+                  : c.by == By::Residuals         ? "by the equations' residuals at 50 digits, relative " + d
+                  : c.by == By::EquationsOfMotion ? "by the equations of motion, relative difference " + d
                                         : "not confirmed";
   return t + (c.note.empty() ? "" : " (" + c.note + ")");
 }
@@ -105,7 +106,8 @@ std::string json(const Solution& s, const Options& o, const std::vector<verify::
     for (std::size_t i = 0; i < s.confirmed.size(); ++i) {
       const Confirmed& c = s.confirmed[i];
       os << (i ? ", " : "") << "{\"analysis\": " << quote(analysis_name(s, c.analysis)) << ", \"by\": "
-         << (c.by.empty() ? std::string("null") : quote(c.by)) << ", \"within\": " << (c.by.empty() ? std::string("null") : quote(decade(c.difference)))
+         << (c.by == Confirmed::By::None ? std::string("null") : quote(Confirmed::name(c.by))) << ", \"within\": "
+         << (c.by == Confirmed::By::None ? std::string("null") : quote(decade(c.difference)))
          << ", \"note\": " << quote(c.note) << "}";
     }
     os << "]";

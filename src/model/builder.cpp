@@ -212,12 +212,11 @@ private:
         throw SceneError(c.unit.pos, "coordinate '" + c.name + "' has unit '" + c.unit.s +
                                          "'; a coordinate is a length or an angle",
                          "write 'm' (or ft, in …) or 'rad'");
-      Coordinate co{c.name, c.pos, realsymbol(c.name), realsymbol(c.name + "_dot"), u.dim};
+      Coordinate co{c.name, c.pos, realsymbol(c.name), realsymbol(c.name + "_dot"), u.dim, realsymbol(c.name + "_ddot")};
       m_.add_symbol(co.q, co.dim);
       m_.add_symbol(co.qd, co.dim / Dimension::time());
       m_.names_[c.name] = co.q;
       m_.names_[c.name + "_dot"] = co.qd;
-      co.qdd = realsymbol(c.name + "_ddot");
       m_.add_symbol(co.qdd, co.dim / (Dimension::time() * Dimension::time()));
       m_.names_[c.name + "_ddot"] = co.qdd;
       m_.coords.push_back(co);

@@ -276,9 +276,9 @@ TEST_CASE("option table: each row honoured (solved, confirmed by simulation) or 
       if (err) continue;
       CHECK(s->confirmed.size() == s->model.analyses.size());
       for (auto& c : s->confirmed) {
-        INFO("confirmed by '" << c.by << "': " << c.note);
-        if (r.phrase == "residuals") CHECK(!c.by.empty());
-        else CHECK(c.by == "simulation");
+        INFO("confirmed by '" << kinergy::Confirmed::name(c.by) << "': " << c.note);
+        if (r.phrase == "residuals") CHECK(c.by != kinergy::Confirmed::By::None);
+        else CHECK(c.by == kinergy::Confirmed::By::Simulation);
       }
     } else {
       CHECK(err.has_value());
@@ -354,9 +354,9 @@ TEST_CASE("option table: every option of every analysis kind, honoured or refuse
       CHECK_FALSE(err.has_value());
       if (err) continue;
       for (auto& c : s->confirmed) {
-        INFO("confirmed by '" << c.by << "': " << c.note);
+        INFO("confirmed by '" << kinergy::Confirmed::name(c.by) << "': " << c.note);
         // kinetics at a state: by the equations of motion there (no motion to run)
-        CHECK((c.by == "simulation" || (c.by == "equations of motion" && r.kind == "kinetics")));
+        CHECK((c.by == kinergy::Confirmed::By::Simulation || (c.by == kinergy::Confirmed::By::EquationsOfMotion && r.kind == "kinetics")));
       }
     } else {
       CHECK(err.has_value());

@@ -48,7 +48,7 @@ TEST_CASE("kinetics at an instant: a pinned bar at an angle with a rate, its pin
   CHECK(value(s, "Ry2") == Approx(m * ay + m * g).epsilon(1e-12));
   kinergy::confirm(s);  // the accelerations against the simulator's equations of motion at the state
   REQUIRE(s.confirmed.size() == 2);
-  for (auto& c : s.confirmed) CHECK(c.by == "equations of motion");
+  for (auto& c : s.confirmed) CHECK(c.by == kinergy::Confirmed::By::EquationsOfMotion);
 }
 
 TEST_CASE("kinetics at an instant: asked without the analysis, it is added at that state", "[kinetics]") {
@@ -151,7 +151,7 @@ find:
   CHECK(value(s, "w2") == Approx(-std::sqrt(2 * 9.81 / 0.8)).epsilon(1e-12));
   kinergy::confirm(s);  // the flap's coordinate moves no mass: not simulated, said, confirmed by the residuals
   REQUIRE(s.confirmed.size() == 1);
-  CHECK(s.confirmed[0].by == "residuals");
+  CHECK(s.confirmed[0].by == kinergy::Confirmed::By::Residuals);
   CHECK_THAT(s.confirmed[0].note, Catch::Contains("M(q) is not positive definite"));
   REQUIRE_THROWS_WITH(solve_text(kt::edit(text, "value: theta_dot@2, root: negative", "value: phi_dot@2")),
                       Catch::Contains("'w2' is not determined: phi_dot@2 is unknown"));

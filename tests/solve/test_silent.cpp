@@ -161,7 +161,7 @@ TEST_CASE("finding 7: simulate --check agrees with the right closed form, or say
   auto s = solve("wheel_step_least.yaml");
   kinergy::confirm(s);
   REQUIRE(s.confirmed.size() == 1);
-  CHECK(s.confirmed[0].by == "residuals");
+  CHECK(s.confirmed[0].by == kinergy::Confirmed::By::Residuals);
   CHECK_THAT(s.confirmed[0].note, Catch::Contains("not simulated"));
   CHECK(value(s, "v0_min") == Approx(1.14367827643966).epsilon(1e-13));
 }
@@ -170,7 +170,7 @@ TEST_CASE("confirmation: every analysis a second way, and a disagreement is an e
   auto s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/impact/pendulum_strikes_block.yaml");
   kinergy::confirm(s);
   REQUIRE(s.confirmed.size() == s.model.analyses.size());
-  for (auto& c : s.confirmed) CHECK(c.by == "simulation");
+  for (auto& c : s.confirmed) CHECK(c.by == kinergy::Confirmed::By::Simulation);
   // a ball dropped from h onto a floor (e = 0.5) and asked for its speed rising through h/2:
   // energy alone says sqrt(g h) up, ignoring the bounce; the motion meets h/2 falling, at -sqrt(g h)
   // (and after the bounce never rises above h/4)
