@@ -50,13 +50,14 @@ void section(emit::Sections& w, int k, const model::Analysis& a, const principle
     w.para({W(constraints ? "Along each coordinate, and each constraint's second rate c\u0308 = 0:" : "Along each coordinate:")});
     w.rows(shown);
   }
-  for (int b : a.bodies) {
+  for (const principles::BodyAcceleration& acc : kb.accelerations) {
+    const int b = acc.body;
     shown.clear();
     for (auto kind : {Row::Kind::ForceX, Row::Kind::ForceY, Row::Kind::Moment})
       for (auto& r : group(kind, b)) shown.push_back(w.equation(tags, r.equation));
     if (shown.empty()) continue;
     const std::string name = m.bodies[static_cast<std::size_t>(b)].name;
-    w.kinetic_figure(a, b, kb.loads, "Free-body diagram of " + name + " at state " + S + " (the forces on it) and its kinetic diagram (m a\u0304 and I\u0304 \u03b1): equivalent.");
+    w.kinetic_figure(a, acc, kb.loads, "Free-body diagram of " + name + " at state " + S + " (the forces on it) and its kinetic diagram (m a\u0304 and I\u0304 \u03b1): equivalent.");
     w.para({W("The free body " + m.bodies[static_cast<std::size_t>(b)].name + ": "),
             N("\\sum F_x = m\\,\\bar{a}_x,\\ \\sum F_y = m\\,\\bar{a}_y,\\ \\sum M_G = \\bar{I}\\,\\alpha", "ΣF_x = m a_x, ΣF_y = m a_y, ΣM_G = I α"),
             W(" (those not already implied):")});

@@ -29,6 +29,11 @@ std::pair<int, int> Effect::active_span(const Analysis& a) const {
   return forward ? std::pair<int, int>{start, end} : std::pair<int, int>{end, start};
 }
 
+Effect::AtState Effect::at_state(int s) const {
+  if (on == s || off == s) return AtState::Switches;
+  return (on < 0 || on < s) && (off < 0 || s < off) ? AtState::Acts : AtState::Not;
+}
+
 ex Effect::generalized_force(const Model& m, std::size_t i) const {
   if (conservative()) return -potential(m).diff(m.coords[i].q);  // Q_i = −∂V/∂q_i
   ex Q = 0;                                                       // Q_i = Σ over its loads

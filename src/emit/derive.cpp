@@ -101,8 +101,9 @@ private:
     const std::string entry = letter + " " + meaning + ", ";
     if (legend_.find(entry) == std::string::npos) legend_ += entry;
   }
-  void kinetic_figure(const model::Analysis& a, int body, const std::vector<principles::BodyLoad>& loads, const std::string& caption) override {
-    if (auto sheet = kinetic_diagram(s_, a, body, loads, &d_.names)) figure(std::move(*sheet), caption);
+  void kinetic_figure(const model::Analysis& a, const principles::BodyAcceleration& acc, const std::vector<principles::BodyLoad>& loads,
+                      const std::string& caption) override {
+    if (auto sheet = kinetic_diagram(s_, a, acc, loads, &d_.names)) figure(std::move(*sheet), caption);
   }
   void rows(std::vector<Row> r) override {
     if (!r.empty()) d_.blocks.push_back({Block::Kind::Equations, "", {}, std::move(r), {}, {}, nullptr});

@@ -180,23 +180,24 @@ struct Diagram {
   }
 
   // m ā at the mass centre along the acceleration solved, Ī α round it
-  draw::Figure kinetic(int b) const {
+  draw::Figure kinetic(const principles::BodyAcceleration& acc) const {
+    const int b = acc.body;
     draw::Figure f;
     f.set_glyph(g);
     draw::body(m, at1, b, f, false);
     const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
     const double x = at1(B.x), y = at1(B.y);
-    auto acc = [&](const ex& e) { return solved(m.bind(m.d_dt(m.rate(e)), a.from)); };
-    arrow(f, x, y, acc(B.x), acc(B.y), draw::Ink::Momentum, "m a\u0304", "m\\bar{a}");
-    if (at1(B.inertia) > 0) turning(f, x, y, acc(B.angle), draw::Ink::Momentum, "I\u0304 \u03b1", "\\bar{I}\\alpha");
+    arrow(f, x, y, solved(acc.ax), solved(acc.ay), draw::Ink::Momentum, "m a\u0304", "m\\bar{a}");
+    if (at1(B.inertia) > 0) turning(f, x, y, solved(acc.alpha), draw::Ink::Momentum, "I\u0304 \u03b1", "\\bar{I}\\alpha");
     return f;
   }
 };
 
 }  // namespace
 
-std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analysis& a, int body, const std::vector<principles::BodyLoad>& loads,
-                                           const TexSymbols* names) {
+std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analysis& a, const principles::BodyAcceleration& acc,
+                                           const std::vector<principles::BodyLoad>& loads, const TexSymbols* names) {
+  const int body = acc.body;
   const model::Model& m = s.model;
   const std::vector<int> bodies{body};
   Diagram d{s, m, a, bodies, names, parameter_values(s), {}, {}};
@@ -211,7 +212,7 @@ std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analy
   draw::Sheet sheet;
   sheet.add(d.free_body(body, loads), "free-body diagram");
   sheet.then("=", "=");
-  sheet.add(d.kinetic(body), "kinetic diagram");
+  sheet.add(d.kinetic(acc), "kinetic diagram");
   return sheet;
 }
 

@@ -24,11 +24,11 @@ std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string
 std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Analysis& a, const std::vector<int>& bodies,
                                           const std::vector<principles::Shown>& shown, const TexSymbols* names);
 
-/// Kinetics at a state, for body `body`: its free-body diagram (each force of `loads` on it at its
+/// Kinetics at a state, for the body of `acc`: its free-body diagram (each force of `loads` on it at its
 /// point, named — a support's reaction by its unknowns — and each couple round its mass centre)
 /// equal to its kinetic diagram (m ā at the mass centre along the acceleration solved, Ī α round
 /// it). None when the state cannot be drawn.
-std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analysis& a, int body, const std::vector<principles::BodyLoad>& loads,
-                                           const TexSymbols* names);
+std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analysis& a, const principles::BodyAcceleration& acc,
+                                           const std::vector<principles::BodyLoad>& loads, const TexSymbols* names);
 
 }  // namespace kinergy::emit

@@ -31,32 +31,42 @@ ex relative_angle(const Model& m, const Load& l) { return angle_of(m, l.at) - (l
 
 ex relative_omega(const Model& m, const Load& l) { return m.rate(relative_angle(m, l)); }  // ω_rel = dφ_rel/dt
 
-ex generalized_force(const Model& m, const Load& l, std::size_t i) {
-  const GiNaC::symbol& q = m.coords[i].q;
+Wrench force_of(const Model& m, const Load& l) {
   switch (l.kind) {
-    case Load::Kind::Given: {
-      // Q_i = F·∂(r_at − r_partner)/∂q_i + M ∂(φ_at − φ_partner)/∂q_i
-      auto [dx, dy] = m.position_derivative(l.at, q);
-      if (l.partner) {
-        auto [px, py] = m.position_derivative(*l.partner, q);
-        dx -= px;
-        dy -= py;
-      }
-      return l.Fx * dx + l.Fy * dy + l.M * relative_angle(m, l).diff(q);
-    }
+    case Load::Kind::Given:
+      return {l.Fx, l.Fy, l.M};
     case Load::Kind::Slide: {
-      // F = −size v̂_rel:  Q_i = −size (v_rel·∂v_rel/∂q̇_i)/|v_rel|
+      // kinetic friction: F = −size v̂_rel, against the slip of its point over the partner
       auto [vx, vy] = relative_velocity(m, l);
-      const GiNaC::symbol& qd = m.coords[i].qd;
-      return -l.size * (vx * vx.diff(qd) + vy * vy.diff(qd)) / sqrt(trig_simplify(vx * vx + vy * vy));
+      const ex v = sqrt(trig_simplify(vx * vx + vy * vy));
+      return {-l.size * vx / v, -l.size * vy / v, 0};
     }
     case Load::Kind::Turn: {
-      // M = −size sgn ω_rel:  Q_i = −size ω_rel/|ω_rel| ∂ω_rel/∂q̇_i
-      ex w = relative_omega(m, l);
-      return -l.size * w / abs(w) * w.diff(m.coords[i].qd);
+      // a friction couple: M = −size sgn ω_rel
+      const ex w = relative_omega(m, l);
+      return {0, 0, -l.size * w / abs(w)};
     }
   }
-  return 0;
+  return {};
+}
+
+ex generalized_force(const Model& m, const Load& l, std::size_t i) {
+  const GiNaC::symbol& q = m.coords[i].q;
+  if (l.kind == Load::Kind::Given) {
+    // Q_i = F·∂(r_at − r_partner)/∂q_i + M ∂(φ_at − φ_partner)/∂q_i
+    auto [dx, dy] = m.position_derivative(l.at, q);
+    if (l.partner) {
+      auto [px, py] = m.position_derivative(*l.partner, q);
+      dx -= px;
+      dy -= py;
+    }
+    return l.Fx * dx + l.Fy * dy + l.M * relative_angle(m, l).diff(q);
+  }
+  // a force of the motion: Q_i = F·∂v_rel/∂q̇_i + M ∂ω_rel/∂q̇_i (∂v/∂q̇ = ∂r/∂q)
+  const GiNaC::symbol& qd = m.coords[i].qd;
+  const Wrench f = force_of(m, l);
+  auto [vx, vy] = relative_velocity(m, l);
+  return f.Fx * vx.diff(qd) + f.Fy * vy.diff(qd) + f.M * relative_omega(m, l).diff(qd);
 }
 
 ex power(const Model& m, const Load& l) {

@@ -18,11 +18,12 @@ namespace {
 /// Does effect e act at state s? @throws SceneError when it switches there (its force jumps).
 bool acts_at(const Model& m, const model::Effect& e, const model::Analysis& a) {
   const int s = a.from;
-  if (e.on == s || e.off == s)
+  const auto at = e.at_state(s);
+  if (at == model::Effect::AtState::Switches)
     throw SceneError(a.pos, "effect '" + e.name + "' switches " + (e.on == s ? "on" : "off") + " at state '" + m.states[s].name +
                                 "', so its force jumps there and the accelerations at that instant are not one value",
                      "take the kinetics at a state just before or after it");
-  return (e.on < 0 || e.on < s) && (e.off < 0 || s < e.off);
+  return at == model::Effect::AtState::Acts;
 }
 
 /// Does the reaction act on a body of the set?
@@ -62,28 +63,9 @@ std::vector<BodyLoad> body_loads(const Model& m, const model::Analysis& a) {
   for (auto& e : m.effects) {
     if (!acts_at(m, e, a)) continue;
     for (const model::Load& l : e.loads(m)) {
-      ex Fx = l.Fx, Fy = l.Fy, M = l.M;
-      switch (l.kind) {
-        case model::Load::Kind::Given: break;
-        case model::Load::Kind::Slide: {
-          // kinetic friction: −size v̂_rel at the point, against its slip over the partner
-          auto [vx, vy] = model::relative_velocity(m, l);
-          ex v = sqrt(vx * vx + vy * vy);
-          Fx = -l.size * vx / v;
-          Fy = -l.size * vy / v;
-          M = 0;
-          break;
-        }
-        case model::Load::Kind::Turn: {
-          // a friction couple −size sgn(ω_rel)
-          ex w = model::relative_omega(m, l);
-          Fx = Fy = 0;
-          M = -l.size * w / sqrt(w * w);
-          break;
-        }
-      }
-      put(e.name, l.at, Fx, Fy, M, false);
-      if (l.partner) put(e.name, *l.partner, -Fx, -Fy, -M, false);
+      const model::Wrench f = model::force_of(m, l);
+      put(e.name, l.at, f.Fx, f.Fy, f.M, false);
+      if (l.partner) put(e.name, *l.partner, -f.Fx, -f.Fy, -f.M, false);
     }
     auto r = e.reaction(m);
     auto it = m.instant_reactions.find(e.name);
@@ -113,7 +95,18 @@ std::vector<BodyLoad> body_loads(const Model& m, const model::Analysis& a) {
 
 /// The rows, generic: Lagrange's equation along each coordinate, c̈ = 0 for each constraint, and
 /// Newton–Euler for each body of the set.
-std::vector<KineticsBalance::Row> generic_rows(const Model& m, const model::Analysis& a, const std::vector<BodyLoad>& loads) {
+/// Every body's accelerations (generic): ā = d/dt of its mass centre's velocity, α = dω/dt.
+std::vector<BodyAcceleration> accelerations(const Model& m) {
+  std::vector<BodyAcceleration> out;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    const model::Body& B = m.bodies[b];
+    out.push_back({static_cast<int>(b), m.d_dt(m.rate(B.x)), m.d_dt(m.rate(B.y)), m.d_dt(m.rate(B.angle))});
+  }
+  return out;
+}
+
+std::vector<KineticsBalance::Row> generic_rows(const Model& m, const model::Analysis& a, const std::vector<BodyLoad>& loads,
+                                                const std::vector<BodyAcceleration>& acc) {
   using Kind = KineticsBalance::Row::Kind;
   std::vector<KineticsBalance::Row> rows;
   const std::string S = m.states[a.from].name;
@@ -125,9 +118,10 @@ std::vector<KineticsBalance::Row> generic_rows(const Model& m, const model::Anal
   for (std::size_t i = 0; i < m.coords.size(); ++i) {
     const symbol& q = m.coords[i].q;
     ex lhs = 0, rhs = 0;
-    for (auto& b : m.bodies)
-      lhs += b.mass * (m.d_dt(m.rate(b.x)) * b.x.diff(q) + m.d_dt(m.rate(b.y)) * b.y.diff(q)) +
-             b.inertia * m.d_dt(m.rate(b.angle)) * b.angle.diff(q);
+    for (auto& g : acc) {
+      const model::Body& b = m.bodies[static_cast<std::size_t>(g.body)];
+      lhs += b.mass * (g.ax * b.x.diff(q) + g.ay * b.y.diff(q)) + b.inertia * g.alpha * b.angle.diff(q);
+    }
     for (auto& e : m.effects) {
       if (!acts_at(m, e, a)) continue;
       for (const model::Load& l : e.loads(m)) rhs += model::generalized_force(m, l, i);
@@ -157,11 +151,12 @@ std::vector<KineticsBalance::Row> generic_rows(const Model& m, const model::Anal
       // M_G = (r − r_G) × F + M
       MG += (l.x - b.x) * l.Fy - (l.y - b.y) * l.Fx + l.M;
     }
-    row(Kind::ForceX, bi, -1, b.mass * m.d_dt(m.rate(b.x)), Fx, "Newton's second law for " + b.name + " along x");
-    row(Kind::ForceY, bi, -1, b.mass * m.d_dt(m.rate(b.y)), Fy, "Newton's second law for " + b.name + " along y");
+    const BodyAcceleration& g = acc[static_cast<std::size_t>(bi)];
+    row(Kind::ForceX, bi, -1, b.mass * g.ax, Fx, "Newton's second law for " + b.name + " along x");
+    row(Kind::ForceY, bi, -1, b.mass * g.ay, Fy, "Newton's second law for " + b.name + " along y");
     // (a particle's forces all act at its centre: 0 = 0, not written; a light body's moments
     // balance, 0 = ΣM_G)
-    const ex lhs = b.inertia * m.d_dt(m.rate(b.angle));
+    const ex lhs = b.inertia * g.alpha;
     if (!lhs.is_zero() || !model::trig_simplify(MG).is_zero()) row(Kind::Moment, bi, -1, lhs, MG, "moments about the mass centre of " + b.name);
   }
   return rows;
@@ -219,7 +214,12 @@ KineticsBalance kinetics(const Model& m, const model::Analysis& a, const Knowled
   out.state = S;
   out.unknowns = kinetics_unknowns(m, a);
   std::vector<BodyLoad> loads = body_loads(m, a);
-  out.rows = generic_rows(m, a, loads);
+  const std::vector<BodyAcceleration> acc = accelerations(m);
+  out.rows = generic_rows(m, a, loads, acc);
+  for (int b : a.bodies) {
+    const BodyAcceleration& g = acc[static_cast<std::size_t>(b)];
+    out.accelerations.push_back({b, m.bind(g.ax, S), m.bind(g.ay, S), m.bind(g.alpha, S)});
+  }
   for (auto& r : out.rows) r.equation = {m.bind(r.equation.lhs, S), m.bind(r.equation.rhs, S), r.equation.principle, r.equation.label, r.equation.pos};
   for (auto& l : loads)
     if (std::find(a.bodies.begin(), a.bodies.end(), l.body) != a.bodies.end())

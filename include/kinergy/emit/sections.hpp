@@ -66,7 +66,8 @@ public:
                                const std::string& caption) = 0;
   /// The free-body diagram of `body` at analysis `a`'s state equal to its kinetic diagram (nothing
   /// when there is nothing to draw).
-  virtual void kinetic_figure(const model::Analysis& a, int body, const std::vector<principles::BodyLoad>& loads, const std::string& caption) = 0;
+  virtual void kinetic_figure(const model::Analysis& a, const principles::BodyAcceleration& acc, const std::vector<principles::BodyLoad>& loads,
+                              const std::string& caption) = 0;
   /// Displayed equations (nothing when there are none).
   virtual void rows(std::vector<Row> r) = 0;
   /// Its equations' tag letter and what it stands for, in the legend (after the kinds' own: K

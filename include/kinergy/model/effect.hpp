@@ -109,6 +109,12 @@ std::pair<ex, ex> relative_velocity(const Model& m, const Load& l);
 ex relative_angle(const Model& m, const Load& l);
 /// ω_rel = ω of at's body − ω of the partner's body (0 for a fixed party or none).
 ex relative_omega(const Model& m, const Load& l);
+/// A load's force F and couple M at a generic state: as declared (Given); Slide: F = −size v̂_rel;
+/// Turn: M = −size sgn ω_rel. What every principle takes as the load's push.
+struct Wrench {
+  ex Fx = 0, Fy = 0, M = 0;
+};
+Wrench force_of(const Model& m, const Load& l);
 /// Q_i = F·∂(r_at − r_partner)/∂q_i + M ∂(φ_at − φ_partner)/∂q_i; Slide: −size v̂_rel·∂v_rel/∂q̇_i;
 /// Turn: −size sgn(ω_rel) ∂ω_rel/∂q̇_i.
 ex generalized_force(const Model& m, const Load& l, std::size_t i);
@@ -181,6 +187,10 @@ public:
   /// The states bounding the part of analysis `a` where it acts (with Part: one of them is its
   /// switching state).
   std::pair<int, int> active_span(const Analysis& a) const;
+  /// How it acts at one state (an instant): it acts there, it does not, or it switches there
+  /// (on or off: its force jumps, so it has no one value there).
+  enum class AtState { Acts, Not, Switches };
+  AtState at_state(int s) const;
 
   virtual ~Effect() = default;
 

@@ -20,6 +20,13 @@ struct BodyLoad {
   bool unknown = false;  ///< a support's reaction (holds unknowns)
 };
 
+/// A body's accelerations at the state: its kinetic diagram is m ā and Ī α.
+struct BodyAcceleration {
+  int body = -1;
+  ex ax = 0, ay = 0;  ///< ā, of its mass centre
+  ex alpha = 0;       ///< α
+};
+
 /// The equations of kinetics at one state.
 struct KineticsBalance : Balance {
   struct Row {
@@ -33,6 +40,7 @@ struct KineticsBalance : Balance {
   int state = -1;
   std::vector<Row> rows;
   std::vector<BodyLoad> loads;  ///< every force and couple on the bodies of the set
+  std::vector<BodyAcceleration> accelerations;  ///< of each body of the set, at the state
   std::vector<ex> unknowns;     ///< at the state: q̈, the reactions, the multipliers
 
   std::vector<Equation> equations() const override {
