@@ -246,6 +246,11 @@ std::optional<Value> Result::evaluate(const exmap& env, int digits, bool prefer_
   return Value{d->value, Value::How::Precise, d->working, 0, d->proven, d->lo, d->hi};
 }
 
+bool Solution::drew_on(const principles::Equation& e) const {
+  return std::any_of(drawn_on.begin(), drawn_on.end(),
+                     [&](const principles::Equation& d) { return d.lhs.is_equal(e.lhs) && d.rhs.is_equal(e.rhs) && d.label == e.label; });
+}
+
 namespace {
 
 /// The steps of solving a scene: the unknowns, the equations of each analysis in order (what
@@ -267,6 +272,7 @@ public:
           if (f.value.has(qs.first) || f.value.has(qs.second)) add_state(static_cast<int>(s));
     for (auto& e : sol_.equations) check_units(e);
     choose(solve(sol_.equations));
+    if (draw_on_reserves()) choose(solve(sol_.equations));
     solve_in_roots();
     for (auto& f : m.finds) sol_.results.push_back(result(f));
   }
@@ -333,6 +339,40 @@ private:
         // undefined at the given values: reported with the result itself
       }
     }
+  }
+
+  /// The unknowns a result still holds with the chosen branch.
+  std::vector<ex> undetermined() const {
+    std::vector<ex> out;
+    for (auto& f : m.finds) {
+      ex c;
+      try {
+        c = f.value.subs(given).subs(sol_.branch.sol);
+      } catch (const std::exception&) {
+        continue;  // reported with the result
+      }
+      for (auto& u : unknowns)
+        if (c.has(u) && std::none_of(out.begin(), out.end(), [&](const ex& x) { return x.is_equal(u); })) out.push_back(u);
+    }
+    return out;
+  }
+
+  /// Add the balances' reserve equations that hold an unknown a result is left with (the
+  /// positions a momentum balance integrates to). Whether any was added.
+  bool draw_on_reserves() {
+    const std::vector<ex> open = undetermined();
+    if (open.empty()) return false;
+    bool added = false;
+    for (auto& b : sol_.balances)
+      for (auto& e : b->reserve()) {
+        const ex r = e.residual();
+        if (std::none_of(open.begin(), open.end(), [&](const ex& u) { return r.has(u); })) continue;
+        check_units(e);
+        sol_.equations.push_back(e);
+        sol_.drawn_on.push_back(e);
+        added = true;
+      }
+    return added;
   }
 
   void add_state(int s) {
@@ -992,9 +1032,16 @@ private:
           if (!is_impulse && it != sol.branch.sol.end() && it->second.has(u))
             missing += (missing.empty() ? "" : ", ") + model::text(x);
         }
+      // an analysis that would give it and says why it does not (a momentum balance whose
+      // pushes are not known in time does not integrate to positions)
+      std::string why;
+      for (std::size_t ai = 0; ai < sol.balances.size() && why.empty(); ++ai)
+        if (std::string w = sol.balances[ai]->why_not(u); !w.empty())
+          why = "; the " + m.analyses[ai].kind + " analysis " + m.states[m.analyses[ai].from].name + " -> " + m.states[m.analyses[ai].to].name +
+                " does not give it: " + w;
       throw SceneError(f.pos, "'" + f.name + "' is not determined: " + model::text(u) + (impulse ? " (an impulse)" : "") +
                                   " is unknown (the analyses give " + std::to_string(n) +
-                                  (n == 1 ? " equation" : " equations") + " for more unknowns)",
+                                  (n == 1 ? " equation" : " equations") + " for more unknowns)" + why,
                        impulse ? "give " + (missing.empty() ? std::string("the missing values at the states around that analysis") : missing) +
                                      " (velocities before an impact, a time), or add an analysis"
                                : "give " + model::text(u) + " at its state, or add an analysis or a 'where' condition that fixes it");
@@ -1078,7 +1125,7 @@ Solution solve_scene(const scene::SceneDef& def) {
   // first is past every switching point; while it has no solution, one switching point fewer
   std::optional<SceneError> first;
   for (int fewer = 0;; ++fewer) {
-    Solution sol{base, {}, {}, {}, {}, {}, def};
+    Solution sol{base, {}, {}, {}, {}, {}, {}, def};
     try {
       SceneSolver(sol, fewer).run();
       return sol;

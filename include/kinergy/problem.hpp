@@ -98,6 +98,10 @@ struct Solution {
     return out;
   }
   std::vector<principles::Equation> equations;  ///< every equation solved, in order
+  /// Of the balances' reserves, those solved (a result was not determined without them).
+  std::vector<principles::Equation> drawn_on;
+  /// Is `e` one of the reserve equations solved?
+  bool drew_on(const principles::Equation& e) const;
   solve::Branch branch;                         ///< the chosen solution
   std::vector<Result> results;
   /// Each analysis confirmed a second way, in order (empty: not asked, `--no-confirm`).

@@ -36,6 +36,7 @@ public:
   }
 
   bool takes_reactions() const override { return true; }
+  bool gives_positions() const override { return true; }
 };
 
 }  // namespace

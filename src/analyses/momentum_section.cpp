@@ -17,6 +17,42 @@ std::string about_tex(const model::Model& m, const std::string& about) {
   return emit::tex_name(p);
 }
 
+/// The second integral of a component (its positions at the end): Φ₂ = Φ₁ + L₁ (t₂ − t₁) + Σ ∫∫F.
+void displacement_rows(emit::Sections& w, emit::Tags& tags, const principles::MomentumBalance::Component& c, bool angular,
+                       const std::string& base_tex, const std::string& base_text, const std::string& S1, const std::string& S2,
+                       const std::string& dt_tex) {
+  using namespace emit;
+  const principles::MomentumBalance::Displacement& d = *c.displacement;
+  const std::string phi_tex = "\\Phi", phi_text = "\u03a6";
+  const std::string t1 = digits_only(S1) ? "t_{" + S1 + "}" : "t_{\\mathrm{" + S1 + "}}";
+  const std::string t2 = digits_only(S2) ? "t_{" + S2 + "}" : "t_{\\mathrm{" + S2 + "}}";
+  const std::string inner = "\\int_{" + t1 + "}^{t}";
+  w.para({W("Every push " + std::string(angular ? "has a moment that is" : "is") + " a known function of time, so the momentum integrates once more: "),
+          N(base_tex + " = \\frac{d" + phi_tex + "}{dt}", base_text + " = d" + phi_text + "/dt"),
+          W(" with "),
+          angular ? N(phi_tex + " = \\sum_i h_i\\,q_i", phi_text + " = Σ h_i q_i")
+          : c.name == "x" || c.name == "y" ? N(phi_tex + " = \\sum m\\,\\bar{" + c.name + "}", phi_text + " = Σ m " + c.name + "_G")
+                                           : N(phi_tex + " = \\sum m\\,\\bar{r}\\cdot n", phi_text + " = Σ m r_G·n"),
+          W(" (" + std::string(angular ? "H = Σ h_i q̇_i with every h_i constant" : "the set's first moment of mass") + "), and "),
+          N(tex_at(phi_tex, S2) + " = " + tex_at(phi_tex, S1) + " + " + tex_at(base_tex, S1) + "\\,(" + t2 + " - " + t1 + ") + \\sum " + dt_tex + inner +
+                (angular ? " M" : " F") + "\\,dt'\\,dt",
+            text_at(phi_text, S2) + " = " + text_at(phi_text, S1) + " + " + text_at(base_text, S1) + " (" + text_at("t", S2) + " − " + text_at("t", S1) +
+                ") + Σ ∫∫" + (angular ? "M" : "F") + " dt' dt"),
+          W(":")});
+  std::vector<Row> r;
+  r.push_back(tags.row({Math::notation(tex_at(phi_tex, S1), text_at(phi_text, S1)), Math::of(w.sub(d.before))}));
+  r.push_back(tags.row({Math::notation(tex_at(base_tex, S1) + "\\,(" + t2 + " - " + t1 + ")", text_at(base_text, S1) + " (" + text_at("t", S2) + " − " + text_at("t", S1) + ")"),
+                        Math::of(w.sub(d.drift))}));
+  for (auto& term : d.terms)
+    r.push_back(tags.row({Math::notation(dt_tex + inner + (angular ? " M" : " F") + "^{" + tex_word(term.effect) + "}\\,dt'\\,dt",
+                                         "∫∫" + std::string(angular ? "M" : "F") + " dt' dt (" + term.effect + ")"),
+                          Math::of(w.sub(term.value))}));
+  r.push_back(tags.row({Math::notation(tex_at(phi_tex, S2), text_at(phi_text, S2)), Math::of(w.sub(d.after))}));
+  w.rows(r);
+  w.para({W("So:")});
+  w.rows({w.equation(tags, d.equation)});
+}
+
 }  // namespace
 
 /// The section of a linear or an angular momentum analysis: the momentum at each state, each
@@ -108,6 +144,7 @@ void momentum_section(emit::Sections& w, int k, const model::Analysis& a, const 
     else
       w.para({W("So:")});
     w.rows({w.equation(tags, c.equation)});
+    if (c.displacement && s.drew_on(c.displacement->equation)) displacement_rows(w, tags, c, angular, base_tex, base_text, S1, S2, dt_tex);
   }
 }
 

@@ -856,6 +856,7 @@ private:
         f.unit = u;
       }
       kinetics_for(f.value, f.pos, "'" + f.name + "'");
+      positions_for(f.value);
       m_.finds.push_back(f);
     }
   }
@@ -910,6 +911,24 @@ private:
           throw SceneError(pos, what + " asks for " + model::text(x) + ", which the kinetics analysis at state '" + m_.states[si].name +
                                       "' does not solve for: the support acts on no body of its 'bodies'",
                            "list in that analysis' 'bodies' a body the support holds, or leave its 'bodies' out (all bodies)");
+    }
+  }
+
+  /// A result that asks for a position at a state of an analysis that integrates its momenta to
+  /// positions (the distance a disk slid before it rolls: x@2), which the state does not give:
+  /// that analysis adds the equations that give it.
+  void positions_for(const ex& value) {
+    for (Analysis& a : m_.analyses) {
+      if (!a.type->gives_positions() || a.instant()) continue;
+      for (int s : {a.from, a.to}) {
+        const State& st = m_.states[static_cast<std::size_t>(s)];
+        for (auto& c : m_.coords) {
+          const ex q = st.sym.at(c.name).first;
+          if (value.has(q) && !st.given.count(q) &&
+              std::none_of(a.positions_asked.begin(), a.positions_asked.end(), [&](const ex& x) { return x.is_equal(q); }))
+            a.positions_asked.push_back(q);
+        }
+      }
     }
   }
 

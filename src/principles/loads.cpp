@@ -67,6 +67,18 @@ std::optional<ex> over_duration(const Model& m, const ex& f, const Analysis& a) 
   return F->subs(m.t == t2) - F->subs(m.t == t1);
 }
 
+std::optional<ex> twice_over_duration(const Model& m, const ex& f, const Analysis& a) {
+  // ∫_{t₁}^{t₂} ∫_{t₁}^{t} f dt' dt: f (t₂ − t₁)²/2 for a constant; else, with F' = f and A' = F,
+  // A(t₂) − A(t₁) − F(t₁) (t₂ − t₁)
+  ex t1 = m.states[a.from].t, t2 = m.states[a.to].t;
+  if (!f.has(m.t)) return f * pow(t2 - t1, 2) / 2;
+  auto F = model::antiderivative(f, m.t);
+  if (!F) return std::nullopt;
+  auto A = model::antiderivative(*F, m.t);
+  if (!A) return std::nullopt;
+  return A->subs(m.t == t2) - A->subs(m.t == t1) - F->subs(m.t == t1) * (t2 - t1);
+}
+
 void load_pushes(const Model& m, const Effect& e, const Analysis& a, const Knowledge& k, std::vector<Push>& out) {
   for (const Load& l : e.loads(m)) {
     const int side = side_on(a, l);

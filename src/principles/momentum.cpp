@@ -231,6 +231,47 @@ void check_constraints(const Model& m, const Analysis& a) {
   }
 }
 
+/// Does Φ (generic) hold a position that a result asks for at the analysis' states?
+bool asked(const Model& m, const Analysis& a, const ex& phi) {
+  for (int s : {a.from, a.to}) {
+    const ex bound = m.bind(phi, s);
+    for (auto& x : a.positions_asked)
+      if (bound.has(x)) return true;
+  }
+  return false;
+}
+
+/// The second integral of component c, whose momentum is dΦ/dt, into c.displacement when a result
+/// asks for a position Φ holds; its pushes `forces` (effect, force or moment along it, free of the
+/// motion) when every push is known in time, else `blocked` says why it has none:
+///   Φ₂ = Φ₁ + L₁ (t₂ − t₁) + Σ ∫_{t₁}^{t₂}∫_{t₁}^{t} F dt' dt.
+void integrate_positions(const Model& m, const Analysis& a, MomentumBalance::Component& c, const ex& phi,
+                         const std::vector<std::pair<std::string, ex>>& forces, std::string blocked) {
+  if (!asked(m, a, phi)) return;
+  MomentumBalance::Displacement d;
+  d.before = m.bind(phi, a.from);
+  d.after = m.bind(phi, a.to);
+  for (auto& x : a.positions_asked)
+    if (d.before.has(x) || d.after.has(x)) c.positions.push_back(x);
+  d.drift = c.before * (m.states[a.to].t - m.states[a.from].t);
+  ex rhs = d.before + d.drift;
+  for (auto& [effect, f] : forces) {
+    if (!blocked.empty()) break;
+    auto D = twice_over_duration(m, f, a);
+    if (!D) blocked = "the push of '" + effect + "' (" + model::text(f) + ") has no elementary double integral in t";
+    else {
+      d.terms.push_back({effect, *D, "double integral", ImpulseTerm::Kind::Integral});
+      rhs += *D;
+    }
+  }
+  if (!blocked.empty()) {
+    c.no_positions = blocked;
+    return;
+  }
+  d.equation = {rhs, d.after, c.equation.principle, "positions from the " + c.equation.label, a.pos};
+  c.displacement = d;
+}
+
 }  // namespace
 
 MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
@@ -284,12 +325,16 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
     c.before = m.bind(L, a.from);
     c.after = m.bind(L, a.to);
     ex I = 0;
+    std::vector<std::pair<std::string, ex>> forces;  // the known forces along n, for the positions
+    std::string blocked;                               // why not every push along n is a known function of t
     for (auto& e : m.effects) {
       for (auto& p : pushes(m, e, a, k)) {
         ex In;
         std::string how;
         if (p.unknown) {
           In = model::trig_simplify(dot(p.Rx, p.Ry, nx, ny));
+          if (blocked.empty() && !In.is_zero())
+            blocked = "the impulse of '" + e.name + "' along " + name + " is an unknown total, not a force known in time";
           if (!motion_free(m, In))
             throw SceneError(e.pos, "the reaction of '" + e.name + "' turns with the motion, so its impulse along " + name +
                                         " is unknown in a way no equation fixes",
@@ -307,6 +352,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
             throw SceneError(e.pos, "the force of '" + e.name + "' along " + name + " changes with the motion; its impulse has no closed form",
                              "use an energy analysis, or a force that is constant or a function of t");
           In = time_integral(m, e, model::trig_simplify(Fn), a);
+          forces.push_back({e.name, model::trig_simplify(Fn)});
           how = "integral of F dt";
         }
         if (In.is_zero()) continue;
@@ -322,6 +368,12 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
                   std::string(a.conserved ? "conservation of linear momentum" : "linear impulse-momentum") + " along " + name + ", " +
                       state_pair(m, a),
                   a.pos};
+    // L·n = dΦ/dt with Φ = Σ m r̄·n
+    if (!a.positions_asked.empty()) {
+      ex phi = 0;
+      for (int b : a.bodies) phi += m.bodies[b].mass * dot(m.bodies[b].x, m.bodies[b].y, nx, ny);
+      integrate_positions(m, a, c, phi, forces, blocked);
+    }
     out.components.push_back(c);
   }
   for (auto& e : m.effects)
@@ -353,6 +405,8 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
                      "take moments about a point they turn about freely (a pivot, a contact point on the ground, their mass centre), "
                      "or declare the support (a pin, a track) so that its reaction is an unknown");
   ex I = 0;
+  std::vector<std::pair<std::string, ex>> moments;  // the known moments about P, for the positions
+  std::string blocked;                                // why not every push's moment is a known function of t
   for (auto& e : m.effects) {
     for (auto& p : pushes(m, e, a, k)) {
       // moment about P: (r_Q − r_P) × F, plus couples
@@ -371,6 +425,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
                                       " that changes with the motion, so its angular impulse is unknown in a way no equation fixes",
                            "take moments about the pin itself, or about a fixed point");
         In = m.bind(Mr, a.from);
+        if (blocked.empty()) blocked = "the angular impulse of '" + e.name + "' is an unknown total, not a moment known in time";
         how = !p.what.empty() ? "moment of the " + p.what : p.reaction ? "moment of the reaction impulse (unknown)" : "moment of the given impulse";
       } else {
         Mp = model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
@@ -385,6 +440,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
                                       "); its angular impulse has no closed form",
                            "take moments about a point where it is constant (a pivot, the mass centre), or use an energy analysis");
         In = time_integral(m, e, Mp, a);
+        moments.push_back({e.name, Mp});
         how = "integral of M dt";
       }
       if (In.is_zero()) continue;
@@ -398,6 +454,21 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   }
   const char* what = a.conserved ? "conservation of angular momentum" : "angular impulse-momentum";
   c.equation = {c.before + I, c.after, what, std::string(what) + " about " + a.about()->text + ", " + state_pair(m, a), a.pos};
+  // H = Σ h_i q̇_i with every h_i constant is dΦ/dt with Φ = Σ h_i q_i (a body turning about its
+  // mass centre or a fixed axle: H = I ω, Φ = I φ)
+  if (!a.positions_asked.empty()) {
+    ex phi = 0, rest = H;
+    bool constant = true;
+    for (auto& co : m.coords) {
+      const ex h = model::trig_simplify(H.diff(co.qd));
+      constant = constant && motion_free(m, h) && !h.has(m.t);
+      phi += h * co.q;
+      rest -= h * co.qd;
+    }
+    if ((!constant || !vanishes(m, rest)) && blocked.empty())
+      blocked = "the angular momentum about " + a.about()->text + " changes with the position (it is not a constant times the rates), so it does not integrate to angles";
+    integrate_positions(m, a, c, phi, moments, blocked);
+  }
   for (auto& e : m.effects)
     for (auto& p : pushes(m, e, a, k)) {
       out.holds.insert(out.holds.end(), p.holds.begin(), p.holds.end());

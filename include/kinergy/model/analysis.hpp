@@ -40,6 +40,10 @@ public:
   /// Does it balance impulses (so `impulse(effect, S1, S2)` refers to it, and a motion may
   /// reverse between its states)? Work–energy does not.
   virtual bool impulsive() const { return true; }
+  /// Over a duration, does its balance integrate once more to the positions at its ends, where
+  /// its pushes are known functions of time (momentum: Σ m r̄ moves with L; a body turning about a
+  /// fixed axis: I φ with H)? It does so for the positions a result asks for (positions_asked).
+  virtual bool gives_positions() const { return false; }
   /// Does it take no time (an impact: positions and t do not change, impulses are impulsive)?
   virtual bool instant() const { return false; }
   /// Add its balance (Solution::balances) and its equations to the solution.

@@ -104,6 +104,10 @@ struct Analysis {
   /// force of an interaction that does work on the set (energy).
   std::map<std::string, std::vector<ex>> reactions;
   std::vector<ex> unknowns;       ///< every unknown it brings, in a stable order
+  /// Positions at its states that a result asks for and the states do not give: an analysis
+  /// whose kind integrates its momenta to positions (AnalysisKind::gives_positions) adds the
+  /// equations that give them.
+  std::vector<ex> positions_asked;
 };
 
 /// How to pick between roots for a named result.

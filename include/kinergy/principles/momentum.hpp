@@ -55,6 +55,9 @@ void effect_pushes(const model::Model& m, const model::Effect& e, const model::A
 /// ∫_{t₁}^{t₂} f dt over analysis a, for f free of the motion (constant, or of t); nothing when it
 /// has no elementary antiderivative.
 std::optional<ex> over_duration(const model::Model& m, const ex& f, const model::Analysis& a);
+/// ∫_{t₁}^{t₂} ∫_{t₁}^{t} f dt' dt over analysis a (what a push adds to the set's first moment, the
+/// positions at the end), for f free of the motion; nothing when it has no elementary form.
+std::optional<ex> twice_over_duration(const model::Model& m, const ex& f, const model::Analysis& a);
 /// ∫F dt over analysis `ai` of the effect's forces on its bodies (those on the analysis' set,
 /// where it has some). @throws InputError in an impact, or when a force changes with the motion.
 std::pair<ex, ex> load_impulse(const model::Model& m, const model::Effect& e, int ai);
@@ -89,11 +92,26 @@ struct ImpulseTerm {
 
 /// The equations of one momentum analysis, component by component.
 struct MomentumBalance : Balance {
+  /// Where the pushes are known functions of time, the momentum integrates once more to the
+  /// positions at the end: the momentum L = dΦ/dt of Φ = Σ m r̄·n (linear), Φ = Σ h_i q_i
+  /// (angular, when H = Σ h_i q̇_i with constant h_i), and
+  ///   Φ₂ = Φ₁ + L₁ (t₂ − t₁) + Σ ∫_{t₁}^{t₂}∫_{t₁}^{t} F dt' dt.
+  struct Displacement {
+    ex before, after;  ///< Φ at the two states
+    ex drift;          ///< L₁ (t₂ − t₁)
+    std::vector<ImpulseTerm> terms;  ///< each push's double integral
+    Equation equation;
+  };
   struct Component {
     std::string name;  ///< "x", "y", "along (nx, ny)", "moment about O"
     ex before, after;  ///< momentum (or angular momentum) at the two states
     std::vector<ImpulseTerm> impulses;
     Equation equation;
+    /// Its second integral, when a result asks for a position it holds (Analysis::positions_asked)
+    /// and every push on it is a known function of time: in reserve (Balance::reserve).
+    std::optional<Displacement> displacement;
+    std::vector<ex> positions;  ///< the positions asked that its second integral holds
+    std::string no_positions;   ///< why it has none, when asked ("" otherwise)
   };
   std::vector<Component> components;
   std::vector<Shown> shown;  ///< every force and impulse on the set, for its impulse–momentum diagram
@@ -107,6 +125,19 @@ struct MomentumBalance : Balance {
     return out;
   }
   std::vector<Condition> conditions() const override { return holds; }
+  std::string why_not(const ex& u) const override {
+    for (auto& c : components)
+      if (!c.no_positions.empty())
+        for (auto& x : c.positions)
+          if (x.is_equal(u)) return c.no_positions;
+    return "";
+  }
+  std::vector<Equation> reserve() const override {
+    std::vector<Equation> out;
+    for (auto& c : components)
+      if (c.displacement) out.push_back(c.displacement->equation);
+    return out;
+  }
 };
 
 /// Linear impulse–momentum Σ m v̄₂·n = Σ m v̄₁·n + Σ ∫F·n dt for the analysis' bodies.

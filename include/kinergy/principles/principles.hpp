@@ -37,6 +37,12 @@ struct Balance {
   /// What its terms took for granted (a switching force passed, a declared direction of
   /// sliding), each e ≥ 0, checked on the solution.
   virtual std::vector<Condition> conditions() const = 0;
+  /// Equations it holds in reserve: solved only when a result is not determined without them
+  /// (the positions a momentum balance integrates to, where the scene's other equations do not
+  /// already give them).
+  virtual std::vector<Equation> reserve() const { return {}; }
+  /// Why it does not give unknown u where a result asks for it ("" when it has nothing to say).
+  virtual std::string why_not(const ex&) const { return ""; }
 };
 
 /// Energy terms of one side.
