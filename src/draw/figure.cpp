@@ -520,13 +520,23 @@ At state_values(const model::Model& m, const exmap& solved, const exmap& params,
   return at;
 }
 
-void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
-  const model::Body& b = m.bodies.at(static_cast<std::size_t>(bi));
-  // the body by its shape: r = G + R(φ) (lx, ly)
-  const double gx = at(b.x), gy = at(b.y), phi = at(b.angle), c = std::cos(phi), s = std::sin(phi);
-  auto world = [&](double lx, double ly) { return std::pair<double, double>{gx + c * lx - s * ly, gy + s * lx + c * ly}; };
-  const model::InertiaShape& shape = model::inertia_shape(b.shape);
-  const double a = b.sizes.empty() ? 0 : at(b.sizes[0]);
+namespace {
+
+/// A shape's frame: its centre (gx, gy) and turn phi; r = (gx, gy) + R(phi) (lx, ly).
+struct Placed {
+  double gx, gy, phi;
+  std::pair<double, double> operator()(double lx, double ly) const {
+    const double c = std::cos(phi), s = std::sin(phi);
+    return {gx + c * lx - s * ly, gy + s * lx + c * ly};
+  }
+};
+
+/// One shape drawn in its frame (model/inertia.hpp's outlines).
+void outline(const At& at, const std::string& shape_name, const std::vector<ex>& sizes, const Placed& world, Figure& f) {
+  const double gx = world.gx, gy = world.gy;
+  const model::InertiaShape& shape = model::inertia_shape(shape_name);
+  const double a = sizes.empty() ? 0 : at(sizes[0]);
+  const double bb = sizes.size() > 1 ? at(sizes[1]) : a;
   switch (shape.outline) {
     case model::Outline::Bar: {
       auto [x1, y1] = world(-a / 2, 0);
@@ -542,11 +552,9 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
       f.line(gx, gy, x2, y2, Ink::Thin);  // the reference line: the body's angle
       break;
     }
-    case model::Outline::Rect: {
-      const double bb = b.sizes.size() > 1 ? at(b.sizes[1]) : a;
+    case model::Outline::Rect:
       f.polyline({world(-a / 2, -bb / 2), world(a / 2, -bb / 2), world(a / 2, bb / 2), world(-a / 2, bb / 2)}, Ink::Body, true, true);
       break;
-    }
     case model::Outline::Dot: {
       // a particle: a small block, turned with its angle
       const double g = f.glyph();
@@ -554,11 +562,14 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
       break;
     }
   }
-  f.mark(gx, gy, b.name + ".G");
-  f.label(gx, gy, b.name);
-  if (!points) return;
-  // the given dimensions: a rod's length and a plate's sides beside them, a radius on its line
-  auto size_text = [&](std::size_t i) { return i < b.sizes.size() ? model::text(b.sizes[i]) : std::string(); };
+}
+
+/// A shape's given dimensions beside it: a rod's length and a plate's sides, a radius on its line.
+void dimensions(const At& at, const std::string& shape_name, const std::vector<ex>& sizes, const Placed& world, Figure& f) {
+  const model::InertiaShape& shape = model::inertia_shape(shape_name);
+  const double a = sizes.empty() ? 0 : at(sizes[0]);
+  const double bb = sizes.size() > 1 ? at(sizes[1]) : a;
+  auto size_text = [&](std::size_t i) { return i < sizes.size() ? model::text(sizes[i]) : std::string(); };
   switch (shape.outline) {
     case model::Outline::Bar: {
       auto [x1, y1] = world(-a / 2, 0);
@@ -573,17 +584,37 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
       break;
     }
     case model::Outline::Rect: {
-      const double bb = b.sizes.size() > 1 ? at(b.sizes[1]) : a;
       auto [x1, y1] = world(-a / 2, -bb / 2);
       auto [x2, y2] = world(a / 2, -bb / 2);
       auto [x3, y3] = world(a / 2, bb / 2);
       f.dimension(x1, y1, x2, y2, size_text(0));
-      if (b.sizes.size() > 1) f.dimension(x2, y2, x3, y3, size_text(1));
+      if (sizes.size() > 1) f.dimension(x2, y2, x3, y3, size_text(1));
       break;
     }
     case model::Outline::Dot:
       break;
   }
+}
+
+}  // namespace
+
+void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
+  const model::Body& b = m.bodies.at(static_cast<std::size_t>(bi));
+  // the body by its shape, or each part of a composite body by its own: r = G + R(φ) (lx, ly)
+  const double gx = at(b.x), gy = at(b.y), phi = at(b.angle), c = std::cos(phi), s = std::sin(phi);
+  auto world = [&](double lx, double ly) { return std::pair<double, double>{gx + c * lx - s * ly, gy + s * lx + c * ly}; };
+  // each shape's frame: the body's own, or each part's at its centre and turn
+  std::vector<std::tuple<const std::string*, const std::vector<ex>*, Placed>> shapes;
+  if (b.parts.empty()) shapes.push_back({&b.shape, &b.sizes, Placed{gx, gy, phi}});
+  for (auto& p : b.parts) {
+    auto [px, py] = world(at(p.lx), at(p.ly));
+    shapes.push_back({&p.shape, &p.sizes, Placed{px, py, phi + at(p.angle)}});
+  }
+  for (auto& [shape, sizes, placed] : shapes) outline(at, *shape, *sizes, placed, f);
+  f.mark(gx, gy, b.name + ".G");
+  f.label(gx, gy, b.name);
+  if (!points) return;
+  for (auto& [shape, sizes, placed] : shapes) dimensions(at, *shape, *sizes, placed, f);
   for (auto& [pn, lp] : b.points) {
     auto [px, py] = world(at(lp.first), at(lp.second));
     f.mark(px, py, b.name + "." + pn);

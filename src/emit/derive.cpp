@@ -250,6 +250,38 @@ private:
 
   // --- kinematics -----------------------------------------------------------------------------
 
+  /// A composite body's words: its parts, and its mass centre and Ī by composition,
+  ///   c = Σ m_i a_i / m,  Ī = Σ (Ī_i + m_i |a_i − c|²)  (the parallel-axis theorem).
+  void composite_body(const model::Body& b, Spans& sp) const {
+    sp.push_back(W(", welded of "));
+    for (std::size_t i = 0; i < b.parts.size(); ++i) {
+      const auto& p = b.parts[i];
+      if (i) sp.push_back(W(i + 1 == b.parts.size() ? " and " : ", "));
+      const std::string words = model::inertia_shape(p.shape).words;
+      sp.push_back(W(p.name + " (" + (words.empty() ? "" : words + ", ") + "mass "));
+      sp.push_back(M(p.mass));
+      if (!p.inertia.is_zero()) {
+        sp.push_back(W(", "));
+        sp.push_back(Span::m(Math::named("\\bar{I}_{\\mathrm{" + p.name + "}}", "I_" + p.name, tidy(p.inertia))));
+      }
+      // a_i: its centre from the reference point, in body axes
+      sp.push_back(W(", centred at ("));
+      sp.push_back(M(tidy(normal(p.lx - b.ref_x))));
+      sp.push_back(W(", "));
+      sp.push_back(M(tidy(normal(p.ly - b.ref_y))));
+      sp.push_back(W("))"));
+    }
+    sp.push_back(W(" in body axes from its reference point; its mass centre is at c = Σ m_i a_i / m = ("));
+    sp.push_back(M(tidy(-b.ref_x)));
+    sp.push_back(W(", "));
+    sp.push_back(M(tidy(-b.ref_y)));
+    sp.push_back(W(") from that point, and by the parallel-axis theorem "));
+    sp.push_back(N("\\bar{I} = \\sum \\left(\\bar{I}_i + m_i\\,|a_i - c|^{2}\\right)", "I = Σ (I_i + m_i |a_i − c|^2)"));
+    sp.push_back(W(", "));
+    sp.push_back(Span::m(Math::named("\\bar{I}", "I", tidy(b.inertia))));
+    sp.push_back(W("."));
+  }
+
   void kinematics() {
     section("Kinematics");
     {
@@ -281,7 +313,9 @@ private:
       std::string kind = bd ? bd->inertia.kind : "";
       bool particle = b.inertia.is_zero() && b.angle.is_zero();
       Spans sp{W("Body " + b.name + ": mass "), M(b.mass)};
-      if (particle) {
+      if (!b.parts.empty()) {
+        composite_body(b, sp);
+      } else if (particle) {
         sp.push_back(W(", a particle."));
       } else {
         std::string words = kind.empty() ? "" : model::inertia_shape(kind).words;

@@ -237,43 +237,37 @@ private:
   }
 
   void bodies() {
-    const Dimension L = Dimension::length(), M = Dimension::mass();
+    const Dimension L = Dimension::length();
     for (auto& bd : d_.bodies) {
       if (m_.fixed_points.count(bd.name))
         throw SceneError(bd.pos, "'" + bd.name + "' names both a point and a body", "rename one");
       Body b;
       b.name = bd.name;
       b.pos = bd.pos;
-      b.mass = checked(bd.mass, SceneContext::ParamsOnly, M, "mass", "a mass is in kg, g or slug");
-      positive(b.mass, bd.mass.pos, "the mass of '" + bd.name + "'", true);
-      // 0: a light body, no kinetic energy and no weight. A mass that is 0 by its parameters'
-      // values is written 0, so that no closed form divides by it (m g h = m v²/2 would give v
-      // for m = 0, where nothing determines it)
-      if (auto v = value_of(b.mass, bd.mass.pos, "the mass of '" + bd.name + "'"); v && v->is_zero()) b.mass = 0;
-      // Ī from the shape (model/inertia.cpp)
-      const auto& in = bd.inertia;
-      const InertiaShape& shape = inertia_shape(in.kind);
-      std::vector<ex> a;
-      for (auto& t : in.args) {
-        Dimension want = shape.given ? M * L * L : L;
-        ex e = checked(t, SceneContext::ParamsOnly, want, in.kind, shape.given ? "Ī is in kg·m^2" : "a size is a length");
-        positive(e, t.pos, "the size '" + t.s + "' of " + in.kind);
-        a.push_back(e);
+      if (bd.parts.empty()) {
+        b.mass = mass(bd.mass, "the mass of '" + bd.name + "'");
+        std::tie(b.shape, b.sizes, b.inertia) = shape_inertia(bd.inertia, b.mass);
+      } else {
+        compose(bd, b);
       }
-      b.inertia = shape.inertia(b.mass, a);
-      b.shape = shape.name;
-      b.sizes = a;
       b.x = checked(bd.x, SceneContext::Geometry, L, "position[0]", "positions are lengths");
       b.y = checked(bd.y, SceneContext::Geometry, L, "position[1]", "positions are lengths");
       b.angle = bd.angle ? checked(*bd.angle, SceneContext::Geometry, Dimension{}, "angle",
                                    "an angle is a pure number (rad)")
                          : ex(0);
+      if (!bd.parts.empty()) {
+        // the scene places a composite body by its reference point O; its mass centre is
+        // r̄ = r_O + R(φ) c, c = Σ m_i a_i / Σ m_i in body axes (b.ref = −c: O seen from G)
+        const ex cx = -b.ref_x, cy = -b.ref_y;
+        b.x = b.x + cos(b.angle) * cx - sin(b.angle) * cy;
+        b.y = b.y + sin(b.angle) * cx + cos(b.angle) * cy;
+      }
       for (auto& p : bd.points) {
         ex px = checked(p.x, SceneContext::ParamsOnly, L, p.name + "[0]",
                         "body points are lengths in body axes (parameters only)");
         ex py = checked(p.y, SceneContext::ParamsOnly, L, p.name + "[1]",
                         "body points are lengths in body axes (parameters only)");
-        b.points[p.name] = {px, py};
+        b.points[p.name] = {px + b.ref_x, py + b.ref_y};  // (through G)
       }
       if (m_.body_index(bd.name) >= 0)
         throw SceneError(bd.pos, "body '" + bd.name + "' is defined twice", "rename one");
@@ -281,6 +275,67 @@ private:
     }
     if (m_.bodies.empty() && !d_.analyses.empty())
       throw SceneError({d_.file, 1, 1}, "the scene has no bodies", "add a 'bodies:' section");
+  }
+
+  /// A body's or a part's mass: ≥ 0. 0 is a light body, no kinetic energy and no weight; a mass
+  /// that is 0 by its parameters' values is written 0, so that no closed form divides by it
+  /// (m g h = m v²/2 would give v for m = 0, where nothing determines it).
+  ex mass(const Text& t, const std::string& what) {
+    ex m = checked(t, SceneContext::ParamsOnly, Dimension::mass(), "mass", "a mass is in kg, g or slug");
+    positive(m, t.pos, what, true);
+    if (auto v = value_of(m, t.pos, what); v && v->is_zero()) m = 0;
+    return m;
+  }
+
+  /// An inertia shape's name, sizes and Ī for mass m (model/inertia.cpp).
+  std::tuple<std::string, std::vector<ex>, ex> shape_inertia(const scene::InertiaDef& in, const ex& m) {
+    const Dimension L = Dimension::length(), M = Dimension::mass();
+    const InertiaShape& shape = inertia_shape(in.kind);
+    std::vector<ex> a;
+    for (auto& t : in.args) {
+      Dimension want = shape.given ? M * L * L : L;
+      ex e = checked(t, SceneContext::ParamsOnly, want, in.kind, shape.given ? "Ī is in kg·m^2" : "a size is a length");
+      positive(e, t.pos, "the size '" + t.s + "' of " + in.kind);
+      a.push_back(e);
+    }
+    return {shape.name, a, shape.inertia(m, a)};
+  }
+
+  /// A composite body from its parts (each welded to the others, its centre a_i in body axes
+  /// from the reference point O):
+  ///   m = Σ m_i,  c = Σ m_i a_i / m,  Ī = Σ (Ī_i + m_i |a_i − c|²)  (the parallel-axis theorem)
+  void compose(const scene::BodyDef& bd, Body& b) {
+    const Dimension L = Dimension::length();
+    ex m = 0, sx = 0, sy = 0;
+    for (auto& pd : bd.parts) {
+      Body::Part p;
+      p.name = pd.name;
+      p.mass = mass(pd.mass, "the mass of part '" + pd.name + "' of '" + bd.name + "'");
+      std::tie(p.shape, p.sizes, p.inertia) = shape_inertia(pd.inertia, p.mass);
+      p.lx = checked(pd.x, SceneContext::ParamsOnly, L, "at[0]", "a part's centre is a length in body axes (parameters only)");
+      p.ly = checked(pd.y, SceneContext::ParamsOnly, L, "at[1]", "a part's centre is a length in body axes (parameters only)");
+      p.angle = pd.angle ? checked(*pd.angle, SceneContext::ParamsOnly, Dimension{}, "angle", "a part's turn in body axes is an angle (parameters only)")
+                         : ex(0);
+      m += p.mass;
+      sx += p.mass * p.lx;
+      sy += p.mass * p.ly;
+      b.parts.push_back(p);
+    }
+    const auto total = value_of(m, bd.pos, "the mass of '" + bd.name + "'");
+    if (m.is_zero() || (total && total->is_zero()))
+      throw SceneError(bd.parts.front().pos, "the parts of body '" + bd.name + "' have no mass together, so it has no mass centre",
+                       "give a part its mass (a light body of one shape is written 'mass: 0' without parts)");
+    const ex cx = normal(sx / m), cy = normal(sy / m);
+    ex I = 0;
+    for (auto& p : b.parts) {
+      p.lx = normal(p.lx - cx);  // (through G)
+      p.ly = normal(p.ly - cy);
+      I += p.inertia + p.mass * (p.lx * p.lx + p.ly * p.ly);
+    }
+    b.mass = m;
+    b.inertia = factor(normal(I));
+    b.ref_x = -cx;
+    b.ref_y = -cy;
   }
 
   /// "lhs = rhs" as lhs − rhs, with its units checked; errors at the text's place.

@@ -317,6 +317,30 @@ struct Loader {
     return true;
   }
 
+  /// A composite body's parts: `parts: {rod: {mass: m1, inertia: {slender_rod: L}, at: [L/2, 0]}, …}`.
+  void read_parts(const Node& parts, BodyDef& b) const {
+    const std::string example = "parts: {rod: {mass: m1, inertia: {slender_rod: L}, at: [L/2, 0]}, disk: {mass: m2, inertia: {disk: r}, at: [L + r, 0]}}";
+    need_map(parts, "parts", example);
+    if (parts.entries.empty()) throw SceneError(parts.pos, "body '" + b.name + "' has no parts", "list its parts: " + example);
+    for (auto& [k, v] : parts.entries) {
+      check_name(k, "part");
+      need_map(v, k.scalar, "{mass: m1, inertia: {slender_rod: L}, at: [L/2, 0]}");
+      only_keys(v, "part '" + k.scalar + "' of body '" + b.name + "'", {"mass", "inertia", "at", "angle"});
+      PartDef p;
+      p.name = k.scalar;
+      p.pos = k.pos;
+      for (const char* key : {"mass", "inertia", "at"})
+        if (!v.get(key))
+          throw SceneError(k.pos, "part '" + k.scalar + "' of body '" + b.name + "' has no '" + key + "'",
+                           std::string("add '") + (std::string(key) == "mass" ? "mass: m1'" : std::string(key) == "inertia" ? "inertia: {disk: r}'" : "at: [x, y]' (its centre, from the body's reference point, in body axes)"));
+      p.mass = text(*v.get("mass"), "mass", "mass: m1");
+      p.inertia = inertia(*v.get("inertia"));
+      std::tie(p.x, p.y) = pair(*v.get("at"), "at", "at: [L/2, 0]");
+      if (auto* a = v.get("angle")) p.angle = text(*a, "angle", "angle: 90 deg");
+      b.parts.push_back(std::move(p));
+    }
+  }
+
   /// The bodies: mass, inertia, position, angle, points.
   void read_bodies(const Node& r, SceneDef& s) const {
     if (auto* p = r.get("bodies")) {
@@ -325,22 +349,32 @@ struct Loader {
         not_a_section(k, r, "bodies");
         check_name(k, "body");
         need_map(v, k.scalar, "{mass: m, inertia: {disk: r}, position: [x, y], angle: phi}");
-        only_keys(v, "body '" + k.scalar + "'", {"mass", "inertia", "position", "angle", "points"});
+        only_keys(v, "body '" + k.scalar + "'", {"mass", "inertia", "position", "angle", "points", "parts"});
         BodyDef b;
         b.name = k.scalar;
         b.pos = k.pos;
-        auto* m = v.get("mass");
-        if (!m) throw SceneError(k.pos, "body '" + k.scalar + "' has no 'mass'", "add 'mass: m'");
-        b.mass = text(*m, "mass", "mass: m");
-        auto* in = v.get("inertia");
-        if (!in)
-          throw SceneError(k.pos, "body '" + k.scalar + "' has no 'inertia'",
-                           "add e.g. 'inertia: {slender_rod: l}' or 'inertia: particle'");
-        b.inertia = inertia(*in);
+        if (auto* parts = v.get("parts")) {
+          // a composite body: its mass, mass centre and Ī are its parts'
+          for (const char* key : {"mass", "inertia"})
+            if (auto* x = v.get(key))
+              throw SceneError(x->pos, "body '" + k.scalar + "' has 'parts', so its " + key + " is theirs",
+                               std::string("remove '") + key + "' (each part has its own 'mass' and 'inertia')");
+          read_parts(*parts, b);
+        } else {
+          auto* m = v.get("mass");
+          if (!m) throw SceneError(k.pos, "body '" + k.scalar + "' has no 'mass'", "add 'mass: m'");
+          b.mass = text(*m, "mass", "mass: m");
+          auto* in = v.get("inertia");
+          if (!in)
+            throw SceneError(k.pos, "body '" + k.scalar + "' has no 'inertia'",
+                             "add e.g. 'inertia: {slender_rod: l}' or 'inertia: particle'");
+          b.inertia = inertia(*in);
+        }
         auto* pos = v.get("position");
         if (!pos)
           throw SceneError(k.pos, "body '" + k.scalar + "' has no 'position'",
-                           "add 'position: [x, y]' of its mass centre in the coordinates");
+                           b.parts.empty() ? "add 'position: [x, y]' of its mass centre in the coordinates"
+                                           : "add 'position: [x, y]' of its reference point (where its parts' 'at' are measured from) in the coordinates");
         auto [x, y] = pair(*pos, "position", "position: [l/2*cos(theta), l/2*sin(theta)]");
         b.x = x;
         b.y = y;

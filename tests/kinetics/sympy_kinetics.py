@@ -17,6 +17,9 @@ asserts:
      (moments about O: I_O alpha = -m g L/2 cos(theta)).
   3. derivations/kinetics/disk_rolls_incline_friction.yaml -- uniform disk rolling without
      slipping down an incline from rest: a, |F|, N, mu_min against the YAML's expect.
+  5. derivations/kinetics/rod_and_disk_pendulum.yaml -- a rod and a disk welded (one composite
+     body in the YAML), here two bodies moving together: moments about O of both, the pin's
+     force from the sum of m a, omega at the vertical from both bodies' energies.
   4. a regression case for the future (not yet a derivation): slender bar AB, end A sliding on a
      smooth floor y = 0, released from rest at theta0 = 60 deg (B above A). Coordinates: xA and
      the bar's angle theta from the +x axis; A = (xA, 0), G = (xA + L/2 cos(theta), L/2 sin(theta)).
@@ -322,12 +325,77 @@ def case4():
     print("    at every state (theta, theta_dot)")
 
 
+# ----------------------------------------------------------------------------- case 5
+def case5():
+    """The rod and the disk as two bodies moving together (no composition formula): moments about
+    O of both, sum_i (Ibar_i alpha + r_i x m_i a_i) = sum_i r_i x W_i (the weld's forces are
+    internal, the pin's have no moment about O); the pin's force from sum_i m_i a_i = R + sum_i W_i;
+    omega at the vertical from the two bodies' kinetic and potential energies."""
+    expect, _ = load_scene("rod_and_disk_pendulum.yaml")
+    m_r, m_d = sp.symbols("m_r m_d", positive=True)
+    th_f = sp.Function("theta")(t)
+    th, thd, thdd = sp.symbols("theta theta_dot theta_ddot")
+    coords = {th_f: (th, thd, thdd)}
+    parts = [(m_r, m_r * L**2 / 12, L / 2), (m_d, m_d * r**2 / 2, L + r)]  # mass, Ibar, distance from O
+    Rx, Ry = sp.symbols("Rx Ry")
+    vals = {m_r: 3, m_d: 5, L: Q(8, 10), r: Q(2, 10), g: Q(981, 100)}
+    print("Case 5: rod_and_disk_pendulum.yaml (m_r = 3 kg, m_d = 5 kg, L = 0.8 m, r = 0.2 m, g = 9.81)")
+
+    def newton_euler(state):
+        moment_lhs, moment_rhs, sum_ma = 0, 0, [0, 0]
+        for mass, Ib, dist in parts:
+            rG = [dist * cos(th_f), dist * sin(th_f)]
+            aG = [kin(sp.diff(c, t, 2), coords) for c in rG]
+            rGs = [kin(c, coords) for c in rG]
+            moment_lhs += Ib * thdd + cross(rGs, [mass * aG[0], mass * aG[1]])
+            moment_rhs += cross(rGs, [0, -mass * g])
+            sum_ma = [sum_ma[0] + mass * aG[0], sum_ma[1] + mass * aG[1]]
+        eqs = [sp.Eq(moment_lhs, moment_rhs), sp.Eq(sum_ma[0], Rx), sp.Eq(sum_ma[1], Ry - (m_r + m_d) * g)]
+        eqs = [e.subs(state) for e in eqs]
+        sol = sp.solve(eqs, [thdd, Rx, Ry], dict=True)
+        assert len(sol) == 1
+        return {k: sp.simplify(v) for k, v in sol[0].items()}
+
+    s1 = newton_euler({th: 0, thd: 0})
+    # energy from theta = 0 at rest to theta = -pi/2: sum (m v^2 + Ibar w^2)/2 = -sum m g dy
+    w = sp.symbols("w")
+    T = sum((mass * dist**2 + Ib) * w**2 / 2 for mass, Ib, dist in parts)
+    drop = sum(mass * g * dist for mass, Ib, dist in parts)  # each centre falls by its distance from O
+    w2 = [x for x in sp.solve(sp.Eq(T, drop), w) if float(x.subs(vals)) < 0][0]  # turning clockwise
+    s2 = newton_euler({th: -pi / 2, thd: w2})
+    print("  at the release (moments about O of both parts):")
+    a1 = show("alpha1", s1[thdd], vals, "rad/s^2")
+    rx1 = show("Rx1", s1[Rx], vals, "N")
+    ry1 = show("Ry1", s1[Ry], vals, "N")
+    print("  at the vertical (energy, then moments about O):")
+    o2 = show("omega2", w2, vals, "rad/s")
+    ry2 = show("Ry2", s2[Ry], vals, "N")
+    assert sp.simplify(s2[thdd]) == 0 and sp.simplify(s2[Rx]) == 0
+    print("  against the YAML's expect:")
+    local = dict(SYMS, m_r=m_r, m_d=m_d)
+    for name, d in [("alpha1", a1), ("Rx1", rx1), ("Ry1", ry1), ("omega2", o2), ("Ry2", ry2)]:
+        form_text, value_text = expect[name]
+        form = sp.sympify(form_text.replace("^", "**"), locals=local)
+        assert sp.simplify(d - form) == 0, f"{name}: derived {d} != claimed form {form}"
+        literal = value_text.split()[0]
+        v = float(sp.N(d.subs(vals), 30))
+        if float(literal) == 0:
+            assert abs(v) < 1e-12
+        else:
+            sf = sig_figs(literal)
+            assert float(f"{v:.{sf - 1}e}") == float(literal), f"{name}: derived {v}, claimed {literal}"
+        print(f"    {name}: form {form_text} proved; value {value_text} matches")
+    assert set(expect) == {"alpha1", "Rx1", "Ry1", "omega2", "Ry2"}
+
+
 def main():
     case1_2()
     print()
     case3()
     print()
     case4()
+    print()
+    case5()
     print()
     print("all checks passed")
 

@@ -40,10 +40,21 @@ struct Body {
   std::string name;
   SourcePos pos;
   ex mass, inertia;            ///< m and centroidal Ī
-  std::string shape;           ///< its inertia shape's name (model/inertia.hpp): how it is drawn
+  std::string shape;           ///< its inertia shape's name (model/inertia.hpp): how it is drawn ("" for a composite body)
   std::vector<ex> sizes;       ///< the shape's sizes (lengths; Ī for `centroidal`)
   ex x, y, angle;              ///< mass centre and body angle in coordinates (and t)
   std::map<std::string, std::pair<ex, ex>> points;  ///< body axes through G
+  /// A part of a composite body (welded to the others): its own mass, shape and Ī about its
+  /// centre, its centre in body axes through the body's G and its turn there.
+  struct Part {
+    std::string name;
+    ex mass, inertia;
+    std::string shape;
+    std::vector<ex> sizes;
+    ex lx, ly, angle;
+  };
+  std::vector<Part> parts;  ///< a composite body's parts (empty for a body of one shape)
+  ex ref_x = 0, ref_y = 0;  ///< a composite body: its reference point (where the scene measures its parts from), in body axes through G
 };
 
 struct State {

@@ -49,14 +49,25 @@ struct InertiaDef {
   SourcePos pos;
 };
 
+/// A part of a composite body: its own mass and shape, its centre and turn in the body's axes.
+struct PartDef {
+  std::string name;
+  SourcePos pos;
+  Text mass;
+  InertiaDef inertia;
+  Text x, y;                 ///< its centre, from the body's reference point
+  std::optional<Text> angle;  ///< its turn in body axes (how it is drawn; 0 by default)
+};
+
 struct BodyDef {
   std::string name;
   SourcePos pos;
   Text mass;
   InertiaDef inertia;
-  Text x, y;                     ///< mass-centre position
+  Text x, y;                     ///< mass-centre position (a composite body: its reference point's)
   std::optional<Text> angle;
-  std::vector<PointDef> points;  ///< in body axes through G
+  std::vector<PointDef> points;  ///< in body axes through G (a composite body: through its reference point)
+  std::vector<PartDef> parts;    ///< a composite body's parts (then mass and inertia are theirs)
 };
 
 /// An effect: its name, its kind and the rest of its map (checked by the model per kind).
