@@ -645,6 +645,22 @@ private:
     };
     for (auto& bal : sol_.balances)
       for (auto& c : bal->conditions()) hold(c);
+    // the equations that follow from the solved ones at a general state must hold here too
+    for (auto& bal : sol_.balances)
+      for (auto& q : bal->checked()) {
+        ex r;
+        try {
+          r = q.residual().subs(given).subs(b.sol);
+        } catch (const std::exception&) {
+          continue;  // undefined at this branch: its own equations say so
+        }
+        auto zero = numerics::negligible(r, env, 30);
+        if (!zero || *zero) continue;
+        auto v = numerics::evaluate(r, env, 30);
+        throw SceneError(q.pos, "the " + q.label + " does not hold on this solution (off by " + (v ? numerics::format(*v, 6) : std::string("?")) +
+                                    " in SI units), so it is no solution of the scene",
+                         "check the states' conditions; a state where a support's force vanishes may be reached only on one side");
+      }
   }
 
   /// The greatest or least value of r.closed as f's parameter p runs over [lo, hi] (or where it

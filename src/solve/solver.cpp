@@ -306,6 +306,7 @@ private:
     ex r = q.residual();
     auto us = unknowns_in(r);
     if (us.size() != 1) {
+      if (square_step(st)) return;
       std::string names;
       for (auto& u : us) names += (names.empty() ? "" : ", ") + model::text(u);
       throw SolveError("cannot solve the " + q.label + ": it is nonlinear in several unknowns (" + names + ")",
@@ -362,6 +363,9 @@ private:
              how + " (quadratic)");
       return;
     }
+    // a product is zero where one of its factors is: sin θ (3 cos θ − 2) = 0 — each factor that
+    // holds u solved on its own, one branch each
+    if (factor_step(st, q, u)) return;
     // trigonometric: polynomial of degree ≤ 2 in sin(u), cos(u) or tan(u) alone
     symbol z("z");
     for (int kind = 0; kind < 3; ++kind) {
@@ -393,6 +397,62 @@ private:
       return;
     }
     numeric_roots(st, q, u);
+  }
+
+  // Several unknowns, and an equation in which one of them, u, appears only squared with a
+  // coefficient free of unknowns: a u² + c = 0 with c holding the others ⇒ u = ±√(−c/a), one
+  // branch each, −c/a ≥ 0 checked on the solution (energy, m v²/2 = m g R (1 − cos θ), gives the
+  // rate in terms of the position that another equation then fixes).
+  // Only where the equations left are as many as their unknowns: with fewer, the system is
+  // underdetermined, and saying so beats a branch per sign.
+  bool square_step(const State& st) {
+    std::vector<ex> all;
+    for (auto& q : st.eqs)
+      for (auto& u : unknowns_in(q.residual()))
+        if (std::none_of(all.begin(), all.end(), [&](const ex& x) { return x.is_equal(u); })) all.push_back(u);
+    if (all.size() > st.eqs.size()) return false;
+    for (auto& q : st.eqs) {
+      const ex r = q.residual();
+      for (auto& x : unknowns_in(r)) {
+        if (!is_a<symbol>(x)) continue;
+        const symbol& u = ex_to<symbol>(x);
+        const ex d2 = r.diff(u, 2);
+        if (d2.is_zero() || d2.has(u) || !free_of_unknowns(d2) || !r.diff(u, 3).is_zero()) continue;
+        if (!normal(r.diff(u).subs(u == 0)).is_zero()) continue;  // a term odd in u
+        bool known = false;
+        if (numerically_zero(d2, p_.env, known)) continue;
+        const ex sq = model::tidy(-r.subs(u == 0)) / model::tidy(d2 / 2);
+        State s = st;
+        s.signs.push_back(sq);
+        branch(s, q, u, {sqrt(sq), -sqrt(sq)}, q.label + " (its square)");
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // u solved from each factor of q's residual that holds it, when it has two or more.
+  bool factor_step(const State& st, const Equation& q, const symbol& u) {
+    exvector parts;
+    try {
+      parts = model::factors_of(model::factor_any(numer_denom(q.residual()).op(0)));
+    } catch (const std::exception&) {
+      return false;
+    }
+    exvector with_u;
+    for (auto& f : parts)
+      if (f.has(u)) with_u.push_back(is_a<power>(f) && f.op(1).info(info_flags::posint) ? f.op(0) : f);
+    if (with_u.size() < 2) return false;
+    for (auto& f : with_u) {
+      State s = st;
+      for (auto& e : s.eqs)
+        if (e.residual().is_equal(q.residual())) {
+          e = {f, 0, e.principle, e.label, e.pos};
+          break;
+        }
+      work_.push_back(std::move(s));
+    }
+    return true;
   }
 
   // No closed form: find the sign changes of the residual around a reference and refine.

@@ -20,6 +20,8 @@ asserts:
   5. derivations/kinetics/rod_and_disk_pendulum.yaml -- a rod and a disk welded (one composite
      body in the YAML), here two bodies moving together: moments about O of both, the pin's
      force from the sum of m a, omega at the vertical from both bodies' energies.
+  6. derivations/kinetics/ball_leaves_dome.yaml -- a ball sliding off a smooth dome leaves it
+     where the normal force vanishes: energy and the normal equation in polar form.
   4. a regression case for the future (not yet a derivation): slender bar AB, end A sliding on a
      smooth floor y = 0, released from rest at theta0 = 60 deg (B above A). Coordinates: xA and
      the bar's angle theta from the +x axis; A = (xA, 0), G = (xA + L/2 cos(theta), L/2 sin(theta)).
@@ -388,6 +390,40 @@ def case5():
     assert set(expect) == {"alpha1", "Rx1", "Ry1", "omega2", "Ry2"}
 
 
+# ----------------------------------------------------------------------------- case 6
+def case6():
+    """The ball on the dome, in polar form (no Lagrange, no kinergy): energy from the top,
+    m v^2/2 = m g R (1 - cos(theta)); along the normal towards the centre, m g cos(theta) - N =
+    m v^2/R; the ball leaves where N = 0."""
+    expect, positions = load_scene("ball_leaves_dome.yaml")
+    R = sp.symbols("R", positive=True)
+    th = sp.symbols("theta", positive=True)
+    v2 = 2 * g * R * (1 - cos(th))          # v^2 from energy
+    N = m * g * cos(th) - m * v2 / R         # the dome's push
+    roots = [x for x in sp.solve(sp.Eq(N, 0), th) if x.is_positive and x < pi / 2]
+    assert len(roots) == 1
+    theta2 = sp.simplify(roots[0])
+    vals = {m: Q(4, 10), R: Q(15, 10), g: Q(981, 100)}
+    print("Case 6: ball_leaves_dome.yaml (m = 0.4 kg, R = 1.5 m, g = 9.81)")
+    Rp, thp = sp.Symbol("R"), sp.Symbol("theta")  # as the YAML's text reads (no assumptions)
+    check_positions(positions, "ball", [Rp * sin(thp), Rp * cos(thp)])
+    t2 = show("theta2", theta2, vals, "rad")
+    v = show("v2", sp.sqrt(v2.subs(th, theta2)), vals, "m/s")
+    d = show("drop", R - R * cos(theta2), vals, "m")
+    # the YAML gives theta2 in degrees: its value is checked in degrees
+    local = dict(SYMS, R=R)
+    for name, derived, scale in [("theta2", t2, 180 / pi), ("v2", v, 1), ("drop", d, 1)]:
+        form_text, value_text = expect[name]
+        form = sp.sympify(form_text.replace("^", "**"), locals=local)
+        assert sp.simplify(derived - form) == 0, f"{name}: derived {derived} != claimed form {form}"
+        literal = value_text.split()[0]
+        val = float(sp.N((derived * scale).subs(vals), 30))
+        sf = sig_figs(literal)
+        assert float(f"{val:.{sf - 1}e}") == float(literal), f"{name}: derived {val}, claimed {literal}"
+        print(f"    {name}: form {form_text} proved; value {value_text} matches")
+    assert set(expect) == {"theta2", "v2", "drop"}
+
+
 def main():
     case1_2()
     print()
@@ -396,6 +432,8 @@ def main():
     case4()
     print()
     case5()
+    print()
+    case6()
     print()
     print("all checks passed")
 

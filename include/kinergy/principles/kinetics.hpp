@@ -50,6 +50,12 @@ struct KineticsBalance : Balance {
     return out;
   }
   std::vector<Condition> conditions() const override { return {}; }
+  std::vector<Equation> checked() const override {
+    std::vector<Equation> out;
+    for (auto& r : rows)
+      if (!r.used) out.push_back(r.equation);
+    return out;
+  }
 };
 
 /// The unknowns kinetics at state `s` brings for body set `bodies`: q̈ of every coordinate, the

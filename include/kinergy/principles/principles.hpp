@@ -41,6 +41,11 @@ struct Balance {
   /// (the positions a momentum balance integrates to, where the scene's other equations do not
   /// already give them).
   virtual std::vector<Equation> reserve() const { return {}; }
+  /// Equations a solution must also satisfy, not solved: they follow from its equations at a
+  /// general state but need not at a particular one (kinetics' rows left out at a sample point,
+  /// where a coefficient vanishes at the solution: sin θ = 0). A branch that breaks one is no
+  /// solution.
+  virtual std::vector<Equation> checked() const { return {}; }
   /// Why it does not give unknown u where a result asks for it ("" when it has nothing to say).
   virtual std::string why_not(const ex&) const { return ""; }
 };
