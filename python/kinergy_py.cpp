@@ -65,21 +65,31 @@ struct PyResult {
   std::shared_ptr<const Solution> s;
   std::size_t i;
   const Result& r() const { return s->results[i]; }
-  std::string value(int digits) const {
+  // the digits asked for, checked as a batch request's are (numerics::valid_digits)
+  static void check_digits(long long digits) {
+    if (!numerics::valid_digits(digits)) {
+      auto [what, fix] = numerics::digits_fault("digits = " + std::to_string(digits));
+      throw InputError(what, fix);
+    }
+  }
+  std::string value(long long digits) const {
+    check_digits(digits);
     if (!r().si) throw InputError("'" + r().name + "' has no value: a parameter in it has none", "give every parameter a value");
-    auto v = r().evaluate(s->model.numeric_environment(), digits, digits <= 15);
+    auto v = r().evaluate(s->model.numeric_environment(), static_cast<int>(digits), digits <= 15);
     if (!v) throw InputError("'" + r().name + "' could not be evaluated", "ask for fewer digits");
-    return numerics::format(v->v, digits);
+    return numerics::format(v->v, static_cast<int>(digits));
   }
   double to_float() const { return std::stod(value(17)); }
   // the value proven by ball arithmetic, as `kinergy solve --digits N --json` gives it
-  py::dict ball(int digits) const {
+  py::dict ball(long long digits) const {
+    check_digits(digits);
+    const int n = static_cast<int>(digits);
     if (!r().si) throw InputError("'" + r().name + "' has no value: a parameter in it has none", "give every parameter a value");
-    auto v = r().evaluate(s->model.numeric_environment(), digits, false);
+    auto v = r().evaluate(s->model.numeric_environment(), n, false);
     if (!v) throw InputError("'" + r().name + "' could not be evaluated", "ask for fewer digits");
-    auto [mid, rad] = v->ball(digits);
+    auto [mid, rad] = v->ball(n);
     py::dict d;
-    d["value"] = numerics::format(v->v, digits);
+    d["value"] = numerics::format(v->v, n);
     d["proven"] = v->proven;
     d["midpoint"] = mid;
     d["radius"] = rad.empty() ? py::object(py::none()) : py::object(py::str(rad));

@@ -272,7 +272,8 @@ public:
           if (f.value.has(qs.first) || f.value.has(qs.second)) add_state(static_cast<int>(s));
     for (auto& e : sol_.equations) check_units(e);
     choose(solve(sol_.equations));
-    if (draw_on_reserves()) choose(solve(sol_.equations));
+    // (again while they bring in more: a chain of analyses, x@3 from x@2 from x@1)
+    for (int round = 0; round < 8 && draw_on_reserves(); ++round) choose(solve(sol_.equations));
     solve_in_roots();
     for (auto& f : m.finds) sol_.results.push_back(result(f));
   }
@@ -360,18 +361,23 @@ private:
   /// Add the balances' reserve equations that hold an unknown a result is left with (the
   /// positions a momentum balance integrates to). Whether any was added.
   bool draw_on_reserves() {
-    const std::vector<ex> open = undetermined();
-    if (open.empty()) return false;
+    std::vector<ex> open = undetermined();
     bool added = false;
-    for (auto& b : sol_.balances)
-      for (auto& e : b->reserve()) {
-        const ex r = e.residual();
-        if (std::none_of(open.begin(), open.end(), [&](const ex& u) { return r.has(u); })) continue;
-        check_units(e);
-        sol_.equations.push_back(e);
-        sol_.drawn_on.push_back(e);
-        added = true;
-      }
+    // and what the equations drawn on bring in (x@3 from x@2: the analysis before gives x@2)
+    for (bool more = !open.empty(); more;) {
+      more = false;
+      for (auto& b : sol_.balances)
+        for (auto& e : b->reserve()) {
+          const ex r = e.residual();
+          if (sol_.drew_on(e) || std::none_of(open.begin(), open.end(), [&](const ex& u) { return r.has(u); })) continue;
+          check_units(e);
+          sol_.equations.push_back(e);
+          sol_.drawn_on.push_back(e);
+          added = more = true;
+          for (auto& u : unknowns)
+            if (r.has(u) && std::none_of(open.begin(), open.end(), [&](const ex& x) { return x.is_equal(u); })) open.push_back(u);
+        }
+    }
     return added;
   }
 

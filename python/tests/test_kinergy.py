@@ -110,6 +110,14 @@ def test_errors_carry_their_place_and_fix():
     assert "is in kg but must be in m" in e.value.message
     with pytest.raises(KeyError):
         kinergy.load(ROD).solve()["nothing"]
+    # digits outside 1..1000 are refused at once (they ran for ever and took gigabytes)
+    r = kinergy.load(ROD).solve()["omega2"]
+    for bad in (0, -5, 1001, 10**12):
+        for ask in (r.value, r.ball):
+            with pytest.raises(kinergy.SceneError) as e:
+                ask(bad)
+            assert "is not a whole number from 1 to 1000" in e.value.message and e.value.fix
+    assert abs(float(r.value(1000)[:18]) - float(r)) < 1e-12 * abs(float(r))
 
 
 def test_version():

@@ -13,6 +13,7 @@
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/common/markup.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/emit/emit.hpp"
 #include "kinergy/problem.hpp"
@@ -108,7 +109,7 @@ Outcome run_request(const std::string& request, std::size_t number) {
       } catch (const YAML::Exception&) {
         digits = 0;
       }
-      if (digits < 1 || digits > 1000) throw BadRequest{"\"digits\" is not a whole number from 1 to 1000", "write \"digits\": 15"};
+      if (!numerics::valid_digits(digits)) throw BadRequest{numerics::digits_fault("\"digits\"").first, "write \"digits\": 15"};
       o.digits = digits;
       o.guaranteed = true;
     }

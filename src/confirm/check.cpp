@@ -421,7 +421,7 @@ std::vector<draw::Motion> motions(const Solution& s, int samples) {
       double L = 0, v = 0;
       for (std::size_t b = 0; b < m.bodies.size(); ++b) {
         double size = 0;
-        for (auto& z : m.bodies[b].sizes) size = std::max(size, std::fabs(number(z)));
+        for (auto& z : m.bodies[b].lengths()) size = std::max(size, std::fabs(number(z)));
         L = std::max(L, size);
         v = std::max({v, std::hypot(number(m.rate(m.bodies[b].x)), number(m.rate(m.bodies[b].y))), std::fabs(number(m.omega(static_cast<int>(b)))) * size});
         for (std::size_t c = 0; c < b; ++c)

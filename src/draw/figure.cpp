@@ -667,7 +667,7 @@ double glyph_for(const model::Model& m, const At& at) {
   // glyphs (marks, arrows, ground) sized from the extent of a first drawing
   double extent = 0;
   for (auto& b : m.bodies)
-    for (auto& sz : b.sizes) extent = std::max(extent, std::fabs(at(sz)));
+    for (auto& sz : b.lengths()) extent = std::max(extent, std::fabs(at(sz)));
   const double first = drawing(m, at, 0.045 * (extent > 0 ? extent : 1)).extent();
   return 0.045 * (first > 0 ? first : 1);
 }

@@ -875,7 +875,10 @@ private:
     // a condition on a support's force at a state (a contact lost where N(dome)@2 = 0) needs the
     // kinetics there too
     for (auto& st : m_.states)
-      for (auto& [e, pos] : st.where) kinetics_for(e, pos, "the condition at state '" + st.name + "'");
+      for (auto& [e, pos] : st.where) {
+        kinetics_for(e, pos, "the condition at state '" + st.name + "'");
+        positions_for(e);  // (the time to travel a distance: t@2 where x = d)
+      }
     for (auto& fd : d_.finds) {
       Find f;
       f.name = fd.name;
@@ -972,15 +975,21 @@ private:
   /// A result that asks for a position at a state of an analysis that integrates its momenta to
   /// positions (the distance a disk slid before it rolls: x@2), which the state does not give:
   /// that analysis adds the equations that give it.
+  /// A coordinate asked at one state is asked at the states of every such analysis, so that a
+  /// chain of them (1 → 2 → 3, x@3 asked) carries the position through.
   void positions_for(const ex& value) {
-    for (Analysis& a : m_.analyses) {
-      if (!a.type->gives_positions() || a.instant()) continue;
-      for (int s : {a.from, a.to}) {
-        const State& st = m_.states[static_cast<std::size_t>(s)];
-        for (auto& c : m_.coords) {
+    for (auto& c : m_.coords) {
+      const bool asked = std::any_of(m_.states.begin(), m_.states.end(), [&](const State& st) {
+        const ex q = st.sym.at(c.name).first;
+        return value.has(q) && !st.given.count(q);
+      });
+      if (!asked) continue;
+      for (Analysis& a : m_.analyses) {
+        if (!a.type->gives_positions() || a.instant()) continue;
+        for (int s : {a.from, a.to}) {
+          const State& st = m_.states[static_cast<std::size_t>(s)];
           const ex q = st.sym.at(c.name).first;
-          if (value.has(q) && !st.given.count(q) &&
-              std::none_of(a.positions_asked.begin(), a.positions_asked.end(), [&](const ex& x) { return x.is_equal(q); }))
+          if (!st.given.count(q) && std::none_of(a.positions_asked.begin(), a.positions_asked.end(), [&](const ex& x) { return x.is_equal(q); }))
             a.positions_asked.push_back(q);
         }
       }

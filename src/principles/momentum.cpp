@@ -61,6 +61,15 @@ int motion_direction(const Model& m, const Effect& e, std::optional<int> declare
                                   m.states[s].name + "' is " + word(told) + " (" + model::text(m.bind(generic, s)) + " = " +
                                   numerics::format(*v, 6) + ")",
                        "remove 'direction:' from '" + e.name + "' (the states tell it), or check the states");
+    // told by one state: at the other it must not go the other way (a block that stops inside
+    // the interval and would be pushed back by a friction that no longer acts so)
+    const int other = s == a.from ? a.to : a.from;
+    if (holds)
+      holds->push_back({told * m.bind(generic, other),
+                        "the " + what + " under '" + e.name + "' is " + word(told) + " at state '" + m.states[s].name + "' but the other way at state '" +
+                            m.states[other].name + "' (by {} in SI units): it stops between them, and kinetic friction does not keep pushing the same way after",
+                        "end the analysis where the " + what + " stops (a state with 'where: [\"... = 0\"]'), and take what follows from there",
+                        e.pos});
     return told;
   }
   if (declared) {

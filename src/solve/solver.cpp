@@ -443,13 +443,11 @@ private:
     for (auto& f : parts)
       if (f.has(u)) with_u.push_back(is_a<power>(f) && f.op(1).info(info_flags::posint) ? f.op(0) : f);
     if (with_u.size() < 2) return false;
+    // each factor first (solved next), the equation itself kept: a root of a factor where the
+    // rest is undefined (0/0: sin θ/tan θ at θ = 0) is then no root
     for (auto& f : with_u) {
       State s = st;
-      for (auto& e : s.eqs)
-        if (e.residual().is_equal(q.residual())) {
-          e = {f, 0, e.principle, e.label, e.pos};
-          break;
-        }
+      s.eqs.insert(s.eqs.begin(), {f, 0, q.principle, q.label, q.pos});
       work_.push_back(std::move(s));
     }
     return true;

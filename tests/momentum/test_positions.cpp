@@ -82,3 +82,39 @@ TEST_CASE("positions over a duration: what is refused, and why", "[momentum][pos
                                             Catch::Contains("the impulse of 'cord' along y is an unknown total, not a force known in time") &&
                                             Catch::Contains("give y@2 at its state"));
 }
+
+TEST_CASE("positions over a duration: a chain of analyses, the time to travel a distance, a motion that stops", "[momentum][positions]") {
+  // two legs under a constant force from rest: x₃ = F t₃²/(2m) = 4·4/4 = 4 m (x@2 from the first leg)
+  std::string chain = kt::edit(pushed_block("P", "0"), "  2: {t: t2}\n", "  2: {t: t2}\n  3: {t: 2*t2}\n");
+  chain = kt::edit(chain, "  - momentum: {from: 1, to: 2, along: x}\n",
+                   "  - momentum: {from: 1, to: 2, along: x}\n  - momentum: {from: 2, to: 3, along: x}\n");
+  chain = kt::edit(chain, "x2: {value: x@2, unit: m}", "x3: {value: x@3, unit: m}");
+  CHECK(value(solve_text(chain), "x3") == Approx(10.0 * 16 / 8).epsilon(1e-14));
+  // F = c t from rest until x = a: x = c t³/(6m), t = (6 m a/c)^(1/3) = 2 s
+  std::string travel = kt::edit(pushed_block("c*t", "0"), "  2: {t: t2}", "  2: {where: [\"x = a\"]}");
+  travel = kt::edit(travel, "  t2: 2 s", "  a: 2 m");
+  travel = kt::edit(travel, "x2: {value: x@2, unit: m}", "t2: {value: t@2, root: positive, unit: s}");
+  CHECK(value(solve_text(travel), "t2") == Approx(std::cbrt(6.0 * 4 * 2 / 6)).epsilon(1e-13));
+  // a block that stops inside the interval: kinetic friction would be taken pushing back after
+  // it stops (v₂ = v0 − μ g t₂ < 0): refused, saying where to end the analysis
+  const std::string stop = R"(title: block stops
+parameters: {m: 2 kg, g: 9.81 m/s^2, mu_k: 0.5, v0: 3 m/s, t2: 2 s}
+coordinates: {x: m}
+bodies:
+  block: {mass: m, inertia: particle, position: [x, 0]}
+effects:
+  rub: {friction: block, mu: mu_k, normal: m*g}
+states:
+  1: {t: 0, x: 0, x_dot: v0}
+  2: {t: t2}
+analyses:
+  - momentum: {from: 1, to: 2, along: x}
+find:
+  d: {value: x@2, unit: m}
+)";
+  REQUIRE_THROWS_WITH(solve_text(stop), Catch::Contains("the sliding under 'rub' is positive at state '1' but the other way at state '2'") &&
+                                            Catch::Contains("end the analysis where the sliding stops"));
+  // ended where it stops: d = v0²/(2 μ g)
+  std::string stops = kt::edit(stop, "  2: {t: t2}", "  2: {where: [\"x_dot = 0\"]}");
+  CHECK(value(solve_text(stops), "d") == Approx(9.0 / (2 * 0.5 * 9.81)).epsilon(1e-14));
+}

@@ -321,3 +321,43 @@ TEST_CASE("solver: an unknown that also appears alone is not a product", "[solve
   p.unknowns = {F, t};
   REQUIRE_THROWS_WITH(solve(p), Catch::Contains("nonlinear in several unknowns"));
 }
+
+TEST_CASE("solver: a product that is zero, factor by factor, and a root where the rest is 0/0 is none", "[solve][trig]") {
+  realsymbol u("u"), v("v");
+  // sin u (3 cos u − 2) = 0: u = 0, π from the first factor, ±acos(2/3) from the second — closed forms
+  Problem p;
+  p.equations = {eq(sin(u) * (3 * cos(u) - 2), 0)};
+  p.unknowns = {u};
+  auto bs = solve(p);
+  auto vals = values_of(bs, u);
+  REQUIRE(vals.size() == 4);
+  CHECK(vals[0] == Approx(-std::acos(2.0 / 3)).epsilon(1e-14));
+  CHECK(vals[1] == Approx(0.0).margin(1e-15));
+  CHECK(vals[2] == Approx(std::acos(2.0 / 3)).epsilon(1e-14));
+  CHECK(vals[3] == Approx(M_PI).epsilon(1e-14));
+  for (auto& b : bs) CHECK(b.numeric_only.empty());
+  // sin u (3 cos u − 2)/tan u = 0: at u = 0 and π the equation is 0/0 (its limit is ±1), no root
+  Problem q;
+  q.equations = {eq(sin(u) * (3 * cos(u) - 2) / tan(u), 0)};
+  q.unknowns = {u};
+  vals = values_of(solve(q), u);
+  REQUIRE(vals.size() == 2);
+  CHECK(vals[0] == Approx(-std::acos(2.0 / 3)).epsilon(1e-14));
+  CHECK(vals[1] == Approx(std::acos(2.0 / 3)).epsilon(1e-14));
+  // two unknowns, one only squared (v² = 2(1 − cos u)) and one equation v² = cos u: cos u = 2/3,
+  // v = ±√(2/3)
+  Problem r;
+  r.equations = {eq(pow(v, 2), 2 * (1 - cos(u))), eq(pow(v, 2), cos(u))};
+  r.unknowns = {u, v};
+  auto rs = solve(r);
+  REQUIRE(!rs.empty());
+  for (auto& b : rs) {
+    CHECK(std::cos(kt::to_double(b.sol.at(u))) == Approx(2.0 / 3).epsilon(1e-14));
+    CHECK(std::fabs(kt::to_double(b.sol.at(v))) == Approx(std::sqrt(2.0 / 3)).epsilon(1e-14));
+  }
+  // …but one equation in two unknowns is underdetermined: refused as before, not a branch per sign
+  Problem w;
+  w.equations = {eq(pow(v, 2), 2 * (1 - cos(u)))};
+  w.unknowns = {u, v};
+  REQUIRE_THROWS_WITH(solve(w), Catch::Contains("nonlinear in several unknowns"));
+}

@@ -54,6 +54,16 @@ struct Body {
     ex lx, ly, angle;
   };
   std::vector<Part> parts;  ///< a composite body's parts (empty for a body of one shape)
+  /// The lengths that size it, for drawing and time scales: its shape's sizes, or a composite
+  /// body's parts' sizes and their centres' offsets from G.
+  std::vector<ex> lengths() const {
+    std::vector<ex> out = sizes;
+    for (auto& p : parts) {
+      out.insert(out.end(), p.sizes.begin(), p.sizes.end());
+      out.insert(out.end(), {p.lx, p.ly});
+    }
+    return out;
+  }
   ex ref_x = 0, ref_y = 0;  ///< a composite body: its reference point (where the scene measures its parts from), in body axes through G
 };
 

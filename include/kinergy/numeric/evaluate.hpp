@@ -7,6 +7,16 @@
 
 namespace kinergy::numerics {
 
+/// The significant digits a value may be asked for, in a batch request's "digits" and the Python
+/// module's value() and ball(): 1 to kMaxDigits (more would run for minutes and take gigabytes).
+inline constexpr int kMaxDigits = 1000;
+/// Is `digits` a number of significant digits one may ask for?
+inline bool valid_digits(long long digits) { return digits >= 1 && digits <= kMaxDigits; }
+/// What to say of digits that are not: the problem, and its fix.
+inline std::pair<std::string, std::string> digits_fault(const std::string& what) {
+  return {what + " is not a whole number from 1 to " + std::to_string(kMaxDigits), "ask for 15 digits (a double's), or up to " + std::to_string(kMaxDigits)};
+}
+
 /// Evaluate e with `values` substituted, using `digits` decimal working digits.
 /// @returns nothing when e is not a real number (symbols left, complex, undefined).
 /// Nothing too when a sin, cos or tan in it has an argument too large for any working precision
