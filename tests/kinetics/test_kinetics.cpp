@@ -13,6 +13,7 @@
 namespace {
 
 using kt::solve_text;
+const auto& value = kt::result_si;
 using GiNaC::ex;
 
 std::string bar_scene() {
@@ -22,12 +23,6 @@ std::string bar_scene() {
   return ss.str();
 }
 
-double value(const kinergy::Solution& s, const std::string& name) {
-  for (auto& r : s.results)
-    if (r.name == name) return GiNaC::ex_to<GiNaC::numeric>(r.closed.subs(s.model.parameter_values()).evalf()).to_double();
-  FAIL("no result " << name);
-  return 0;
-}
 
 }  // namespace
 

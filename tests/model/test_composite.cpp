@@ -12,18 +12,13 @@
 namespace {
 
 using kt::solve_text;
+const auto& value = kt::result_si;
 using namespace kt_errors;
 
 double num(const kinergy::model::Model& m, const GiNaC::ex& e) {
   return GiNaC::ex_to<GiNaC::numeric>(e.subs(m.parameter_values()).evalf()).to_double();
 }
 
-double value(const kinergy::Solution& s, const std::string& name) {
-  for (auto& r : s.results)
-    if (r.name == name) return GiNaC::ex_to<GiNaC::numeric>(r.closed.subs(s.model.parameter_values()).evalf()).to_double();
-  FAIL("no result " << name);
-  return 0;
-}
 
 // A wheel: a ring (m1, radius R) with two diametral rods (m2 each, length 2R, one turned 90°),
 // rolling without slipping down an incline of angle beta from rest through a distance s.

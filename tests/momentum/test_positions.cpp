@@ -11,13 +11,8 @@
 namespace {
 
 using kt::solve_text;
+const auto& value = kt::result_si;
 
-double value(const kinergy::Solution& s, const std::string& name) {
-  for (auto& r : s.results)
-    if (r.name == name) return GiNaC::ex_to<GiNaC::numeric>(r.closed.subs(s.model.parameter_values()).evalf()).to_double();
-  FAIL("no result " << name);
-  return 0;
-}
 
 // A block on a smooth floor, pushed along x by F(t) from x = 0 with speed v1.
 std::string pushed_block(const std::string& F, const std::string& v1) {

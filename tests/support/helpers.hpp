@@ -167,6 +167,14 @@ inline bool close(double a, double b, double rel) {
 
 inline double to_double(const ex& e, const exmap& values = {}) { return value(e, values, 30).to_double(); }
 
+/// The value in SI of the result `name` of a solved scene: its closed form at the parameters'
+/// values (fails the test when the scene has no such result).
+inline double result_si(const kinergy::Solution& s, const std::string& name) {
+  for (auto& r : s.results)
+    if (r.name == name) return GiNaC::ex_to<numeric>(r.closed.subs(s.model.parameter_values()).evalf()).to_double();
+  throw std::runtime_error("no result " + name);
+}
+
 }  // namespace kt
 
 #include <csignal>
