@@ -144,8 +144,15 @@ private:
         q.lhs = q.lhs.subs(u == v);
         q.rhs = q.rhs.subs(u == v);
       } catch (const std::exception& err) {
-        throw SolveError("the " + q.label + " is undefined when " + model::text(u) + " = " + model::text(v) + " (" + model::math_fault(err) + ")",
-                         "check the values given at the states", q.pos);
+        // Newton's law at a state where a force of the motion has no value: kinetic friction
+        // where nothing slides (its direction v/|v| is 0/0), a drive at rest
+        const bool at_instant = q.principle == "kinetics";
+        throw SolveError("the " + q.label + " is undefined when " + model::text(u) + " = " + model::text(v) + " (" + model::math_fault(err) + ")" +
+                             (at_instant ? ": a kinetic friction where nothing slides (or a drive at rest) has no force there" : ""),
+                         at_instant ? "take the kinetics at a state where it slides, or hold the rolling there with a constraint effect "
+                                      "(its force is then a reaction: F(name)@S)"
+                                    : "check the values given at the states",
+                         q.pos);
       }
     }
     st.b.steps.push_back(model::text(u) + " from " + how);

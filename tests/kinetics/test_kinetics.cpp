@@ -186,3 +186,13 @@ TEST_CASE("kinetics at an instant: a contact lost where its normal force vanishe
   top = kt::edit(top, "  theta2: {value: theta@2, root: positive, unit: deg}\n", "");
   REQUIRE_THROWS_WITH(solve_text(top), Catch::Contains("Newton's second law for ball along y at state 2 is off by 3.924"));
 }
+
+TEST_CASE("kinetics at an instant: asked where kinetic friction stops sliding, the refusal says so", "[kinetics]") {
+  // the bowling ball at the instant it starts to roll: the slip is 0, so μN has no direction there
+  std::string text = kt::derivation("momentum/sphere_slide_to_roll.yaml");
+  text = text.substr(0, text.find("expect:"));
+  text = kt::edit(text, "find:\n", "find:\n  ax2: {value: ax(ball)@2, unit: m/s^2}\n");
+  REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("is undefined when") &&
+                                            Catch::Contains("a kinetic friction where nothing slides (or a drive at rest) has no force there") &&
+                                            Catch::Contains("hold the rolling there with a constraint effect"));
+}
