@@ -17,6 +17,9 @@ std::string about_tex(const model::Model& m, const std::string& about) {
   return emit::tex_name(p);
 }
 
+/// t at a state in TeX: t_{1}, t_{\mathrm{top}}.
+std::string t_tex(const std::string& S) { return emit::digits_only(S) ? "t_{" + S + "}" : "t_{\\mathrm{" + S + "}}"; }
+
 /// The second integral of a component (its positions at the end): Φ₂ = Φ₁ + L₁ (t₂ − t₁) + Σ ∫∫F.
 void displacement_rows(emit::Sections& w, emit::Tags& tags, const principles::MomentumBalance::Component& c, bool angular,
                        const std::string& base_tex, const std::string& base_text, const std::string& S1, const std::string& S2,
@@ -24,8 +27,8 @@ void displacement_rows(emit::Sections& w, emit::Tags& tags, const principles::Mo
   using namespace emit;
   const principles::MomentumBalance::Displacement& d = *c.displacement;
   const std::string phi_tex = "\\Phi", phi_text = "\u03a6";
-  const std::string t1 = digits_only(S1) ? "t_{" + S1 + "}" : "t_{\\mathrm{" + S1 + "}}";
-  const std::string t2 = digits_only(S2) ? "t_{" + S2 + "}" : "t_{\\mathrm{" + S2 + "}}";
+  const std::string t1 = t_tex(S1), t2 = t_tex(S2);
+  const std::string span_text = " (" + text_at("t", S2) + " − " + text_at("t", S1) + ")";
   const std::string inner = "\\int_{" + t1 + "}^{t}";
   w.para({W("Every push " + std::string(angular ? "has a moment that is" : "is") + " a known function of time, so the momentum integrates once more: "),
           N(base_tex + " = \\frac{d" + phi_tex + "}{dt}", base_text + " = d" + phi_text + "/dt"),
@@ -36,12 +39,11 @@ void displacement_rows(emit::Sections& w, emit::Tags& tags, const principles::Mo
           W(" (" + std::string(angular ? "H = Σ h_i q̇_i with every h_i constant" : "the set's first moment of mass") + "), and "),
           N(tex_at(phi_tex, S2) + " = " + tex_at(phi_tex, S1) + " + " + tex_at(base_tex, S1) + "\\,(" + t2 + " - " + t1 + ") + \\sum " + dt_tex + inner +
                 (angular ? " M" : " F") + "\\,dt'\\,dt",
-            text_at(phi_text, S2) + " = " + text_at(phi_text, S1) + " + " + text_at(base_text, S1) + " (" + text_at("t", S2) + " − " + text_at("t", S1) +
-                ") + Σ ∫∫" + (angular ? "M" : "F") + " dt' dt"),
+            text_at(phi_text, S2) + " = " + text_at(phi_text, S1) + " + " + text_at(base_text, S1) + span_text + " + Σ ∫∫" + (angular ? "M" : "F") + " dt' dt"),
           W(":")});
   std::vector<Row> r;
   r.push_back(tags.row({Math::notation(tex_at(phi_tex, S1), text_at(phi_text, S1)), Math::of(w.sub(d.before))}));
-  r.push_back(tags.row({Math::notation(tex_at(base_tex, S1) + "\\,(" + t2 + " - " + t1 + ")", text_at(base_text, S1) + " (" + text_at("t", S2) + " − " + text_at("t", S1) + ")"),
+  r.push_back(tags.row({Math::notation(tex_at(base_tex, S1) + "\\,(" + t2 + " - " + t1 + ")", text_at(base_text, S1) + span_text),
                         Math::of(w.sub(d.drift))}));
   for (auto& term : d.terms)
     r.push_back(tags.row({Math::notation(dt_tex + inner + (angular ? " M" : " F") + "^{" + tex_word(term.effect) + "}\\,dt'\\,dt",
@@ -70,8 +72,7 @@ void momentum_section(emit::Sections& w, int k, const model::Analysis& a, const 
   std::string where = angular ? " about " + about : (a.along() ? " along " + a.along()->name : "");
   w.section(what + where + ", states " + text_interval(S1, S2));
   Tags tags{"M" + std::to_string(k)};
-  std::string dt_tex = "\\int_{" + (digits_only(S1) ? "t_{" + S1 + "}" : "t_{\\mathrm{" + S1 + "}}") + "}^{" +
-                       (digits_only(S2) ? "t_{" + S2 + "}" : "t_{\\mathrm{" + S2 + "}}") + "}";
+  std::string dt_tex = "\\int_{" + t_tex(S1) + "}^{" + t_tex(S2) + "}";
   if (angular) {
     std::string P = about_tex(m, a.about()->text);
     std::string H = "H_{" + P + "}";

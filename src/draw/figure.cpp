@@ -601,8 +601,8 @@ void dimensions(const At& at, const std::string& shape_name, const std::vector<e
 void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
   const model::Body& b = m.bodies.at(static_cast<std::size_t>(bi));
   // the body by its shape, or each part of a composite body by its own: r = G + R(φ) (lx, ly)
-  const double gx = at(b.x), gy = at(b.y), phi = at(b.angle), c = std::cos(phi), s = std::sin(phi);
-  auto world = [&](double lx, double ly) { return std::pair<double, double>{gx + c * lx - s * ly, gy + s * lx + c * ly}; };
+  const double gx = at(b.x), gy = at(b.y), phi = at(b.angle);
+  const Placed world{gx, gy, phi};
   // each shape's frame: the body's own, or each part's at its centre and turn
   std::vector<std::tuple<const std::string*, const std::vector<ex>*, Placed>> shapes;
   if (b.parts.empty()) shapes.push_back({&b.shape, &b.sizes, Placed{gx, gy, phi}});

@@ -240,28 +240,18 @@ void check_constraints(const Model& m, const Analysis& a) {
   }
 }
 
-/// Does Φ (generic) hold a position that a result asks for at the analysis' states?
-bool asked(const Model& m, const Analysis& a, const ex& phi) {
-  for (int s : {a.from, a.to}) {
-    const ex bound = m.bind(phi, s);
-    for (auto& x : a.positions_asked)
-      if (bound.has(x)) return true;
-  }
-  return false;
-}
-
 /// The second integral of component c, whose momentum is dΦ/dt, into c.displacement when a result
 /// asks for a position Φ holds; its pushes `forces` (effect, force or moment along it, free of the
 /// motion) when every push is known in time, else `blocked` says why it has none:
 ///   Φ₂ = Φ₁ + L₁ (t₂ − t₁) + Σ ∫_{t₁}^{t₂}∫_{t₁}^{t} F dt' dt.
 void integrate_positions(const Model& m, const Analysis& a, MomentumBalance::Component& c, const ex& phi,
                          const std::vector<std::pair<std::string, ex>>& forces, std::string blocked) {
-  if (!asked(m, a, phi)) return;
   MomentumBalance::Displacement d;
   d.before = m.bind(phi, a.from);
   d.after = m.bind(phi, a.to);
   for (auto& x : a.positions_asked)
     if (d.before.has(x) || d.after.has(x)) c.positions.push_back(x);
+  if (c.positions.empty()) return;  // no result asks for what it gives
   d.drift = c.before * (m.states[a.to].t - m.states[a.from].t);
   ex rhs = d.before + d.drift;
   for (auto& [effect, f] : forces) {
@@ -350,18 +340,18 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
                              "take the momentum along a direction its component keeps, or use its angular impulse");
           how = !p.what.empty() ? p.what : p.reaction ? "reaction impulse (unknown)" : "given impulse";
         } else {
-          ex Fn = dot(p.Fx, p.Fy, nx, ny);
+          const ex Fn = model::trig_simplify(dot(p.Fx, p.Fy, nx, ny));
           if (vanishes(m, Fn)) continue;
           if (a.conserved)
             throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
                                         state_pair(m, a) + ": effect '" + e.name + "' has an impulse along it (its force along " + name + " is " +
-                                        model::text(model::trig_simplify(Fn)) + ")",
+                                        model::text(Fn) + ")",
                              "remove 'conserved: true' so its impulse is included, or choose another direction");
-          if (!motion_free(m, model::trig_simplify(Fn)))
+          if (!motion_free(m, Fn))
             throw SceneError(e.pos, "the force of '" + e.name + "' along " + name + " changes with the motion; its impulse has no closed form",
                              "use an energy analysis, or a force that is constant or a function of t");
-          In = time_integral(m, e, model::trig_simplify(Fn), a);
-          forces.push_back({e.name, model::trig_simplify(Fn)});
+          In = time_integral(m, e, Fn, a);
+          forces.push_back({e.name, Fn});
           how = "integral of F dt";
         }
         if (In.is_zero()) continue;
