@@ -76,6 +76,13 @@ void momentum_section(emit::Sections& w, int k, const model::Analysis& a, const 
   if (angular) {
     std::string P = about_tex(m, a.about()->text);
     std::string H = "H_{" + P + "}";
+    // a place that follows the motion: dH_P/dt = ΣM_P − v_P × m v̄, and v_P ∥ v̄ (checked on reading)
+    const auto [px, py] = m.position(*a.about());
+    if (a.about()->body < 0 && !principles::motion_free(m, px + py))
+      w.para({W(about + " is the place x = "), M(px), W(", y = "), M(py),
+              W(", which moves parallel to the mass centre of " + bodies + ": the angular momentum about a moving point changes as "),
+              N("\\dot{H}_{" + P + "} = \\sum M_{" + P + "} - v_{" + P + "}\\times m\\bar{v}", "dH/dt = ΣM - v_" + about + " × m*v"),
+              W(", and the last term is zero.")});
     w.para({W("Bodies: " + bodies + ". The angular momentum about " + about + " is "),
           N(H + " = \\sum \\left(\\bar{I}\\omega + (\\bar{r} - r_{" + P + "})\\times m\\bar{v}\\right)",
             "H = Σ (I*omega + (r_G - r_" + a.about()->text + ") × m*v)"),
@@ -91,6 +98,16 @@ void momentum_section(emit::Sections& w, int k, const model::Analysis& a, const 
                            text_at("L", S1) + " + Σ ∫F dt = " + text_at("L", S2)),
           W(mb.conserved ? " along a direction in which no effect has an impulse" : ""),
           W(mb.components.size() > 1 ? ". Component by component:" : ".")});
+  }
+  // a guided body's implied support: only the loads' components along its line count, at G
+  for (int b : mb.supported) {
+    const std::string B = m.bodies[static_cast<std::size_t>(b)].name, P = about_tex(m, a.about()->text);
+    w.para({W(B + " keeps to a fixed straight line without turning, on a support the scene implies (a table, a guide), drawn as N_" + B +
+              ". That support balances the loads on " + B + " across its line and about its mass centre ("),
+            N("m\\bar{a}\\cdot\\hat{n} = 0,\\ \\bar{I}\\alpha = 0", "m a·n = 0, I α = 0"),
+            W("), so of each load F on " + B + " only its component along the line counts, as if at the mass centre: "),
+            N("(\\bar{r} - r_{" + P + "})\\times\\hat{u}\\,(F\\cdot\\hat{u})", "(r_G - r_" + a.about()->text + ") × u (F·u)"),
+            W(", with u along the line. A cord or a coupling between " + B + " and the other bodies is taken to pull along its line, through its mass centre.")});
   }
   w.momentum_figure(a, a.bodies, mb.shown, "Impulse-momentum diagram of " + bodies + ": the momenta at " + S1 + ", plus the impulses from " + S1 +
                                   " to " + S2 + ", equal the momenta at " + S2 + ".");

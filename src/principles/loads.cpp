@@ -84,6 +84,7 @@ void load_pushes(const Model& m, const Effect& e, const Analysis& a, const Knowl
     const int side = side_on(a, l);
     if (side == 0) continue;  // not on the set, or internal to it
     Push p;
+    p.body = side > 0 ? l.at.body : l.partner->body;
     switch (l.kind) {
       case Load::Kind::Given:
         // an interaction's force that changes with the motion: no impulse of its own (a load from
@@ -227,6 +228,7 @@ void effect_pushes(const Model& m, const Effect& e, const Analysis& a, const Kno
     p.Rx = j->Jx;
     p.Ry = j->Jy;
     p.unknown = true;
+    p.body = j->at.body;
     std::tie(p.arm_x, p.arm_y) = m.position(j->at);
     out.push_back(p);
   }
@@ -310,6 +312,7 @@ void reaction_pushes(const Model& m, const Effect& e, const model::Reaction& r, 
     }
   }
   std::tie(p.arm_x, p.arm_y) = m.position(on_a ? r.a : r.b);
+  p.body = (on_a ? r.a : r.b).body;
   out.push_back(p);
 }
 

@@ -96,15 +96,26 @@ namespace {
 /// and its rotation (δx̄, δȳ, δφ) per unit of the motion, generic in q.
 using VirtualMotion = std::function<std::array<ex, 3>(int body)>;
 
-/// Can the coordinates move the set by `field` while every other body stays put?
-///   find δq with  ∂(x̄_b, ȳ_b, φ_b)/∂q · δq = field(b) for b in the set, = 0 for the rest.
-/// When they can, the supports the parametrization implies (a track, a floor, an axle) do no work
-/// on that motion, so they have no part in its balance; when they cannot, one of them has.
+/// A motion a declared support releases (a pin: its body's translations; a track: its body's
+/// translation along the normal), or a guided body's support (across its line, and turning):
+/// body b moving by (δx̄, δȳ, δφ).
+struct Released {
+  int body;
+  std::array<ex, 3> motion;
+};
+
+/// Can the coordinates, with the motions `released` added, move the set by `field` while every
+/// other body stays put?
+///   find δq, δλ with  ∂(x̄_b, ȳ_b, φ_b)/∂q · δq + Σ δλ_j r_j(b) = field(b) for b in the set, = 0
+///   for the rest.
+/// When they can, the supports the parametrization implies (a track, a floor, an axle) that are not
+/// declared do no work on that motion, so they have no part in its balance; when they cannot, one
+/// of them has.
 /// Tested numerically at random positions (parameters at their values): a least-squares δq whose
 /// residual is negligible against the sizes involved. Unknown parameters or undefined positions:
 /// taken as free (nothing can be told).
-bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field) {
-  const std::size_t B = m.bodies.size(), n = m.coords.size();
+bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field, const std::vector<Released>& released = {}) {
+  const std::size_t B = m.bodies.size(), n = m.coords.size() + released.size();
   exmap env = m.numeric_environment();
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-2, 2);
@@ -128,7 +139,9 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field)
         for (int r = 0; r < 3; ++r) {
           // a particle's angle carries no momentum: its turning does not matter
           bool matters = r < 2 || !body.inertia.is_zero();
-          for (std::size_t i = 0; i < n; ++i) J(3 * b + r, i) = matters ? value(comp[r].diff(m.coords[i].q)) : 0.0;
+          for (std::size_t i = 0; i < m.coords.size(); ++i) J(3 * b + r, i) = matters ? value(comp[r].diff(m.coords[i].q)) : 0.0;
+          for (std::size_t j = 0; j < released.size(); ++j)
+            J(3 * b + r, m.coords.size() + j) = matters && released[j].body == static_cast<int>(b) ? value(released[j].motion[r]) : 0.0;
           e(3 * b + r) = matters ? value(want[r]) : 0.0;
         }
       }
@@ -151,6 +164,24 @@ std::vector<Push> implied_reactions(const Model& m, const Analysis& a, const Kno
   for (auto& e : m.effects) effect_pushes(m, e, a, k, all);
   for (auto& p : all)
     if (p.implied) out.push_back(p);
+  return out;
+}
+
+/// What the declared supports across the set release: a pin's unknown force frees its body's
+/// translations, a track's its translation along the normal.
+std::vector<Released> released_by(const Model& m, const Analysis& a) {
+  std::vector<Released> out;
+  for (auto& e : m.effects) {
+    auto r = e.reaction(m);
+    if (!r || !r->across(a.bodies) || !a.reactions.count(e.name) || e.activity(a) == Effect::Activity::None) continue;
+    const model::PointRef& in = r->a.body >= 0 && !r->a.ground && in_set(a.bodies, r->a.body) ? r->a : r->b;
+    if (r->kind == model::Reaction::Kind::Pin) {
+      out.push_back({in.body, {1, 0, 0}});
+      out.push_back({in.body, {0, 1, 0}});
+    } else if (r->kind == model::Reaction::Kind::Track) {
+      out.push_back({in.body, {r->dir_x, r->dir_y, 0}});
+    }
+  }
   return out;
 }
 
@@ -314,7 +345,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
         }
       continue;
     }
-    if (!declared && !moves_freely(m, a, [&](int) { return std::array<ex, 3>{along_x, along_y, 0}; }))
+    if (!moves_freely(m, a, [&](int) { return std::array<ex, 3>{along_x, along_y, 0}; }, released_by(m, a)))
       throw SceneError(a.pos, "the bodies of this momentum analysis (" + set_name(m, a) + ") cannot move freely along " + name +
                                   ": a support the scene does not declare (a track, a surface, an axle) pushes on them along " + name +
                                   " with a force the analysis does not know",
@@ -383,6 +414,54 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
   return out;
 }
 
+namespace {
+
+/// The guided bodies of an angular momentum analysis about (px, py), after checking that the set
+/// turns freely about it but for its declared supports and the guided bodies' own.
+/// @throws SceneError when a support the scene does not declare has a moment about P.
+std::vector<Guided> turns_freely(const Model& m, const Analysis& a, const ex& px, const ex& py) {
+  // a body held to a fixed line without turning (a block on a table): its support balances the
+  // loads on it across the line and about its mass centre, so it turns with the set about P only
+  // along its line
+  std::vector<Guided> guided = guided_bodies(m, a);
+  std::vector<Released> released = released_by(m, a);
+  for (const Guided& g : guided) {
+    released.push_back({g.body, {-g.uy, g.ux, 0}});
+    released.push_back({g.body, {0, 0, 1}});
+  }
+  // a support the scene does not declare must have no moment about P: the set turns freely
+  // about P (δr̄ = k × (r̄ − r_P), δφ = 1) while the rest stays put
+  if (!moves_freely(m, a, [&, Px = px, Py = py](int b) { return std::array<ex, 3>{-(m.bodies[b].y - Py), m.bodies[b].x - Px, 1}; },
+                    released))
+    throw SceneError(a.pos, "the bodies of this angular momentum analysis (" + set_name(m, a) + ") cannot turn freely about " +
+                                a.about()->text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
+                                a.about()->text + " the analysis does not know",
+                     "take moments about a point they turn about freely (a pivot, a contact point on the ground, their mass centre), "
+                     "or declare the support (a pin, a track) so that its reaction is an unknown");
+  check_guided_interactions(m, a, guided, px, py);
+  return guided;
+}
+
+/// The implied support of each guided body in `supported`, for its diagram: −(ΣF·n) n at its mass
+/// centre, against the known loads across its line.
+void show_supports(const Model& m, const std::vector<Guided>& guided, const std::vector<int>& supported, MomentumBalance& out) {
+  for (int b : supported) {
+    const Guided& g = *std::find_if(guided.begin(), guided.end(), [&](const Guided& x) { return x.body == b; });
+    ex Fn = 0;
+    for (auto& sh : out.shown)
+      if (sh.push.body == b && !sh.push.unknown) Fn += dot(sh.push.Fx, sh.push.Fy, -g.uy, g.ux);
+    Push n;
+    n.body = b;
+    n.Fx = model::trig_simplify(Fn * g.uy);
+    n.Fy = model::trig_simplify(-Fn * g.ux);
+    n.arm_x = m.bodies[static_cast<std::size_t>(b)].x;
+    n.arm_y = m.bodies[static_cast<std::size_t>(b)].y;
+    if (!vanishes(m, Fn)) out.shown.push_back({"N_" + m.bodies[static_cast<std::size_t>(b)].name, n});
+  }
+}
+
+}  // namespace
+
 MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
   check_constraints(m, a);
   MomentumBalance out;
@@ -394,15 +473,14 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   c.before = m.bind(H, a.from);
   c.after = m.bind(H, a.to);
   auto [px, py] = m.position(*a.about());
-  // a support the scene does not declare must have no moment about P: the set turns freely
-  // about P (δr̄ = k × (r̄ − r_P), δφ = 1) while the rest stays put
-  if (implied_reactions(m, a, k).empty() &&
-      !moves_freely(m, a, [&, Px = px, Py = py](int b) { return std::array<ex, 3>{-(m.bodies[b].y - Py), m.bodies[b].x - Px, 1}; }))
-    throw SceneError(a.pos, "the bodies of this angular momentum analysis (" + set_name(m, a) + ") cannot turn freely about " +
-                                a.about()->text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
-                                a.about()->text + " the analysis does not know",
-                     "take moments about a point they turn about freely (a pivot, a contact point on the ground, their mass centre), "
-                     "or declare the support (a pin, a track) so that its reaction is an unknown");
+  const std::vector<Guided> guided = turns_freely(m, a, px, py);
+  std::vector<int> supported;  // guided bodies whose support answers a load across the line (for the derivation)
+  // F at Q on a guided body: (r̄ − r_P) × u (F·u), the support's answer included
+  auto moment_on_guided = [&](const Guided& g, const ex& qx, const ex& qy, const ex& Fx, const ex& Fy, const ex& M) {
+    const ex Mg = guided_moment(m, g, px, py, Fx, Fy);
+    if (!vanishes(m, Mg - M - cross(qx - px, qy - py, Fx, Fy)) && !in_set(supported, g.body)) supported.push_back(g.body);
+    return Mg;
+  };
   ex I = 0;
   std::vector<std::pair<std::string, ex>> moments;  // the known moments about P, for the positions
   std::string blocked;                                // why not every push's moment is a known function of t
@@ -411,13 +489,15 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       // moment about P: (r_Q − r_P) × F, plus couples
       ex Mp, In;
       std::string how;
+      const auto on_guided = std::find_if(guided.begin(), guided.end(), [&](const Guided& g) { return g.body == p.body; });
       if (p.unknown) {
         // (r_Q − r_P) × R; a reaction's arm must stay fixed over the interval, a given impulse
         // acts at the first state
         // (a force sliding along its own line keeps its moment: a rolling contact's friction)
         ex ax = model::trig_simplify(p.arm_x - px), ay = model::trig_simplify(p.arm_y - py);
-        if (vanishes(m, ax) && vanishes(m, ay)) continue;
-        ex Mr = model::trig_simplify(cross(ax, ay, p.Rx, p.Ry));
+        if (vanishes(m, ax) && vanishes(m, ay) && on_guided == guided.end()) continue;
+        ex Mr = on_guided != guided.end() ? moment_on_guided(*on_guided, p.arm_x, p.arm_y, p.Rx, p.Ry, 0)
+                                          : model::trig_simplify(cross(ax, ay, p.Rx, p.Ry));
         if (vanishes(m, Mr)) continue;
         if (p.reaction && !motion_free(m, Mr) && !a.instant())
           throw SceneError(e.pos, "the reaction of '" + e.name + "' has a moment about " + a.about()->text +
@@ -427,7 +507,8 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         if (blocked.empty()) blocked = "the angular impulse of '" + e.name + "' is an unknown total, not a moment known in time";
         how = !p.what.empty() ? "moment of the " + p.what : p.reaction ? "moment of the reaction impulse (unknown)" : "moment of the given impulse";
       } else {
-        Mp = model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
+        Mp = on_guided != guided.end() ? moment_on_guided(*on_guided, p.arm_x, p.arm_y, p.Fx, p.Fy, p.M)
+                                       : model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
         if (vanishes(m, Mp)) continue;
         if (a.conserved)
           throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about()->text + " is not conserved between " +
@@ -451,6 +532,13 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       I += In;
     }
   }
+  out.supported = supported;
+  // H_P ≡ 0 with no moment about P (a body moving along a line through P): 0 = 0 says nothing
+  if (vanishes(m, H) && I.is_zero())
+    throw SceneError(a.pos, "the angular momentum of " + set_name(m, a) + " about " + a.about()->text +
+                                " is zero at every position and rate, and no load has a moment about it: the balance says nothing (" +
+                                a.about()->text + " lies on the line the bodies move along)",
+                     "take moments about a point off their line of motion, or balance the linear momentum along it");
   const char* what = a.conserved ? "conservation of angular momentum" : "angular impulse-momentum";
   c.equation = {c.before + I, c.after, what, std::string(what) + " about " + a.about()->text + ", " + state_pair(m, a), a.pos};
   // H = Σ h_i q̇_i with every h_i constant is dΦ/dt with Φ = Σ h_i q_i (a body turning about its
@@ -473,6 +561,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       out.holds.insert(out.holds.end(), p.holds.begin(), p.holds.end());
       out.shown.push_back({e.name, p});
     }
+  show_supports(m, guided, supported, out);
   out.components.push_back(c);
   return out;
 }

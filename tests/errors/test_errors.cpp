@@ -828,7 +828,7 @@ const ExactCase kExact[] = {
      "(a track, a surface, an axle) pushes on them along x with a force the analysis does not know \u2014 take the momentum "
      "along a direction in which they move freely (along their track), or declare the support (a pin, a track) so "
      "that its reaction is an unknown"},
-    {"moment_of_undeclared_support.yaml", "24:5",
+    {"moment_of_undeclared_support.yaml", "25:5",
      "the bodies of this angular momentum analysis (all bodies) cannot turn freely about O: a support the scene does not "
      "declare (a track, a surface, an axle) has a moment about O the analysis does not know \u2014 take moments about a "
      "point they turn about freely (a pivot, a contact point on the ground, their mass centre), or declare the support "

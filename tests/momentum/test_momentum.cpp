@@ -585,10 +585,22 @@ find:
     CHECK(exactly_zero(closed(s, "v2") - P(s, "g") * sin(P(s, "beta")) * P(s, "t2")));
   }
   for (const char* analysis : {"momentum: {from: 1, to: 2, along: x}", "momentum: {from: 1, to: 2, along: y}",
-                               "momentum: {from: 1, to: 2}", "angular_momentum: {from: 1, to: 2, about: O}"}) {
+                               "momentum: {from: 1, to: 2}"}) {
     DYNAMIC_SECTION(analysis << ": refused, naming the undeclared support") {
       REQUIRE_THROWS_WITH(solve_text(edit(block, "ANALYSIS", analysis)), Catch::Contains("a support the scene does not declare"));
     }
+  }
+  // the block keeps to a line without turning: the incline answers the loads across it, so about
+  // P = (0, h) off the line only F·u counts, at the block: (r̄ − r_P) × u (F·u) = h cos(beta) m g sin(beta),
+  // and H_P = m (r̄ − r_P) × v̄ = m h cos(beta) s_dot; so again s_dot = g sin(beta) t
+  SECTION("angular momentum about a point off the incline: the incline's normal force answers the weight across it") {
+    auto text = edit(edit(block, "points: {O: [0, 0]}", "points: {O: [0, 0], P: [0, h]}"), "  t2: s\n", "  t2: s\n  h: m\n");
+    auto s = solve_text(edit(text, "ANALYSIS", "angular_momentum: {from: 1, to: 2, about: P}"));
+    CHECK(exactly_zero(closed(s, "v2") - P(s, "g") * sin(P(s, "beta")) * P(s, "t2")));
+  }
+  SECTION("angular momentum about a point of the incline's line: refused, the balance says nothing") {
+    REQUIRE_THROWS_WITH(solve_text(edit(block, "ANALYSIS", "angular_momentum: {from: 1, to: 2, about: O}")),
+                        Catch::Contains("the balance says nothing (O lies on the line the bodies move along)"));
   }
   SECTION("a free particle in the plane: any direction and any point") {
     auto text = edit(block, "  s: m\n", "  x: m\n  y: m\n");

@@ -18,7 +18,7 @@ struct Push {
   bool implied = false;     ///< the support is one the coordinates imply (a pin), not a relation between them
   ex Rx = 0, Ry = 0;
   std::string what;         ///< how a derivation names it, when not by the defaults
-  int body = -1;            ///< the body it acts on, where that is one (an impact's impulses); −1: the set
+  int body = -1;            ///< the body it acts on (−1: the set, where it is not one body's)
   std::vector<Condition> holds;  ///< what it took for granted (a declared direction of sliding): checked on the solution
 };
 
@@ -40,6 +40,22 @@ bool motion_free(const model::Model& m, const ex& e);
 /// both states). @throws SceneError when neither tells it, or they disagree.
 int motion_direction(const model::Model& m, const model::Effect& e, std::optional<int> declared, const ex& generic,
                      const model::Analysis& a, const Knowledge& k, const std::string& what, std::vector<Condition>* holds = nullptr);
+
+/// A body of a set that its coordinates hold to a fixed straight line without turning (a block on
+/// a table, a slider in a straight guide), and the line's unit direction u (src/principles/guided.cpp).
+struct Guided {
+  int body = -1;
+  ex ux = 0, uy = 0;
+};
+/// The bodies of analysis a's set so held.
+std::vector<Guided> guided_bodies(const model::Model& m, const model::Analysis& a);
+/// The moment about P of a force F on guided body g together with what its support adds to
+/// balance it across the line and about the mass centre (m ā·n = 0, Ī α = 0): (r̄ − r_P) × u (F·u).
+ex guided_moment(const model::Model& m, const Guided& g, const ex& px, const ex& py, const ex& Fx, const ex& Fy);
+/// @throws SceneError where a load or a support inside the set pushes on a guided body across its
+/// line (or with a moment about its mass centre) in a way the moments about (px, py) cannot know.
+void check_guided_interactions(const model::Model& m, const model::Analysis& a, const std::vector<Guided>& g, const ex& px,
+                               const ex& py);
 
 /// The pushes of an effect's loads on the bodies of a momentum analysis (src/principles/loads.cpp):
 /// each load on a body of the set (its partner's reaction, when only the partner is in the set);
@@ -118,6 +134,9 @@ struct MomentumBalance : Balance {
   bool conserved = false;
   bool angular = false;  ///< angular (about a point), else linear
   std::vector<Condition> holds;  ///< what its pushes took for granted, checked on the solution
+  /// Guided bodies (Guided) whose implied support answers a load across their line: the derivation
+  /// says how their loads' moments were taken.
+  std::vector<int> supported;
 
   std::vector<Equation> equations() const override {
     std::vector<Equation> out;

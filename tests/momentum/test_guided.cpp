@@ -1,0 +1,170 @@
+// Moments of a system whose supports cancel (issue 27, item 5): a body the coordinates hold to a
+// fixed line without turning (a block on a table) is balanced across its line by its support, so
+// about a point P only the components of its loads along the line count, at its mass centre; and
+// moments about a place that moves parallel to the mass centre (the point of a cable a drum
+// climbs). Expected values by hand (each body isolated, Newton-Euler; the derivations' own are
+// re-derived by tests/momentum/sympy_supports.py), not from kinergy's output.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "../support/helpers.hpp"
+#include "kinergy/emit/derive.hpp"
+
+namespace {
+
+using kt::solve_text;
+const auto& value = kt::result_si;
+
+// derivations/momentum/drum_blocks_on_table.yaml with its friction as FRICTION and B's cord as CORD
+std::string drum_and_blocks(const std::string& friction, const std::string& cord, const std::string& b_at = "[xB, r]") {
+  return R"(title: drum, hanging block, block on a table
+parameters:
+  M: 8 kg
+  r: 0.25 m
+  mA: 5 kg
+  mB: 4 kg
+  mu: 0.2
+  a: 1 m
+  b: 1 m
+  t1: 2 s
+  g: 9.81 m/s^2
+points:
+  O: [0, 0]
+coordinates:
+  phi: rad
+  yA: m
+  xB: m
+bodies:
+  drum: {mass: M, inertia: {disk: r}, position: [0, 0], angle: phi}
+  blockA: {mass: mA, inertia: particle, position: [r, yA]}
+  blockB: {mass: mB, inertia: particle, position: )" + b_at + R"(}
+constraints:
+  - yA = r*phi - a
+  - )" + cord + R"(
+effects:
+  gravity: {g: g}
+  axle: {pin: [O, drum]}
+)" + friction + R"(
+states:
+  1: {t: 0, phi: 0, phi_dot: 0}
+  2: {t: t1}
+analyses:
+  - angular_momentum: {from: 1, to: 2, about: O}
+find:
+  omega2: {value: phi_dot@2, unit: rad/s}
+)";
+}
+
+// derivations/momentum/drum_climbs_cable.yaml, moments about ABOUT, with the couple MC
+std::string climbing_drum(const std::string& about, const std::string& Mc = "80 N*m") {
+  return R"(title: drum climbs its cable
+parameters:
+  m: 20 kg
+  r: 0.3 m
+  k: 0.25 m
+  Mc: )" + Mc + R"(
+  t1: 3 s
+  g: 9.81 m/s^2
+coordinates:
+  y: m
+  phi: rad
+bodies:
+  drum: {mass: m, inertia: {gyration: k}, position: [0, y], angle: phi}
+effects:
+  gravity: {g: g}
+  motor: {couple: drum, M: Mc}
+  cable: {constraint: "y = r*phi", between: [drum, ground], at: [-r, y]}
+states:
+  1: {t: 0, y: 0, phi: 0, phi_dot: 0}
+  2: {t: t1}
+analyses:
+  - angular_momentum: {from: 1, to: 2, about: )" + about + R"(}
+find:
+  omega2: {value: phi_dot@2, unit: rad/s}
+)";
+}
+
+}  // namespace
+
+TEST_CASE("moments about an axle with a block on a level table: its weight and the table's normal force cancel",
+          "[momentum][supports][guided]") {
+  const double M = 8, r = 0.25, mA = 5, mB = 4, mu = 0.2, t1 = 2, g = 9.81;
+  SECTION("with kinetic friction under B") {
+    // drum: I φ̈ = −r T_A + r T_B; A: m_A r φ̈ = T_A − m_A g; B: −m_B r φ̈ = T_B − μ m_B g
+    //   ⇒ φ̈ = −(m_A − μ m_B) g / (r (M/2 + m_A + m_B))
+    auto s = solve_text(drum_and_blocks("  table: {friction: blockB, mu: mu, normal: mB*g, direction: positive}", "xB = -r*phi - b"));
+    CHECK(value(s, "omega2") == Approx(-(mA - mu * mB) * g * t1 / (r * (M / 2 + mA + mB))).epsilon(1e-12));
+  }
+  SECTION("on a smooth table") {
+    auto s = solve_text(drum_and_blocks("", "xB = -r*phi - b"));
+    CHECK(value(s, "omega2") == Approx(-mA * g * t1 / (r * (M / 2 + mA + mB))).epsilon(1e-12));
+  }
+  SECTION("the derivation says how the table was taken") {
+    const std::string text = kinergy::emit::text(kinergy::emit::derive(solve_text(drum_and_blocks("", "xB = -r*phi - b"))));
+    CHECK_THAT(text, Catch::Contains("blockB keeps to a fixed straight line without turning"));
+  }
+}
+
+TEST_CASE("moments with a block on a table: what the support's answer cannot be known for is refused",
+          "[momentum][supports][guided][errors]") {
+  SECTION("a cord to B that is not parallel to the table (its pull turns with the motion)") {
+    // B on the floor (y = 0), the cord from the drum's top at height r runs down to it
+    auto text = drum_and_blocks("", "sqrt(xB^2 + r^2) = -r*phi + b", "[xB, 0]");
+    REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("pulls on 'blockB' in a direction that changes with the motion"));
+  }
+  SECTION("friction between a block and a cart it rides on, their mass centres at different heights") {
+    const std::string cart = R"(title: block on a cart
+parameters:
+  m: 2 kg
+  mc: 6 kg
+  mu: 0.3
+  h: 0.4 m
+  g: 9.81 m/s^2
+  v0: 3 m/s
+points:
+  O: [0, 0]
+coordinates:
+  x: m
+  xc: m
+bodies:
+  block: {mass: m, inertia: particle, position: [x, h]}
+  cart: {mass: mc, inertia: particle, position: [xc, 0]}
+effects:
+  gravity: {g: g}
+  rub: {friction: block, against: cart, at: [x, h], mu: mu, normal: m*g}
+states:
+  1: {t: 0, x: 0, xc: 0, x_dot: v0, xc_dot: 0}
+  2: {t: 0.2 s}
+analyses:
+  - angular_momentum: {from: 1, to: 2, about: O}
+find:
+  v2: {value: xc_dot@2, unit: m/s}
+)";
+    REQUIRE_THROWS_WITH(solve_text(cart), Catch::Contains("effect 'rub' pushes on 'cart' across its line (or with a moment about its mass centre)"));
+  }
+}
+
+TEST_CASE("angular momentum about a place that moves parallel to the mass centre", "[momentum][supports][about]") {
+  const double m = 20, r = 0.3, k = 0.25, t1 = 3, g = 9.81;
+  SECTION("the point of the cable a drum climbs") {
+    // m ÿ = T − m g, m k² φ̈ = M_c − r T, ÿ = r φ̈  ⇒  φ̈ = (M_c − m g r)/(m (k² + r²))
+    auto s = solve_text(climbing_drum("{C: [-r, y]}"));
+    CHECK(value(s, "omega2") == Approx(t1 * (80 - m * g * r) / (m * (k * k + r * r))).epsilon(1e-12));
+  }
+  SECTION("with no couple the drum unwinds and falls") {
+    auto s = solve_text(climbing_drum("{C: [-r, y]}", "0 N*m"));
+    CHECK(value(s, "omega2") == Approx(-t1 * g * r / (k * k + r * r)).epsilon(1e-12));
+  }
+  SECTION("a place that moves across the mass centre's velocity: refused") {
+    REQUIRE_THROWS_WITH(solve_text(climbing_drum("{C: [y, 0]}")),
+                        Catch::Contains("does not hold: it moves, and not parallel to the mass centre"));
+  }
+  SECTION("a place named like a body: refused") {
+    REQUIRE_THROWS_WITH(solve_text(climbing_drum("{drum: [-r, y]}")), Catch::Contains("'drum' already names a body"));
+  }
+  SECTION("two places: refused") {
+    REQUIRE_THROWS_WITH(solve_text(climbing_drum("{C: [-r, y], D: [0, 0]}")),
+                        Catch::Contains("'about' as a place names one point and where it is"));
+  }
+}
