@@ -562,6 +562,7 @@ private:
       forward_in_time(a);
       a.type->check(m, a, given, sol_.branch, env);
     }
+    valid_where();
   }
 
   /// Every state symbol branch b gives a number (given or solved), and the parameters' values.
@@ -635,6 +636,33 @@ private:
     }
   }
 
+  /// Does e hold a parameter without a value (a symbolic one, not an unknown)?
+  bool unvalued(const ex& e) const {
+    for (auto& p : m.params)
+      if (!p.value && !p.unknown && e.has(p.sym)) return true;
+    return false;
+  }
+
+  /// The conditions of the chosen branch that hold parameters without values: each e ≥ 0 is
+  /// stated with the closed forms (Solution::valid_where).
+  void valid_where() {
+    for (auto& bal : sol_.balances)
+      for (const principles::Condition& c : bal->conditions()) {
+        ex e;
+        try {
+          e = factor(normal(model::trig_simplify(c.e.subs(given).subs(sol_.branch.sol))));
+        } catch (const std::exception&) {
+          continue;
+        }
+        if (!unvalued(e)) continue;
+        principles::Condition k = c;
+        k.e = e;
+        if (k.assumed.empty()) k.assumed = c.what.substr(0, c.what.find(" ({}"));
+        if (std::none_of(sol_.valid_where.begin(), sol_.valid_where.end(), [&](const principles::Condition& x) { return x.e.is_equal(e); }))
+          sol_.valid_where.push_back(k);
+      }
+  }
+
   /// What the effects declare holds at every solved state of branch b.
   void check_declared(const solve::Branch& b) const {
     const exmap values = numbers_of(b);
@@ -643,6 +671,9 @@ private:
     // what the equations took for granted (a switching force passed, a declared direction of
     // sliding): e ≥ 0
     auto hold = [&](const principles::Condition& c) {
+      // one on a parameter without a value is stated with the closed form, not judged at the
+      // sample values that stand in for it (Solution::valid_where)
+      if (unvalued(c.e.subs(given).subs(b.sol))) return;
       auto v = numerics::evaluate(c.e.subs(given).subs(b.sol), env, 30);
       if (!v || !v->is_negative()) return;
       std::string what = c.what;

@@ -108,6 +108,10 @@ struct Solution {
   std::vector<Confirmed> confirmed;
   /// The scene as written (its parameters' texts, points and units: what a derivation quotes).
   scene::SceneDef scene;
+  /// What the solution takes for granted that holds a parameter without a value, so that it
+  /// cannot be checked here (e ≥ 0, bound to the solution): stated with the closed forms, which
+  /// hold only where it does (a friction's sense: mA − mu mB ≥ 0).
+  std::vector<principles::Condition> valid_where;
 };
 
 /// Every parameter's number: the given values, and the solved values of unknown parameters (for

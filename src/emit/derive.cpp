@@ -649,6 +649,9 @@ private:
     sp.push_back(W(":"));
     para(sp);
     rows(r);
+    // what the solution took for granted that holds a parameter without a value
+    for (auto& c : s_.valid_where)
+      para({W("Valid only where "), M(c.e), W(" \u2265 0: " + c.assumed + " (it holds parameters without values, so it is not checked here).")});
     // an extreme: the expression made greatest or least, its stationary points and the ends
     for (auto& res : s_.results) {
       if (res.extreme_note.empty()) continue;

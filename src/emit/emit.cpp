@@ -65,6 +65,10 @@ std::string text(const Solution& s, const Options& o) {
          << "   (no closed form: taken numerically" << (val && o.guaranteed ? "; " + val->note() : std::string()) << ")\n";
     }
   }
+  if (!s.valid_where.empty()) {
+    os << "Valid only where (these hold parameters without values, so they are not checked here):\n";
+    for (auto& c : s.valid_where) os << "  " << plain(c.e) << " >= 0   (" << c.assumed << ")\n";
+  }
   if (!s.confirmed.empty()) {
     os << "Confirmed a second way:\n";
     for (auto& c : s.confirmed) os << "  " << analysis_name(s, c.analysis) << ": " << confirmed_text(c) << "\n";
@@ -101,6 +105,13 @@ std::string json(const Solution& s, const Options& o, const std::vector<verify::
     os << "}";
   }
   os << "]";
+  if (!s.valid_where.empty()) {
+    os << ", \"valid_where\": [";
+    for (std::size_t i = 0; i < s.valid_where.size(); ++i)
+      os << (i ? ", " : "") << "{\"expression\": " << quote(plain(s.valid_where[i].e)) << ", \"at_least\": 0, \"means\": "
+         << quote(s.valid_where[i].assumed) << "}";
+    os << "]";
+  }
   if (!s.confirmed.empty()) {
     os << ", \"confirmed\": [";
     for (std::size_t i = 0; i < s.confirmed.size(); ++i) {

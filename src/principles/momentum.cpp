@@ -69,7 +69,7 @@ int motion_direction(const Model& m, const Effect& e, std::optional<int> declare
                         "the " + what + " under '" + e.name + "' is " + word(told) + " at state '" + m.states[s].name + "' but the other way at state '" +
                             m.states[other].name + "' (by {} in SI units): it stops between them, and kinetic friction does not keep pushing the same way after",
                         "end the analysis where the " + what + " stops (a state with 'where: [\"... = 0\"]'), and take what follows from there",
-                        e.pos});
+                        e.pos, "the " + what + " under '" + e.name + "' keeps its sense (" + word(told) + ") at state '" + m.states[other].name + "'"});
     return told;
   }
   if (declared) {
@@ -81,7 +81,8 @@ int motion_direction(const Model& m, const Effect& e, std::optional<int> declare
                               " at state '" + m.states[s].name + "' the other way (by {} in SI units): friction cannot drive the motion",
                           "give 'direction: " + word(-*declared) + "' on '" + e.name + "', or leave it out and give a velocity at state '" +
                               S1 + "' or '" + S2 + "'",
-                          e.pos});
+                          e.pos, "the " + what + " under '" + e.name + "' goes the declared way (" + word(*declared) + ") at state '" +
+                                     m.states[s].name + "'"});
     return *declared;
   }
   throw SceneError(e.pos, "the direction of " + what + " under '" + e.name + "' between states " + S1 + " and " + S2 +

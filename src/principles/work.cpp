@@ -112,7 +112,7 @@ int friction_sign(const Model& m, const Effect& e, std::optional<int> declared, 
                            " the other way (by {} in SI units): friction cannot drive the motion",
                        "give 'direction: " + word(-*declared) + "' on '" + e.name + "', or leave it out and give a rate at state '" + S1 +
                            "' or '" + S2 + "'",
-                       e.pos});
+                       e.pos, "effect '" + e.name + "' opposes the motion of " + name + " the declared way (" + word(*declared) + ")"});
   return *declared;
 }
 

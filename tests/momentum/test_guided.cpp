@@ -168,3 +168,23 @@ TEST_CASE("angular momentum about a place that moves parallel to the mass centre
                         Catch::Contains("'about' as a place names one point and where it is"));
   }
 }
+
+TEST_CASE("a condition on a parameter without a value is stated with the closed form, not judged at sample values",
+          "[momentum][conditions]") {
+  // the friction under B is declared to oppose B sliding the positive way; with mA and mu
+  // without values, that holds where vB2 = 2 g t1 (mA − mu mB)/(M + 2 mA + 2 mB) ≥ 0 — once
+  // judged at the sample values standing in for mA and mu, and refused
+  auto text = kt::edit(kt::edit(drum_and_blocks("  table: {friction: blockB, mu: mu, normal: mB*g, direction: positive}", "xB = -r*phi - b"),
+                                "  mA: 5 kg\n", "  mA: kg\n"),
+                       "  mu: 0.2\n", "  mu: number\n");
+  text = kt::edit(text, "omega2: {value: phi_dot@2, unit: rad/s}", "omega2: phi_dot@2");
+  auto s = solve_text(text);
+  REQUIRE(s.valid_where.size() == 1);
+  const auto& m = s.model;
+  const GiNaC::ex g = kt::param(m, "g"), t1 = kt::param(m, "t1"), mA = kt::param(m, "mA"), mB = kt::param(m, "mB"),
+                  mu = kt::param(m, "mu"), M = kt::param(m, "M");
+  const GiNaC::ex want = 2 * g * t1 * (mA - mu * mB) / (M + 2 * mA + 2 * mB);
+  CHECK(kt::symbolically_zero(s.valid_where[0].e - want));
+  CHECK_THAT(s.valid_where[0].assumed, Catch::Contains("the sliding under 'table' goes the declared way (positive) at state '2'"));
+  CHECK_THAT(kinergy::emit::text(kinergy::emit::derive(s)), Catch::Contains("Valid only where"));
+}

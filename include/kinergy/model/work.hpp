@@ -22,6 +22,9 @@ struct Condition {
   ex e;
   std::string what, fix;  ///< the error when it fails ("{}" in `what` is e's value)
   SourcePos pos;
+  /// What e ≥ 0 says, stated with a closed form where it cannot be checked (it holds a parameter
+  /// without a value): "the sliding under 'table' keeps its sense at state '2'".
+  std::string assumed;
 };
 
 /// The work of one non-conservative effect between two states, in state symbols.
