@@ -14,9 +14,10 @@ to the YAML's expect form, each value matched to the figures the YAML writes.
 Run (from the repository root):  /usr/bin/python3 tests/momentum/sympy_positions.py
 """
 import os
-import re
 
 import sympy as sp
+
+from yaml_claims import expect_entries, parameter_values
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 SCENE = os.path.join(ROOT, "derivations", "momentum", "disk_spun_on_floor_distance.yaml")
@@ -24,27 +25,6 @@ SCENE = os.path.join(ROOT, "derivations", "momentum", "disk_spun_on_floor_distan
 m, r, omega0, mu_k, g = sp.symbols("m r omega0 mu_k g", positive=True)
 t = sp.symbols("t", nonnegative=True)
 x, phi = sp.Function("x"), sp.Function("phi")
-
-
-def expect_entries(text):
-    """name -> (form, value text) from the YAML's flat expect block."""
-    out = {}
-    block = text.split("\nexpect:\n", 1)[1]
-    for line in block.splitlines():
-        hit = re.match(r"\s+(\w+): \{form: (.*), value: (.*)\}\s*$", line)
-        if hit:
-            out[hit.group(1)] = (hit.group(2), hit.group(3))
-    return out
-
-
-def parameter_values(text):
-    vals = {}
-    block = text.split("\nparameters:\n", 1)[1].split("\ncoordinates:", 1)[0]
-    for line in block.splitlines():
-        hit = re.match(r"\s+(\w+): ([-0-9.e]+)", line)
-        if hit:
-            vals[sp.Symbol(hit.group(1), positive=True)] = sp.Float(hit.group(2), 30)
-    return vals
 
 
 def main():

@@ -23,32 +23,12 @@ upper end fixed and leaving the drum at its left (x = -r); a couple Mc turns it.
 Run (from the repository root):  /usr/bin/python3 tests/momentum/sympy_supports.py
 """
 import os
-import re
 
 import sympy as sp
 
+from yaml_claims import expect_entries, parameter_values
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-
-
-def expect_entries(text):
-    """name -> (form, value text) from the YAML's flat expect block."""
-    out = {}
-    block = text.split("\nexpect:\n", 1)[1]
-    for line in block.splitlines():
-        hit = re.match(r"\s+(\w+): \{form: (.*), value: (.*)\}\s*$", line)
-        if hit:
-            out[hit.group(1)] = (hit.group(2), hit.group(3))
-    return out
-
-
-def parameter_values(text):
-    vals = {}
-    block = text.split("\nparameters:\n", 1)[1].split("\ncoordinates:", 1)[0]
-    for line in block.splitlines():
-        hit = re.match(r"\s+(\w+): ([-0-9.e]+)", line)
-        if hit:
-            vals[sp.Symbol(hit.group(1), positive=True)] = sp.Float(hit.group(2), 30)
-    return vals
 
 
 def compare(scene, derived, local):
