@@ -139,4 +139,21 @@ void check_guided_interactions(const Model& m, const Analysis& a, const std::vec
   }
 }
 
+void check_internal_pairs(const Model& m, const Analysis& a) {
+  auto in = [&](const model::PointRef& p) { return p.body >= 0 && !p.ground && in_set(a.bodies, p.body); };
+  for (auto& e : m.effects) {
+    auto r = e.reaction(m);
+    if (!r || r->kind != model::Reaction::Kind::Relation || !in(r->a) || !in(r->b) || e.activity(a) == Effect::Activity::None) continue;
+    // J û on a at r_a, −J û on b at r_b: their moments cancel about every point only when
+    // (r_a − r_b) × û = 0
+    const auto [ax, ay] = m.position(r->a);
+    const auto [bx, by] = m.position(r->b);
+    if (vanishes(m, cross2(ax - bx, ay - by, r->dir_x, r->dir_y))) continue;
+    throw SceneError(e.pos, "the force of '" + e.name + "' acts along [" + model::text(r->dir_x) + ", " + model::text(r->dir_y) + "] at " +
+                                r->a.text + " and at " + r->b.text + ", which are not on one line along it: the pair would have a moment of its own about " +
+                                a.about()->text,
+                     "give in 'at' places on the line it pulls along (a cord's two ends), or use an energy analysis");
+  }
+}
+
 }  // namespace kinergy::principles

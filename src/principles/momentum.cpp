@@ -115,8 +115,9 @@ struct Released {
 /// Tested numerically at random positions (parameters at their values): a least-squares δq whose
 /// residual is negligible against the sizes involved. Unknown parameters or undefined positions:
 /// taken as free (nothing can be told).
-bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field, const std::vector<Released>& released = {}) {
-  const std::size_t B = m.bodies.size(), n = m.coords.size() + released.size();
+bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field, const std::vector<Released>& released = {},
+                  const std::vector<ex>& relations = {}) {
+  const std::size_t B = m.bodies.size(), n = m.coords.size() + released.size(), R = relations.size();
   exmap env = m.numeric_environment();
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-2, 2);
@@ -124,8 +125,8 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field,
     exmap at = env;
     for (auto& c : m.coords) at[c.q] = numeric(u(rng));
     at[m.t] = numeric(u(rng) + 2);
-    Eigen::MatrixXd J(3 * B, n);
-    Eigen::VectorXd e(3 * B);
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(3 * B + R), static_cast<Eigen::Index>(n));
+    Eigen::VectorXd e = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(3 * B + R));
     try {
       auto value = [&](const ex& x) {
         ex v = x.subs(at).evalf();
@@ -145,6 +146,13 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field,
             J(3 * b + r, m.coords.size() + j) = matters && released[j].body == static_cast<int>(b) ? value(released[j].motion[r]) : 0.0;
           e(3 * b + r) = matters ? value(want[r]) : 0.0;
         }
+      }
+      // each relation kept: ∇c·δq = 0 (a row of unit length, whatever c's unit)
+      for (std::size_t k = 0; k < R; ++k) {
+        Eigen::VectorXd row = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m.coords.size()));
+        for (std::size_t i = 0; i < m.coords.size(); ++i) row(static_cast<Eigen::Index>(i)) = value(relations[k].diff(m.coords[i].q));
+        if (row.norm() > 0) row /= row.norm();
+        for (std::size_t i = 0; i < m.coords.size(); ++i) J(static_cast<Eigen::Index>(3 * B + k), static_cast<Eigen::Index>(i)) = row(static_cast<Eigen::Index>(i));
       }
     } catch (const std::exception&) {
       return true;
@@ -432,14 +440,23 @@ std::vector<Guided> turns_freely(const Model& m, const Analysis& a, const ex& px
   }
   // a support the scene does not declare must have no moment about P: the set turns freely
   // about P (δr̄ = k × (r̄ − r_P), δφ = 1) while the rest stays put
+  check_guided_interactions(m, a, guided, px, py);
+  check_internal_pairs(m, a);
+  // a guided body turns with the set only along its line; a cord between it and the others (a
+  // relation under 'constraints:') must then keep its length, or its pull has a part across the
+  // line, or off the mass centre, that the support answers unknown:
+  //   δℓ = −(c·n) (r̄ − r_P) × n − (r_Q − r̄) × c per unit pull T c — the support's share
+  std::vector<ex> relations;
+  if (!guided.empty())
+    for (std::size_t ci = 0; ci < m.constraints.size(); ++ci)
+      if (!m.carrier(ci) && m.constraint_activity(ci, a) != Effect::Activity::None) relations.push_back(m.constraints[ci].first);
   if (!moves_freely(m, a, [&, Px = px, Py = py](int b) { return std::array<ex, 3>{-(m.bodies[b].y - Py), m.bodies[b].x - Px, 1}; },
-                    released))
+                    released, relations))
     throw SceneError(a.pos, "the bodies of this angular momentum analysis (" + set_name(m, a) + ") cannot turn freely about " +
                                 a.about()->text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
                                 a.about()->text + " the analysis does not know",
                      "take moments about a point they turn about freely (a pivot, a contact point on the ground, their mass centre), "
                      "or declare the support (a pin, a track) so that its reaction is an unknown");
-  check_guided_interactions(m, a, guided, px, py);
   return guided;
 }
 

@@ -54,6 +54,9 @@ std::vector<Guided> guided_bodies(const model::Model& m, const model::Analysis& 
 ex guided_moment(const model::Model& m, const Guided& g, const ex& px, const ex& py, const ex& Fx, const ex& Fy);
 /// @throws SceneError where a load or a support inside the set pushes on a guided body across its
 /// line (or with a moment about its mass centre) in a way the moments about (px, py) cannot know.
+/// @throws SceneError where a relation effect between two bodies of the set pushes on them at
+/// places not on one line along its force (the equal and opposite pair would have a moment).
+void check_internal_pairs(const model::Model& m, const model::Analysis& a);
 void check_guided_interactions(const model::Model& m, const model::Analysis& a, const std::vector<Guided>& g, const ex& px,
                                const ex& py);
 
