@@ -457,7 +457,9 @@ private:
                         const std::string& fix) {
     const std::string example = key == "along" ? "along: x, y or a direction [nx, ny] such as [1, 1]"
                                 : key == "normal" || key == "direction" ? key + ": [0, 1]"
-                                : key == "J" ? "J: [J0, 0]" : key + ": [0, -P]";
+                                : key == "J"     ? "J: [J0, 0]"
+                                : key == "about" ? "about: {C: [-r, y]}"
+                                                 : key + ": [0, -P]";
     if (!n.is_list() || n.items.size() != 2) {
       for (auto& it : n.items) check_cut(it);
       if (n.is_list())

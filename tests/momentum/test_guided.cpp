@@ -163,6 +163,9 @@ TEST_CASE("angular momentum about a place that moves parallel to the mass centre
   SECTION("a place named like a body: refused") {
     REQUIRE_THROWS_WITH(solve_text(climbing_drum("{drum: [-r, y]}")), Catch::Contains("'drum' already names a body"));
   }
+  SECTION("a place of one coordinate: refused, with the form to write") {
+    REQUIRE_THROWS_WITH(solve_text(climbing_drum("{C: [-r]}")), Catch::Contains("write e.g. about: {C: [-r, y]}"));
+  }
   SECTION("two places: refused") {
     REQUIRE_THROWS_WITH(solve_text(climbing_drum("{C: [-r, y], D: [0, 0]}")),
                         Catch::Contains("'about' as a place names one point and where it is"));
