@@ -67,7 +67,7 @@ public:
     m_.description = d_.description;
     // each part of the scene in the order later parts refer to earlier ones
     for (auto part : {&Builder::parameters, &Builder::coordinates, &Builder::fixed_points, &Builder::bodies,
-                      &Builder::constraints, &Builder::effects, &Builder::states, &Builder::analyses, &Builder::finds,
+                      &Builder::constraints, &Builder::effects, &Builder::light_coordinates, &Builder::states, &Builder::analyses, &Builder::finds,
                       &Builder::expects})
       (this->*part)();
     return std::move(m_);
@@ -555,6 +555,35 @@ private:
   /// Kinetics at an instant: each support's reaction as generic unknowns (a pin's Rx, Ry, a
   /// track's N, a relation's F along û; a contact acts in impacts only), and a multiplier λ_k for
   /// each constraint no effect holds.
+  /// A coordinate that moves only bodies without mass (∂T/∂q̇ ≡ 0) and that no constraint ties to
+  /// the others is fixed by those bodies' balance alone (Q = 0 at every instant: two springs in
+  /// series with a light connector), which no analysis here derives: refused at the coordinate,
+  /// naming what would be needed.
+  void light_coordinates() {
+    const ex T = m_.kinetic_energy();
+    for (auto& co : m_.coords) {
+      if (T.has(co.qd)) continue;
+      std::string light;
+      for (auto& b : m_.bodies)
+        if (b.x.has(co.q) || b.y.has(co.q) || b.angle.has(co.q)) light += (light.empty() ? "" : ", ") + b.name;
+      if (light.empty()) continue;
+      bool tied = false;
+      for (auto& [c, pos] : m_.constraints) tied = tied || c.has(co.q);
+      if (tied) continue;
+      // no load on them along it (Q ≡ 0): their place is indifferent, and nothing depends on it
+      const std::size_t i = static_cast<std::size_t>(&co - m_.coords.data());
+      ex Q = -m_.potential_energy().diff(co.q);
+      for (auto& e : m_.effects)
+        for (const Load& l : e.loads(m_)) Q += generalized_force(m_, l, i);
+      if (normal(expand(Q)).is_zero()) continue;
+      throw SceneError(co.pos, "coordinate '" + co.name + "' moves only bodies without mass (" + light +
+                                   "), and no constraint ties it to the others: it follows from their balance (no mass, so the forces on them "
+                                   "balance at every instant), which kinergy does not derive for a light body with a coordinate of its own",
+                       "write the light body's position in the other coordinates from its balance (two springs in series: the connector "
+                       "sits where their forces are equal), tie it by a constraint, or give it a mass");
+    }
+  }
+
   void instant_unknowns() {
     const Dimension F = Dimension::mass() * Dimension::length() / (Dimension::time() * Dimension::time());
     for (auto& e : m_.effects) {

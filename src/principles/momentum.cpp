@@ -119,9 +119,16 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field,
                   const std::vector<ex>& relations = {}) {
   const std::size_t B = m.bodies.size(), n = m.coords.size() + released.size(), R = relations.size();
   exmap env = m.numeric_environment();
+  int j = 0;
+  for (auto& p : m.params)  // an unknown parameter (solved for) at a sample value too
+    if (p.unknown) env[p.sym] = numeric(1) + numeric(13 * (++j) % 29, 29);
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-2, 2);
-  for (int trial = 0; trial < 3; ++trial) {
+  // three positions where everything has a value (a square root of a negative at a random place
+  // is no position: another is drawn, up to 40); none at all: nothing can be told, and the set is
+  // not taken to turn freely
+  int tested = 0;
+  for (int trial = 0; trial < 40 && tested < 3; ++trial) {
     exmap at = env;
     for (auto& c : m.coords) at[c.q] = numeric(u(rng));
     at[m.t] = numeric(u(rng) + 2);
@@ -155,14 +162,15 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field,
         for (std::size_t i = 0; i < m.coords.size(); ++i) J(static_cast<Eigen::Index>(3 * B + k), static_cast<Eigen::Index>(i)) = row(static_cast<Eigen::Index>(i));
       }
     } catch (const std::exception&) {
-      return true;
+      continue;
     }
-    if (!J.allFinite() || !e.allFinite()) return true;
+    if (!J.allFinite() || !e.allFinite()) continue;
+    ++tested;
     Eigen::VectorXd dq = J.completeOrthogonalDecomposition().solve(e);
     double scale = e.norm() + J.norm() * dq.norm();
     if ((J * dq - e).norm() > 1e-9 * scale) return false;
   }
-  return true;
+  return tested > 0;
 }
 
 /// The unknown reactions of the supports the coordinates imply (pins, tracks) that join the set to
@@ -446,15 +454,19 @@ std::vector<Guided> turns_freely(const Model& m, const Analysis& a, const ex& px
   // relation under 'constraints:') must then keep its length, or its pull has a part across the
   // line, or off the mass centre, that the support answers unknown:
   //   δℓ = −(c·n) (r̄ − r_P) × n − (r_Q − r̄) × c per unit pull T c — the support's share
+  // (so must any relation between bodies of the set: a reversing gear train's does not, and its
+  // housing takes a moment)
   std::vector<ex> relations;
-  if (!guided.empty())
-    for (std::size_t ci = 0; ci < m.constraints.size(); ++ci)
-      if (!m.carrier(ci) && m.constraint_activity(ci, a) != Effect::Activity::None) relations.push_back(m.constraints[ci].first);
+  for (std::size_t ci = 0; ci < m.constraints.size(); ++ci)
+    if (!m.carrier(ci) && m.constraint_activity(ci, a) != Effect::Activity::None) relations.push_back(m.constraints[ci].first);
   if (!moves_freely(m, a, [&, Px = px, Py = py](int b) { return std::array<ex, 3>{-(m.bodies[b].y - Py), m.bodies[b].x - Px, 1}; },
                     released, relations))
     throw SceneError(a.pos, "the bodies of this angular momentum analysis (" + set_name(m, a) + ") cannot turn freely about " +
                                 a.about()->text + ": a support the scene does not declare (a track, a surface, an axle) has a moment about " +
-                                a.about()->text + " the analysis does not know",
+                                a.about()->text + " the analysis does not know" +
+                                (relations.empty() ? std::string()
+                                                   : ", or a relation between them (a cord, a gear train) does not hold as they turn together, "
+                                                     "so its forces do not cancel about " + a.about()->text),
                      "take moments about a point they turn about freely (a pivot, a contact point on the ground, their mass centre), "
                      "or declare the support (a pin, a track) so that its reaction is an unknown");
   return guided;
@@ -517,9 +529,9 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         ex Mr = on_guided != guided.end() ? moment_on_guided(*on_guided, p.arm_x, p.arm_y, p.Rx, p.Ry, 0)
                                           : model::trig_simplify(cross(ax, ay, p.Rx, p.Ry));
         if (vanishes(m, Mr)) continue;
-        if (p.reaction && !motion_free(m, Mr) && !a.instant())
+        if (p.reaction && (!motion_free(m, Mr) || Mr.has(m.t)) && !a.instant())
           throw SceneError(e.pos, "the reaction of '" + e.name + "' has a moment about " + a.about()->text +
-                                      " that changes with the motion, so its angular impulse is unknown in a way no equation fixes",
+                                      " that changes with the motion (or in time), so its angular impulse is unknown in a way no equation fixes",
                            "take moments about the pin itself, or about a fixed point");
         In = m.bind(Mr, a.from);
         if (blocked.empty()) blocked = "the angular impulse of '" + e.name + "' is an unknown total, not a moment known in time";

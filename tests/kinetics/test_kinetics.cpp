@@ -154,6 +154,31 @@ find:
   REQUIRE_THROWS_WITH(solve_text(kt::edit(text, "mass: 0,", "mass: -m,")), Catch::Contains("must be zero or positive"));
 }
 
+TEST_CASE("a light body with a coordinate of its own that a load moves: refused, naming what would be needed", "[kinetics]") {
+  // two springs in series with a light connector: its place follows from k1 (y1 − y − L) = k2 (−y1 − L)
+  // at every instant, which no analysis derives; energy alone would leave it free
+  const std::string text = R"Y(title: two springs in series
+parameters: {m: 2 kg, k1: 300 N/m, k2: 600 N/m, g: 9.81 m/s^2, L: 0.5 m}
+points: {O: [0, 0]}
+coordinates: {y: m, y1: m}
+bodies:
+  block: {mass: m, inertia: particle, position: [0, y]}
+  link: {mass: 0, inertia: particle, position: [0, y1]}
+effects:
+  gravity: {g: g}
+  upper: {spring: [O, link], k: k2, free_length: L}
+  lower: {spring: [link, block], k: k1, free_length: L}
+states:
+  1: {y: -2*L, y1: -L, y_dot: 0}
+  2: {y_dot: 0}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  drop: {value: -2*L - y@2, root: positive, unit: m}
+)Y";
+  REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("coordinate 'y1' moves only bodies without mass (link), and no constraint ties it to the others"));
+}
+
 TEST_CASE("simulate --check: kinetics at a state against the equations of motion there", "[kinetics][cli]") {
   int st = 0;
   const std::string out = kt::run_cli("simulate derivations/kinetics/bar_released_pin_reaction.yaml --check", st);

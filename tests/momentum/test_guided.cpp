@@ -289,3 +289,58 @@ find:
     REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("which are not on one line along it"));
   }
 }
+
+TEST_CASE("moments about a point: what the balance cannot know is refused, also with symbols", "[momentum][supports][errors]") {
+  SECTION("a relation between the bodies that turning them together breaks (a reversing gear train: its housing takes a moment)") {
+    // two disks on one axle, p2 = −p1 through gears in a fixed carrier: about O the carrier's
+    // moment is unknown (it was once taken as zero: 2 M0 t1/(I1r² m1 − m2 r2²), not
+    // 2 M0 t1/(I1r² m1 + m2 r2²) as Lagrange gives)
+    const std::string text = R"(title: reversing gearbox
+parameters: {I1r: m, m1: kg, m2: kg, r2: m, M0: N*m, t1: s, g: 9.81 m/s^2}
+points: {O: [0, 0]}
+coordinates: {p1: rad, p2: rad}
+bodies:
+  d1: {mass: m1, inertia: {disk: I1r}, position: [0, 0], angle: p1}
+  d2: {mass: m2, inertia: {disk: r2}, position: [0, 0], angle: p2}
+constraints:
+  - p2 = -p1
+effects:
+  gravity: {g: g}
+  motor: {couple: d1, M: M0}
+states:
+  1: {t: 0, p1: 0, p1_dot: 0}
+  2: {t: t1}
+analyses:
+  - angular_momentum: {from: 1, to: 2, about: O}
+find:
+  w: p1_dot@2
+)";
+    REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("or a relation between them (a cord, a gear train) does not hold as they turn together"));
+  }
+  SECTION("a pin's reaction about a place that moves in time: its moment changes over the interval") {
+    const std::string text = R"(title: flywheel about a moving place
+parameters: {M: 8 kg, r: 0.25 m, M0: 3 N*m, v0: 2 m/s, t1: s, g: 9.81 m/s^2}
+points: {O: [0, 0]}
+coordinates: {phi: rad}
+bodies:
+  drum: {mass: M, inertia: {disk: r}, position: [0, 0], angle: phi}
+effects:
+  gravity: {g: g}
+  axle: {pin: [O, drum]}
+  motor: {couple: drum, M: M0}
+states:
+  1: {t: 0, phi: 0, phi_dot: 0}
+  2: {t: t1}
+analyses:
+  - angular_momentum: {from: 1, to: 2, about: {C: [v0*t, 0]}}
+find:
+  w: phi_dot@2
+)";
+    REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("the reaction of 'axle' has a moment about C that changes with the motion (or in time)"));
+  }
+  SECTION("an unknown parameter in the geometry: the block below its cord is still refused") {
+    auto text = kt::edit(drum_and_blocks("", "xB = -r*phi - b", "[xB, r/2]"), "  r: 0.25 m\n", "  r: unknown m\n");
+    text = kt::edit(kt::edit(text, "  2: {t: t1}", "  2: {t: t1, phi_dot: -20 rad/s}"), "omega2: {value: phi_dot@2, unit: rad/s}", "radius: {value: r, unit: m}");
+    REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("cannot turn freely about O"));
+  }
+}
