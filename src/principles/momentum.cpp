@@ -1,6 +1,7 @@
 #include "kinergy/principles/momentum.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <functional>
 #include <random>
@@ -124,13 +125,29 @@ bool moves_freely(const Model& m, const Analysis& a, const VirtualMotion& field,
     if (p.unknown) env[p.sym] = numeric(1) + numeric(13 * (++j) % 29, 29);
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-2, 2);
+  // where the states put each coordinate (a position defined only near them: a groove of 2 mm)
+  std::vector<std::optional<double>> near(m.coords.size());
+  for (std::size_t i = 0; i < m.coords.size() && !m.states.empty(); ++i)
+    for (auto& st : m.states) {
+      auto g = st.given.find(st.sym.at(m.coords[i].name).first);
+      if (g == st.given.end()) continue;
+      ex v = g->second.subs(env).evalf();
+      if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) near[i] = ex_to<numeric>(v).to_double();
+      break;
+    }
   // three positions where everything has a value (a square root of a negative at a random place
-  // is no position: another is drawn, up to 40); none at all: nothing can be told, and the set is
-  // not taken to turn freely
+  // is no position: another is drawn): 12 draws in (−2, 2), 12 in (−0.2, 0.2), 12 in (−0.02, 0.02),
+  // 12 in (−0.002, 0.002), then 12 close to where the states put the coordinates; none at all:
+  // nothing can be told, and the set is not taken to turn freely
   int tested = 0;
-  for (int trial = 0; trial < 40 && tested < 3; ++trial) {
+  for (int trial = 0; trial < 60 && tested < 3; ++trial) {
     exmap at = env;
-    for (auto& c : m.coords) at[c.q] = numeric(u(rng));
+    const int block = trial / 12;
+    for (std::size_t i = 0; i < m.coords.size(); ++i) {
+      const double d = u(rng);
+      const double x = block < 4 ? d * std::pow(10.0, -block) : near[i].value_or(0.0) * (1 + 0.005 * d) + 0.0005 * d;
+      at[m.coords[i].q] = numeric(x);
+    }
     at[m.t] = numeric(u(rng) + 2);
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(3 * B + R), static_cast<Eigen::Index>(n));
     Eigen::VectorXd e = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(3 * B + R));
@@ -468,7 +485,9 @@ std::vector<Guided> turns_freely(const Model& m, const Analysis& a, const ex& px
                                                    : ", or a relation between them (a cord, a gear train) does not hold as they turn together, "
                                                      "so its forces do not cancel about " + a.about()->text),
                      "take moments about a point they turn about freely (a pivot, a contact point on the ground, their mass centre), "
-                     "or declare the support (a pin, a track) so that its reaction is an unknown");
+                     "or declare the support (a pin, a track) so that its reaction is an unknown" +
+                         std::string(relations.empty() ? "" : "; a mesh or a cord between bodies on declared axles: name it as a constraint "
+                                                              "effect ('NAME: {constraint: \"...\", between: [A, B], at: [...]}'), whose places are checked"));
   return guided;
 }
 

@@ -344,3 +344,32 @@ find:
     REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("cannot turn freely about O"));
   }
 }
+
+TEST_CASE("the check that a set moves freely finds positions where a small geometry is defined", "[momentum][supports]") {
+  // a ball in a circular groove of radius R = 2 mm in a cart on a smooth floor, from u1 = 1.5 mm
+  // at rest to the bottom: momentum along x is conserved (nothing pushes along x) and energy
+  //   m g (R − √(R² − u1²)) = ½ M V² + ½ m (V + v)²,  M V + m (V + v) = 0
+  //   ⇒ V = m √(2 g (M + m)(R − √(R² − u1²))/M)/(M + m)
+  // (its positions are defined only for |u| ≤ R: once refused, as no random place in (−2, 2) had one)
+  const std::string text = R"(title: ball in a small groove of a cart
+parameters: {M: 3 kg, m: 0.5 kg, R: 0.002 m, u1: 0.0015 m, g: 9.81 m/s^2}
+coordinates: {x: m, u: m}
+bodies:
+  cart: {mass: M, inertia: particle, position: [x, 0]}
+  ball: {mass: m, inertia: particle, position: [x + u, R - sqrt(R^2 - u^2)]}
+effects:
+  gravity: {g: g}
+states:
+  1: {x: 0, x_dot: 0, u: u1, u_dot: 0}
+  2: {u: 0}
+analyses:
+  - momentum: {from: 1, to: 2, along: x, conserved: true}
+  - energy: {from: 1, to: 2}
+find:
+  V: {value: x_dot@2, unit: m/s}
+  vu: {value: u_dot@2, root: negative, unit: m/s}
+)";
+  const double M = 3, m = 0.5, R = 0.002, u1 = 0.0015, g = 9.81;
+  const double V = m * std::sqrt(2 * g * (M + m) * (R - std::sqrt(R * R - u1 * u1)) / M) / (M + m);
+  CHECK(value(solve_text(text), "V") == Approx(V).epsilon(1e-12));
+}
