@@ -521,7 +521,8 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   ex H = m.angular_momentum(*a.about(), a.bodies);
   c.before = m.bind(H, a.from);
   c.after = m.bind(H, a.to);
-  auto [px, py] = m.position(*a.about());
+  ex px, py;  // (not a structured binding: the lambda below captures them, which clang 14 refuses)
+  std::tie(px, py) = m.position(*a.about());
   const std::vector<Guided> guided = turns_freely(m, a, px, py);
   std::vector<int> supported;  // guided bodies whose support answers a load across the line (for the derivation)
   // F at Q on a guided body: (r̄ − r_P) × u (F·u), the support's answer included
