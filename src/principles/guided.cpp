@@ -18,8 +18,6 @@ using model::Model;
 
 namespace {
 
-ex cross2(const ex& ax, const ex& ay, const ex& bx, const ex& by) { return ax * by - ay * bx; }
-
 /// The line body b keeps to: u when every ∂r̄/∂q_i is along one constant u and the body does
 /// not turn (or is a particle); nothing otherwise.
 std::optional<Guided> line_of(const Model& m, int b) {
@@ -37,7 +35,7 @@ std::optional<Guided> line_of(const Model& m, int b) {
       if (!motion_free(m, ux) || !motion_free(m, uy)) return std::nullopt;
       u = {ux, uy};
     }
-    if (!vanishes(m, cross2(u->first, u->second, dx, dy))) return std::nullopt;
+    if (!vanishes(m, cross(u->first, u->second, dx, dy))) return std::nullopt;
   }
   if (!u) return std::nullopt;  // held still: no line
   return Guided{b, u->first, u->second};
@@ -50,15 +48,16 @@ ex support_share(const Model& m, const Guided& g, const ex& px, const ex& py, co
                  const ex& Fy, const ex& M) {
   const model::Body& B = m.bodies[static_cast<std::size_t>(g.body)];
   const ex nx = -g.uy, ny = g.ux;
-  return -cross2(B.x - px, B.y - py, nx, ny) * (Fx * nx + Fy * ny) - cross2(qx - B.x, qy - B.y, Fx, Fy) - M;
+  return -cross(B.x - px, B.y - py, nx, ny) * (Fx * nx + Fy * ny) - cross(qx - B.x, qy - B.y, Fx, Fy) - M;
 }
 
-const Guided* find(const std::vector<Guided>& gs, int b) {
+
+}  // namespace
+
+const Guided* find_guided(const std::vector<Guided>& gs, int b) {
   auto it = std::find_if(gs.begin(), gs.end(), [&](const Guided& g) { return g.body == b; });
   return it == gs.end() ? nullptr : &*it;
 }
-
-}  // namespace
 
 std::vector<Guided> guided_bodies(const Model& m, const Analysis& a) {
   std::vector<Guided> out;
@@ -70,7 +69,7 @@ std::vector<Guided> guided_bodies(const Model& m, const Analysis& a) {
 ex guided_moment(const Model& m, const Guided& g, const ex& px, const ex& py, const ex& Fx, const ex& Fy) {
   // the force at Q and the support's share: (r_Q − r_P) × F + ΔM_P = (r̄ − r_P) × u (F·u)
   const model::Body& B = m.bodies[static_cast<std::size_t>(g.body)];
-  return model::trig_simplify(cross2(B.x - px, B.y - py, g.ux, g.uy) * (Fx * g.ux + Fy * g.uy));
+  return model::trig_simplify(cross(B.x - px, B.y - py, g.ux, g.uy) * (Fx * g.ux + Fy * g.uy));
 }
 
 void check_guided_interactions(const Model& m, const Analysis& a, const std::vector<Guided>& gs, const ex& px, const ex& py) {
@@ -83,7 +82,6 @@ void check_guided_interactions(const Model& m, const Analysis& a, const std::vec
                      "take moments about a point on the body's line of motion, use an energy analysis, or leave '" +
                          m.bodies[static_cast<std::size_t>(b)].name + "' out of 'bodies' (declare its support so that its reaction is an unknown)");
   };
-  auto in = [&](const model::PointRef& p) { return p.body >= 0 && !p.ground && in_set(a.bodies, p.body); };
   for (auto& e : m.effects) {
     if (e.activity(a) == Effect::Activity::None) continue;
     // a load inside the set (both ends in it): each guided end's support takes its part across
@@ -91,26 +89,26 @@ void check_guided_interactions(const Model& m, const Analysis& a, const std::vec
     ex share = 0;
     int guided_end = -1;
     for (const Load& l : e.loads(m)) {
-      if (!in(l.at) || !l.partner || !in(*l.partner)) continue;
+      if (!inside(a, l.at) || !l.partner || !inside(a, *l.partner)) continue;
       model::Wrench w = model::force_of(m, l);
       if (l.kind == Load::Kind::Slide) std::tie(w.Fx, w.Fy) = model::relative_velocity(m, l);  // its line (its sense does not matter here)
       if (l.kind == Load::Kind::Turn) w.M = 1;
       const auto [ax, ay] = m.position(l.at);
       const auto [bx, by] = l.kind == Load::Kind::Slide ? std::pair<ex, ex>{ax, ay} : m.position(*l.partner);
-      if (const Guided* g = find(gs, l.at.body)) {
+      if (const Guided* g = find_guided(gs, l.at.body)) {
         share += support_share(m, *g, px, py, ax, ay, w.Fx, w.Fy, w.M);
         guided_end = g->body;
       }
-      if (const Guided* g = find(gs, l.partner->body)) {
+      if (const Guided* g = find_guided(gs, l.partner->body)) {
         share += support_share(m, *g, px, py, bx, by, -w.Fx, -w.Fy, -w.M);
         guided_end = g->body;
       }
     }
     if (guided_end >= 0 && !vanishes(m, share)) refuse("effect '" + e.name + "'", guided_end, e.pos);
     // a support between two bodies of the set: its force on a guided one is unknown
-    if (auto r = e.reaction(m); r && r->kind != model::Reaction::Kind::Contact && in(r->a) && in(r->b))
+    if (auto r = e.reaction(m); r && r->kind != model::Reaction::Kind::Contact && inside(a, r->a) && inside(a, r->b))
       for (const model::PointRef* p : {&r->a, &r->b})
-        if (const Guided* g = find(gs, p->body)) {
+        if (const Guided* g = find_guided(gs, p->body)) {
           const auto [qx, qy] = m.position(*p);
           const bool pin = r->kind == model::Reaction::Kind::Pin;
           for (int k = 0; k < (pin ? 2 : 1); ++k) {
@@ -140,15 +138,14 @@ void check_guided_interactions(const Model& m, const Analysis& a, const std::vec
 }
 
 void check_internal_pairs(const Model& m, const Analysis& a) {
-  auto in = [&](const model::PointRef& p) { return p.body >= 0 && !p.ground && in_set(a.bodies, p.body); };
   for (auto& e : m.effects) {
     auto r = e.reaction(m);
-    if (!r || r->kind != model::Reaction::Kind::Relation || !in(r->a) || !in(r->b) || e.activity(a) == Effect::Activity::None) continue;
+    if (!r || r->kind != model::Reaction::Kind::Relation || !inside(a, r->a) || !inside(a, r->b) || e.activity(a) == Effect::Activity::None) continue;
     // J û on a at r_a, −J û on b at r_b: their moments cancel about every point only when
     // (r_a − r_b) × û = 0
     const auto [ax, ay] = m.position(r->a);
     const auto [bx, by] = m.position(r->b);
-    if (vanishes(m, cross2(ax - bx, ay - by, r->dir_x, r->dir_y))) continue;
+    if (vanishes(m, cross(ax - bx, ay - by, r->dir_x, r->dir_y))) continue;
     throw SceneError(e.pos, "the force of '" + e.name + "' acts along [" + model::text(r->dir_x) + ", " + model::text(r->dir_y) + "] at " +
                                 r->a.text + " and at " + r->b.text + ", which are not on one line along it: the pair would have a moment of its own about " +
                                 a.about()->text,

@@ -236,9 +236,9 @@ void effect_pushes(const Model& m, const Effect& e, const Analysis& a, const Kno
 
 // ---------------------------------------------------------------- reactions
 
-namespace {
-
 bool inside(const Analysis& a, const model::PointRef& p) { return p.body >= 0 && !p.ground && in_set(a.bodies, p.body); }
+
+namespace {
 
 [[noreturn]] void no_impulse(const Model& m, const Effect& e, const Analysis& a) {
   throw InputError("effect '" + e.name + "' (" + e.kind + ") has no impulse to report between states " + m.states[a.from].name + " and " +

@@ -208,7 +208,7 @@ std::vector<Released> released_by(const Model& m, const Analysis& a) {
   for (auto& e : m.effects) {
     auto r = e.reaction(m);
     if (!r || !r->across(a.bodies) || !a.reactions.count(e.name) || e.activity(a) == Effect::Activity::None) continue;
-    const model::PointRef& in = r->a.body >= 0 && !r->a.ground && in_set(a.bodies, r->a.body) ? r->a : r->b;
+    const model::PointRef& in = inside(a, r->a) ? r->a : r->b;
     if (r->kind == model::Reaction::Kind::Pin) {
       out.push_back({in.body, {1, 0, 0}});
       out.push_back({in.body, {0, 1, 0}});
@@ -259,7 +259,6 @@ ex dot(const ex& ax, const ex& ay, const ex& bx, const ex& by) { return ax * bx 
 ImpulseTerm::Kind kind_of(const Push& p) {
   return !p.unknown ? ImpulseTerm::Kind::Integral : p.reaction ? ImpulseTerm::Kind::Reaction : ImpulseTerm::Kind::Given;
 }
-ex cross(const ex& ax, const ex& ay, const ex& bx, const ex& by) { return ax * by - ay * bx; }
 
 /// Which bodies are in the set, for messages.
 std::string set_name(const Model& m, const Analysis& a) {
@@ -495,7 +494,7 @@ std::vector<Guided> turns_freely(const Model& m, const Analysis& a, const ex& px
 /// centre, against the known loads across its line.
 void show_supports(const Model& m, const std::vector<Guided>& guided, const std::vector<int>& supported, MomentumBalance& out) {
   for (int b : supported) {
-    const Guided& g = *std::find_if(guided.begin(), guided.end(), [&](const Guided& x) { return x.body == b; });
+    const Guided& g = *find_guided(guided, b);
     ex Fn = 0;
     for (auto& sh : out.shown)
       if (sh.push.body == b && !sh.push.unknown) Fn += dot(sh.push.Fx, sh.push.Fy, -g.uy, g.ux);
@@ -539,14 +538,14 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       // moment about P: (r_Q − r_P) × F, plus couples
       ex Mp, In;
       std::string how;
-      const auto on_guided = std::find_if(guided.begin(), guided.end(), [&](const Guided& g) { return g.body == p.body; });
+      const Guided* on_guided = find_guided(guided, p.body);
       if (p.unknown) {
         // (r_Q − r_P) × R; a reaction's arm must stay fixed over the interval, a given impulse
         // acts at the first state
         // (a force sliding along its own line keeps its moment: a rolling contact's friction)
         ex ax = model::trig_simplify(p.arm_x - px), ay = model::trig_simplify(p.arm_y - py);
-        if (vanishes(m, ax) && vanishes(m, ay) && on_guided == guided.end()) continue;
-        ex Mr = on_guided != guided.end() ? moment_on_guided(*on_guided, p.arm_x, p.arm_y, p.Rx, p.Ry, 0)
+        if (vanishes(m, ax) && vanishes(m, ay) && !on_guided) continue;
+        ex Mr = on_guided ? moment_on_guided(*on_guided, p.arm_x, p.arm_y, p.Rx, p.Ry, 0)
                                           : model::trig_simplify(cross(ax, ay, p.Rx, p.Ry));
         if (vanishes(m, Mr)) continue;
         if (p.reaction && (!motion_free(m, Mr) || Mr.has(m.t)) && !a.instant())
@@ -557,7 +556,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         if (blocked.empty()) blocked = "the angular impulse of '" + e.name + "' is an unknown total, not a moment known in time";
         how = !p.what.empty() ? "moment of the " + p.what : p.reaction ? "moment of the reaction impulse (unknown)" : "moment of the given impulse";
       } else {
-        Mp = on_guided != guided.end() ? moment_on_guided(*on_guided, p.arm_x, p.arm_y, p.Fx, p.Fy, p.M)
+        Mp = on_guided ? moment_on_guided(*on_guided, p.arm_x, p.arm_y, p.Fx, p.Fy, p.M)
                                        : model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
         if (vanishes(m, Mp)) continue;
         if (a.conserved)

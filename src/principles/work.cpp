@@ -325,7 +325,8 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
                          "the force of '" + e.name + "' switches at " + c.name + " = " + numerics::format(next->second, 6) +
                              ", and the energy equation took state '" + m.states[unknown].name + "' short of it, but the solution puts " +
                              c.name + "@" + m.states[unknown].name + " {} " + units::si_name(c.dim) + " past it",
-                         "give " + c.name + " at state '" + m.states[unknown].name + "'", e.pos});
+                         "give " + c.name + " at state '" + m.states[unknown].name + "'", e.pos,
+                         c.name + "@" + m.states[unknown].name + " is short of where the force of '" + e.name + "' switches"});
     if (!on_side.empty()) {
       // taken past the farthest switching point crossed: (X − s₀) σ_side > 0
       w.holds.push_back({(X - on_side.back().first) * side,
@@ -333,7 +334,7 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
                            ", and the energy equation took state '" + m.states[unknown].name + "' past it, but the solution puts " +
                            c.name + "@" + m.states[unknown].name + " {} " + units::si_name(c.dim) + " short of it: the motion does not get there",
                        "give " + c.name + " at state '" + m.states[unknown].name + "', or switch the force off over this analysis ('off:')",
-                       e.pos});
+                       e.pos, c.name + "@" + m.states[unknown].name + " is past where the force of '" + e.name + "' switches"});
     }
     if (window) {
       // the switching points were looked for within the window only: the end must lie inside it
@@ -342,7 +343,8 @@ static std::optional<ex> piecewise_work(const Model& m, const Effect& e, const e
                          "the force of '" + e.name + "' was split where it switches within " + c.name + " = " + numerics::format(window->first, 6) +
                              " .. " + numerics::format(window->second, 6) + ", but the solution puts " + c.name + "@" + m.states[unknown].name +
                              " {} " + units::si_name(c.dim) + " beyond",
-                         "give " + c.name + " at state '" + m.states[unknown].name + "'", e.pos});
+                         "give " + c.name + " at state '" + m.states[unknown].name + "'", e.pos,
+                         c.name + "@" + m.states[unknown].name + " lies within the range searched for where '" + e.name + "' switches"});
     }
     cuts.push_back({X, beyond});
     if (!x_is_2) std::reverse(cuts.begin(), cuts.end());

@@ -30,6 +30,10 @@ struct Shown {
 
 /// Is body b in the set?
 bool in_set(const std::vector<int>& s, int b);
+/// Is point p on a body of analysis a's set?
+bool inside(const model::Analysis& a, const model::PointRef& p);
+/// The plane cross product a × b = a_x b_y − a_y b_x (a moment about the origin, a parallelism test).
+inline ex cross(const ex& ax, const ex& ay, const ex& bx, const ex& by) { return ax * by - ay * bx; }
 /// Zero for every value of the coordinates (symbolic, then numeric at random points)?
 bool vanishes(const model::Model& m, const ex& e);
 /// Free of the coordinates and rates?
@@ -49,6 +53,8 @@ struct Guided {
 };
 /// The bodies of analysis a's set so held.
 std::vector<Guided> guided_bodies(const model::Model& m, const model::Analysis& a);
+/// The entry of body b in gs, or nullptr when b is not guided.
+const Guided* find_guided(const std::vector<Guided>& gs, int b);
 /// The moment about P of a force F on guided body g together with what its support adds to
 /// balance it across the line and about the mass centre (m ā·n = 0, Ī α = 0): (r̄ − r_P) × u (F·u).
 ex guided_moment(const model::Model& m, const Guided& g, const ex& px, const ex& py, const ex& Fx, const ex& Fy);
