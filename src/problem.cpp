@@ -15,6 +15,7 @@
 #include "kinergy/numeric/roots.hpp"
 #include "kinergy/numeric/ball.hpp"
 #include "kinergy/numeric/evaluator.hpp"
+#include "kinergy/principles/kinetics.hpp"
 
 namespace kinergy {
 
@@ -265,6 +266,10 @@ public:
     collect_unknowns();
     root_hints();
     for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) analysis(ai);
+    // the static friction the rolling contacts state, at the states of the analyses they act in
+    const principles::FrictionLimits limits = principles::static_friction_limits(m);
+    sol_.friction_limits = limits.at_states;
+    sol_.friction_along = limits.along;
     // states that results name but no analysis uses still obey the constraints
     for (auto& f : m.finds)
       for (std::size_t s = 0; s < m.states.size(); ++s)
@@ -562,6 +567,8 @@ private:
       forward_in_time(a);
       a.type->check(m, a, given, sol_.branch, env);
     }
+    // static friction is a verdict on the solution chosen, not a choice between roots
+    for (const principles::FrictionLimit& l : sol_.friction_limits) hold(l.holds, sol_.branch);
     valid_where();
   }
 
@@ -646,21 +653,40 @@ private:
   /// The conditions of the chosen branch that hold parameters without values: each e ≥ 0 is
   /// stated with the closed forms (Solution::valid_where).
   void valid_where() {
+    std::vector<principles::Condition> all;
+    for (const principles::FrictionLimit& l : sol_.friction_limits) all.push_back(l.holds);
     for (auto& bal : sol_.balances)
-      for (const principles::Condition& c : bal->conditions()) {
-        ex e;
-        try {
-          e = factor(normal(model::trig_simplify(c.e.subs(given).subs(sol_.branch.sol))));
-        } catch (const std::exception&) {
-          continue;
-        }
-        if (!unvalued(e)) continue;
-        principles::Condition k = c;
-        k.e = e;
-        if (k.assumed.empty()) k.assumed = c.what.substr(0, c.what.find(" ({}"));
-        if (std::none_of(sol_.valid_where.begin(), sol_.valid_where.end(), [&](const principles::Condition& x) { return x.e.is_equal(e); }))
-          sol_.valid_where.push_back(k);
+      for (const principles::Condition& c : bal->conditions()) all.push_back(c);
+    for (const principles::Condition& c : all) {
+      ex e;
+      try {
+        e = factor(normal(model::trig_simplify(c.e.subs(given).subs(sol_.branch.sol))));
+      } catch (const std::exception&) {
+        continue;
       }
+      if (!unvalued(e)) continue;
+      principles::Condition k = c;
+      k.e = e;
+      if (k.assumed.empty()) k.assumed = c.what.substr(0, c.what.find(" ({}"));
+      if (std::none_of(sol_.valid_where.begin(), sol_.valid_where.end(), [&](const principles::Condition& x) { return x.e.is_equal(e); }))
+        sol_.valid_where.push_back(k);
+    }
+  }
+
+  /// Condition c (e ≥ 0) holds on branch b. One on a parameter without a value is stated with the
+  /// closed form, not judged at the sample values that stand in for it (Solution::valid_where).
+  /// @throws SceneError when it does not, showing by how much ("{}") and c.shown ("{v}").
+  void hold(const principles::Condition& c, const solve::Branch& b) const {
+    if (unvalued(c.e.subs(given).subs(b.sol))) return;
+    auto v = numerics::evaluate(c.e.subs(given).subs(b.sol), env, 30);
+    if (!v || !v->is_negative()) return;
+    std::string what = c.what;
+    what.replace(what.find("{}"), 2, numerics::format(-*v, 6));
+    if (auto at = what.find("{v}"); at != std::string::npos) {
+      auto shown = numerics::evaluate(c.shown.subs(given).subs(b.sol), env, 30);
+      what.replace(at, 3, shown ? numerics::format(*shown, 6) : std::string("?"));
+    }
+    throw SceneError(c.pos, what, c.fix);
   }
 
   /// What the effects declare holds at every solved state of branch b.
@@ -670,18 +696,8 @@ private:
       for (std::size_t s = 0; s < m.states.size(); ++s) e.check(m, static_cast<int>(s), values);
     // what the equations took for granted (a switching force passed, a declared direction of
     // sliding): e ≥ 0
-    auto hold = [&](const principles::Condition& c) {
-      // one on a parameter without a value is stated with the closed form, not judged at the
-      // sample values that stand in for it (Solution::valid_where)
-      if (unvalued(c.e.subs(given).subs(b.sol))) return;
-      auto v = numerics::evaluate(c.e.subs(given).subs(b.sol), env, 30);
-      if (!v || !v->is_negative()) return;
-      std::string what = c.what;
-      what.replace(what.find("{}"), 2, numerics::format(-*v, 6));
-      throw SceneError(c.pos, what, c.fix);
-    };
     for (auto& bal : sol_.balances)
-      for (auto& c : bal->conditions()) hold(c);
+      for (auto& c : bal->conditions()) hold(c, b);
     // the equations that follow from the solved ones at a general state must hold here too
     for (auto& bal : sol_.balances)
       for (auto& q : bal->checked()) {
@@ -1178,7 +1194,7 @@ Solution solve_scene(const scene::SceneDef& def) {
   // first is past every switching point; while it has no solution, one switching point fewer
   std::optional<SceneError> first;
   for (int fewer = 0;; ++fewer) {
-    Solution sol{base, {}, {}, {}, {}, {}, {}, def, {}};
+    Solution sol{base, {}, {}, {}, {}, {}, {}, def, {}, {}, {}};
     try {
       SceneSolver(sol, fewer).run();
       return sol;

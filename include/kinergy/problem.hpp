@@ -9,6 +9,7 @@
 
 #include "kinergy/model/model.hpp"
 #include "kinergy/numeric/ball.hpp"
+#include "kinergy/principles/kinetics.hpp"
 #include "kinergy/principles/momentum.hpp"
 #include "kinergy/principles/principles.hpp"
 #include "kinergy/scene/scene.hpp"
@@ -112,6 +113,12 @@ struct Solution {
   /// cannot be checked here (e ≥ 0, bound to the solution): stated with the closed forms, which
   /// hold only where it does (a friction's sense: mA − mu mB ≥ 0).
   std::vector<principles::Condition> valid_where;
+  /// The static friction rolling contacts state (|F| ≤ μ_s |N|, principles::static_friction_limits),
+  /// at the states of the analyses they act in: checked on the solution (or stated in valid_where).
+  std::vector<principles::FrictionLimit> friction_limits;
+  /// The analyses over an interval along which that friction changes with the motion: the
+  /// confirmation checks them along the simulated motion.
+  std::vector<int> friction_along;
 };
 
 /// Every parameter's number: the given values, and the solved values of unknown parameters (for

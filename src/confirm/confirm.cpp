@@ -1,6 +1,7 @@
 // Every answer confirmed a second way before it is printed (see confirm.hpp).
 #include "kinergy/confirm/confirm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -127,6 +128,21 @@ KineticsCheck check_kinetics(const Solution& s, int ai) {
   return c;
 }
 
+namespace {
+
+/// Where the static friction a rolling contact needs changes along analysis c.analysis, its states
+/// alone do not settle it: the simulated motion must have confirmed it. @throws SceneError when not.
+void friction_along(const Solution& s, const Confirmed& c, const std::string& between) {
+  if (c.by == Confirmed::By::Simulation || std::find(s.friction_along.begin(), s.friction_along.end(), c.analysis) == s.friction_along.end()) return;
+  throw SceneError(s.model.analyses[static_cast<std::size_t>(c.analysis)].pos,
+                   between + " takes a contact with mu_s as rolling, and the friction it needs changes along the motion; its states "
+                             "are checked, but the way between them only by simulating it, which did not confirm it here (" + c.note + ")",
+                   "give every parameter a value so that the motion can be simulated, or leave 'mu_s' out and check the friction at "
+                   "states with kinetics analyses");
+}
+
+}  // namespace
+
 void confirm(Solution& s) {
   s.confirmed.clear();
   const model::Model& m = s.model;
@@ -192,6 +208,8 @@ void confirm(Solution& s) {
             run->note = (run->note.empty() ? "" : run->note + "; ") + "integrated at 1e-13, the difference stays at the double's limit for this motion";
           }
         }
+      } catch (const simulate::SlipError& err) {  // a contact the analysis takes as rolling slips on the way
+        throw SceneError(err.pos(), between + " takes the contact as rolling, but the simulated motion slips: " + err.what(), err.fix());
       } catch (const std::exception& err) {
         // the simulator cannot run this scene (a drive from rest, a singular mass matrix, a stiff
         // spring beyond the steps allowed): no second opinion from it, which is not a disagreement
@@ -227,6 +245,7 @@ void confirm(Solution& s) {
                          "'--no-confirm' prints the closed form without this check");
       }
     }
+    friction_along(s, c, between);
     if (c.by == Confirmed::By::None) {
       if (!residual) residual = residuals(s, residual_of);
       if (*residual && **residual > kConfirmResidual)

@@ -26,6 +26,9 @@ public:
   std::size_t index = 0;  ///< in the model's constraints
   ex fx = 0, fy = 0;      ///< F = λ f on party a (generic)
   ex ux = 0, uy = 0;      ///< f / |f|: the direction J is measured along
+  ex mu_s = 0;            ///< static friction that holds it: |F| ≤ μ_s |N| (0: none stated)
+  std::string normal;     ///< the track effect whose normal force N presses the parties together
+  SourcePos limit_pos;
 
   // the relation: a dashed link between its parties' places (a mesh, a cord), named
   void draw(const Model& m, const At& at, Figure& f) const override {
@@ -47,7 +50,29 @@ public:
 
   // J û on party a, −J û on party b: the force of the relation's multiplier, λ f
   std::optional<model::Reaction> reaction(const Model&) const override {
-    return model::Reaction::relation(a, b, ux, uy, fx, fy, index);
+    model::Reaction r = model::Reaction::relation(a, b, ux, uy, fx, fy, index);
+    r.mu_s = mu_s;
+    r.normal = normal;
+    r.limit_pos = limit_pos;
+    return r;
+  }
+
+  // `normal` names a track effect that pushes on a body of this relation (its normal force N is
+  // what static friction μ_s |N| is measured against)
+  void check(const Model& m, int state, const GiNaC::exmap&) const override {
+    if (state != -1 || normal.empty()) return;
+    const int i = m.effect_index(normal);
+    const auto r = i >= 0 ? m.effects[static_cast<std::size_t>(i)].reaction(m) : std::nullopt;
+    if (!r || r->kind != model::Reaction::Kind::Track)
+      throw SceneError(limit_pos, "constraint '" + name + "': 'normal: " + normal + "' " + (i < 0 ? "names no effect" : "is not a track") +
+                                      ": μ_s is measured against the normal force of the surface the parts roll on",
+                       "name the track effect of that surface (e.g. 'floor: {track: disk, line: {through: [0, r], along: [1, 0]}}', then "
+                       "'normal: floor')");
+    for (int b : r->bodies())
+      if (b == a.body || b == this->b.body) return;
+    throw SceneError(limit_pos, "constraint '" + name + "': track '" + normal + "' holds " + r->a.text + ", which is not a party of '" + name + "' (" +
+                                    a.text + ", " + this->b.text + ")",
+                     "name the track of the surface under the rolling body");
   }
 };
 
@@ -72,7 +97,7 @@ void place(EffectReader& r, PointRef& p, const scene::Node& at) {
 std::shared_ptr<Effect> read_constraint(EffectReader& r, const EffectDef& ed) {
   auto e = make<Constraint>(ed);
   e->has_potential = true;  // V = 0: workless on the whole system
-  r.only(ed, {"between", "at"});
+  r.only(ed, {"between", "at", "mu_s", "normal"});
   const Model& m = r.model();
   scene::Text rel = r.text_of(ed.arg, "constraint", "\"rA*phiA + rB*phiB = 0\"");
   const scene::Node& bn = r.option(ed, "between", "[gearA, gearB]");
@@ -143,6 +168,22 @@ std::shared_ptr<Effect> read_constraint(EffectReader& r, const EffectDef& ed) {
   ex f = model::root_simplify(sqrt(f2));
   e->ux = model::trig_simplify(e->fx / f);
   e->uy = model::trig_simplify(e->fy / f);
+  // static friction that keeps it (a rolling contact): |F| ≤ μ_s |N|, N of a named track
+  const scene::Node* mu = ed.options.get("mu_s");
+  const scene::Node* nn = ed.options.get("normal");
+  if (mu || nn) {
+    if (!mu || !nn)
+      throw SceneError((mu ? mu : nn)->pos, "constraint '" + ed.name + "': 'mu_s' and 'normal' go together",
+                       "give both: 'mu_s: 0.3, normal: floor' (the coefficient of static friction, and the track whose normal force it multiplies)");
+    e->mu_s = non_negative(r, ed, "mu_s", "0.3", Dimension{}, "a friction coefficient is a pure number", "the coefficient of static friction");
+    if (e->mu_s.is_zero())
+      throw SceneError(mu->pos, "constraint '" + ed.name + "': mu_s = 0 holds no friction, so nothing rolls without slipping",
+                       "give the coefficient of static friction (> 0), or leave 'mu_s' out (no limit checked)");
+    if (!nn->is_scalar() || nn->scalar.empty())
+      throw SceneError(nn->pos, "constraint '" + ed.name + "': 'normal' names a track effect", "write 'normal: floor'");
+    e->normal = nn->scalar;
+    e->limit_pos = mu->pos;
+  }
   return e;
 }
 

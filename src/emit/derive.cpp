@@ -652,10 +652,44 @@ private:
     // what the solution took for granted that holds a parameter without a value
     for (auto& c : s_.valid_where)
       para({W("Valid only where "), M(c.e), W(" \u2265 0: " + c.assumed + " (it holds parameters without values, so it is not checked here).")});
+    friction_checked();
     // an extreme: the expression made greatest or least, its stationary points and the ends
     for (auto& res : s_.results) {
       if (res.extreme_note.empty()) continue;
       para({W("For " + res.name + ", " + res.extreme_what + ": "), M(res.extreme_of), W(" — " + res.extreme_note + ".")});
+    }
+  }
+
+  /// The static friction each rolling contact states, as checked on the solution: the share of
+  /// the normal force it takes at each state, and where that share changes along an analysis,
+  /// whether the simulation that confirms it checked the way between.
+  void friction_checked() {
+    std::vector<std::string> done;
+    for (auto& first : s_.friction_limits) {
+      if (std::find(done.begin(), done.end(), first.effect) != done.end()) continue;
+      done.push_back(first.effect);
+      std::string at;
+      for (auto& l : s_.friction_limits) {
+        if (l.effect != first.effect) continue;
+        if (std::any_of(s_.valid_where.begin(), s_.valid_where.end(), [&](const principles::Condition& w) { return w.assumed == l.holds.assumed; }))
+          continue;  // stated with the closed form instead
+        auto v = numerics::evaluate(l.holds.shown.subs(m_.given_values()).subs(s_.branch.sol), m_.numeric_environment(), 30);
+        if (v) at += std::string(at.empty() ? "" : ", ") + numerics::format(*v, o_.digits) + " at state " + m_.states[static_cast<std::size_t>(l.state)].name;
+      }
+      if (at.empty()) continue;
+      std::string text = "Static friction, checked on the solution: '" + first.effect + "' holds without slipping where |F| <= mu_s |N(" + first.normal +
+                         ")|, mu_s = " + first.mu + "; it takes |F|/|N| = " + at + ".";
+      for (int ai : s_.friction_along) {
+        const model::Analysis& a = m_.analyses[static_cast<std::size_t>(ai)];
+        const bool simulated = std::any_of(s_.confirmed.begin(), s_.confirmed.end(), [&](const Confirmed& c) {
+          return c.analysis == ai && c.by == Confirmed::By::Simulation;
+        });
+        text += " Between states " + m_.states[static_cast<std::size_t>(a.from)].name + " and " + m_.states[static_cast<std::size_t>(a.to)].name +
+                " that share changes with the motion: " +
+                (simulated ? "the simulation that confirms the " + a.kind + " analysis checks it along the way, and it holds."
+                           : "it is not checked between them (the solution was not confirmed by simulation).");
+      }
+      para({W(text)});
     }
   }
 

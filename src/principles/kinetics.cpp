@@ -6,6 +6,7 @@
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 
 namespace kinergy::principles {
 
@@ -26,6 +27,23 @@ bool acts_at(const Model& m, const model::Effect& e, const model::Analysis& a) {
   return at == model::Effect::AtState::Acts;
 }
 
+/// The instant the equations are written for: which effects act and which constraints hold
+/// there, the bodies whose Newton–Euler equations are written, and how it is named.
+struct Instant {
+  std::vector<bool> effect, constraint;
+  std::vector<int> bodies;
+  std::string where;  ///< " at state 2" (labels of the rows)
+  SourcePos pos;
+};
+
+/// The instant of kinetics analysis a: its state. @throws SceneError where an effect switches there.
+Instant instant_of(const Model& m, const model::Analysis& a) {
+  Instant in{{}, {}, a.bodies, " at state " + m.states[static_cast<std::size_t>(a.from)].name, a.pos};
+  for (auto& e : m.effects) in.effect.push_back(acts_at(m, e, a));
+  for (std::size_t k = 0; k < m.constraints.size(); ++k) in.constraint.push_back(m.constraint_at(k, a.from, true));
+  return in;
+}
+
 /// Does the reaction act on a body of the set?
 bool touches(const Reaction& r, const std::vector<int>& set) {
   for (int b : r.bodies())
@@ -37,31 +55,33 @@ bool is_body(const model::PointRef& p) { return p.body >= 0 && !p.ground; }
 
 /// The generic unknowns: q̈, the reactions of the supports on the set (a constraint effect's
 /// always: its force enters Lagrange's equations), the multipliers of the constraints no effect holds.
-std::vector<ex> generic_unknowns(const Model& m, const model::Analysis& a) {
+std::vector<ex> generic_unknowns(const Model& m, const Instant& in) {
   std::vector<ex> u;
   for (auto& c : m.coords) u.push_back(c.qdd);
-  for (auto& e : m.effects) {
+  for (std::size_t i = 0; i < m.effects.size(); ++i) {
+    const model::Effect& e = m.effects[i];
     auto r = e.reaction(m);
-    if (!r || !acts_at(m, e, a)) continue;
-    if (r->kind == Reaction::Kind::Relation || touches(*r, a.bodies))
+    if (!r || !in.effect[i]) continue;
+    if (r->kind == Reaction::Kind::Relation || touches(*r, in.bodies))
       if (auto it = m.instant_reactions.find(e.name); it != m.instant_reactions.end()) u.insert(u.end(), it->second.begin(), it->second.end());
   }
   for (std::size_t k = 0; k < m.constraints.size(); ++k)
-    if (!m.carrier(k) && m.constraint_at(k, a.from, true)) u.push_back(m.instant_lambdas[k]);
+    if (!m.carrier(k) && in.constraint[k]) u.push_back(m.instant_lambdas[k]);
   return u;
 }
 
 /// Every force and couple on the bodies (generic): the effects' loads (a load's partner takes
 /// −F, −M: Newton's third law) and the supports' reactions.
-std::vector<BodyLoad> body_loads(const Model& m, const model::Analysis& a) {
+std::vector<BodyLoad> body_loads(const Model& m, const Instant& in) {
   std::vector<BodyLoad> out;
   auto put = [&](const std::string& name, const model::PointRef& p, const ex& Fx, const ex& Fy, const ex& M, bool unknown) {
     if (!is_body(p)) return;
     auto [x, y] = m.position(p);
     out.push_back({name, p.body, x, y, Fx, Fy, M, unknown});
   };
-  for (auto& e : m.effects) {
-    if (!acts_at(m, e, a)) continue;
+  for (std::size_t i = 0; i < m.effects.size(); ++i) {
+    const model::Effect& e = m.effects[i];
+    if (!in.effect[i]) continue;
     for (const model::Load& l : e.loads(m)) {
       const model::Wrench f = model::force_of(m, l);
       put(e.name, l.at, f.Fx, f.Fy, f.M, false);
@@ -105,13 +125,12 @@ std::vector<BodyAcceleration> accelerations(const Model& m) {
   return out;
 }
 
-std::vector<KineticsBalance::Row> generic_rows(const Model& m, const model::Analysis& a, const std::vector<BodyLoad>& loads,
+std::vector<KineticsBalance::Row> generic_rows(const Model& m, const Instant& in, const std::vector<BodyLoad>& loads,
                                                 const std::vector<BodyAcceleration>& acc) {
   using Kind = KineticsBalance::Row::Kind;
   std::vector<KineticsBalance::Row> rows;
-  const std::string S = m.states[a.from].name;
   auto row = [&](Kind kind, int body, int coord, const ex& lhs, const ex& rhs, const std::string& label) {
-    rows.push_back({kind, body, coord, {model::trig_simplify(lhs), model::trig_simplify(rhs), "kinetics", label + " at state " + S, a.pos}, false});
+    rows.push_back({kind, body, coord, {model::trig_simplify(lhs), model::trig_simplify(rhs), "kinetics", label + in.where, in.pos}, false});
   };
   // along each coordinate q_i (the supports that the coordinates hold do no virtual work):
   //   Σ_b m_b a_G·∂r_G/∂q_i + Ī_b α_b ∂φ_b/∂q_i = Σ loads Q_i + Σ relations F û·(∂r_a − ∂r_b)/∂q_i + Σ λ_k ∂c_k/∂q_i
@@ -122,8 +141,9 @@ std::vector<KineticsBalance::Row> generic_rows(const Model& m, const model::Anal
       const model::Body& b = m.bodies[static_cast<std::size_t>(g.body)];
       lhs += b.mass * (g.ax * b.x.diff(q) + g.ay * b.y.diff(q)) + b.inertia * g.alpha * b.angle.diff(q);
     }
-    for (auto& e : m.effects) {
-      if (!acts_at(m, e, a)) continue;
+    for (std::size_t j = 0; j < m.effects.size(); ++j) {
+      const model::Effect& e = m.effects[j];
+      if (!in.effect[j]) continue;
       for (const model::Load& l : e.loads(m)) rhs += model::generalized_force(m, l, i);
       auto r = e.reaction(m);
       if (!r || r->kind != Reaction::Kind::Relation) continue;
@@ -132,16 +152,16 @@ std::vector<KineticsBalance::Row> generic_rows(const Model& m, const model::Anal
       rhs += m.instant_reactions.at(e.name)[0] * (r->dir_x * (dax - dbx) + r->dir_y * (day - dby));
     }
     for (std::size_t k = 0; k < m.constraints.size(); ++k)
-      if (!m.carrier(k) && m.constraint_at(k, a.from, true)) rhs += m.instant_lambdas[k] * m.constraints[k].first.diff(q);
+      if (!m.carrier(k) && in.constraint[k]) rhs += m.instant_lambdas[k] * m.constraints[k].first.diff(q);
     row(Kind::Motion, -1, static_cast<int>(i), lhs, rhs, "equation of motion along " + m.coords[i].name);
   }
   // each constraint held at the state keeps holding: c̈ = 0
   for (std::size_t k = 0; k < m.constraints.size(); ++k)
-    if (m.constraint_at(k, a.from, true))
+    if (in.constraint[k])
       row(Kind::Constraint, -1, static_cast<int>(k), m.d_dt(m.rate(m.constraints[k].first)), 0,
           "second rate of constraint " + std::to_string(k + 1));
   // each body of the set: ΣF = m a_G, ΣM_G = Ī α
-  for (int bi : a.bodies) {
+  for (int bi : in.bodies) {
     const model::Body& b = m.bodies[static_cast<std::size_t>(bi)];
     ex Fx = 0, Fy = 0, MG = 0;
     for (auto& l : loads) {
@@ -200,11 +220,103 @@ std::string names_of(const std::vector<ex>& xs) {
   return s;
 }
 
+/// The independent rows, in order (Lagrange's equations and the constraints first), from their
+/// coefficients at the sample point `at` (the rows are linear in the unknowns: which of them are
+/// independent, and whether the others follow, does not depend on where). `what` names the
+/// instant for messages. @throws SceneError where a row is undefined there, where the rows leave
+/// an unknown open (statically indeterminate), or where a row does not follow from the chosen ones
+/// (a force the scene does not declare).
+struct Independent {
+  std::vector<std::size_t> chosen;
+};
+Independent independent_rows(const Model& m, const std::vector<KineticsBalance::Row>& rows, const std::vector<ex>& unknowns, const exmap& at,
+                             const exmap& env_all, const std::string& what, const SourcePos& pos) {
+  exmap zero;
+  for (auto& u : unknowns) zero[u] = 0;
+  // each row r(u) = A u − b: its coefficients at the sample point
+  const std::size_t n = unknowns.size();
+  std::vector<std::vector<double>> A;
+  std::vector<double> b;
+  for (auto& r : rows) {
+    ex res = r.equation.lhs - r.equation.rhs;
+    std::vector<double> row;
+    try {
+      for (auto& u : unknowns) row.push_back(number(res.diff(ex_to<symbol>(u)), at, env_all));
+      b.push_back(-number(res.subs(zero), at, env_all));
+    } catch (const std::exception& err) {
+      throw SceneError(pos, what + " cannot be taken: the " + r.equation.label + " is undefined there (" + model::math_fault(err) + ")",
+                       "a kinetic friction where nothing slides, or a drive at rest, has no force there: take the kinetics at another state");
+    }
+    for (double x : row)
+      if (!std::isfinite(x))
+        throw SceneError(pos, what + " cannot be taken: the " + r.equation.label + " has no value at the state's values",
+                         "give the positions and rates at that state, or take the kinetics at another state");
+    A.push_back(row);
+  }
+  // independent rows, in order: Gram–Schmidt
+  std::vector<std::vector<double>> basis;
+  Independent out;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::vector<double> v = A[i];
+    double norm0 = 0;
+    for (double x : v) norm0 += x * x;
+    if (!(norm0 > 0) || !std::isfinite(norm0)) continue;
+    for (auto& e : basis) {
+      double d = 0;
+      for (std::size_t k = 0; k < n; ++k) d += v[k] * e[k];
+      for (std::size_t k = 0; k < n; ++k) v[k] -= d * e[k];
+    }
+    double norm = 0;
+    for (double x : v) norm += x * x;
+    if (norm <= 1e-18 * norm0) continue;
+    for (double& x : v) x /= std::sqrt(norm);
+    basis.push_back(v);
+    out.chosen.push_back(i);
+  }
+  if (out.chosen.size() < n) {
+    // the unknowns outside the rows' span are what Newton's law leaves open
+    std::vector<ex> open;
+    for (std::size_t k = 0; k < n; ++k) {
+      double in = 0;
+      for (auto& e : basis) in += e[k] * e[k];
+      if (in < 1 - 1e-9) open.push_back(unknowns[k]);
+    }
+    throw SceneError(pos, "Newton's second law in " + what + " does not determine " + names_of(open) +
+                              ": the supports on the bodies are more than their motion needs (statically indeterminate)",
+                     "remove a support the coordinates make redundant, or leave out of 'bodies' the body it holds");
+  }
+  std::vector<std::vector<double>> As;
+  std::vector<double> bs;
+  for (std::size_t i : out.chosen) {
+    As.push_back(A[i]);
+    bs.push_back(b[i]);
+  }
+  const std::vector<double> u = solve_dense(As, bs);
+  // every other row follows from the chosen ones, or a force is missing from it
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (std::find(out.chosen.begin(), out.chosen.end(), i) != out.chosen.end()) continue;
+    double lhs = 0, scale = std::fabs(b[i]);
+    for (std::size_t k = 0; k < n; ++k) {
+      lhs += A[i][k] * u[k];
+      scale = std::max(scale, std::fabs(A[i][k] * u[k]));
+    }
+    if (!std::isfinite(lhs) || std::fabs(lhs - b[i]) <= 1e-8 * std::max(scale, 1e-300)) continue;
+    const auto& r = rows[i];
+    const std::string who = r.body >= 0 ? m.bodies[static_cast<std::size_t>(r.body)].name : "";
+    throw SceneError(pos, r.equation.label + " does not hold with the supports the scene declares: a force the scene does not "
+                              "declare acts on " + (who.empty() ? std::string("the bodies") : who) +
+                              " (its coordinates hold it to a path, or a constraint without an effect acts on it)",
+                     "declare that support (a pin, a track, a constraint effect), or leave " + (who.empty() ? std::string("that body") : who) +
+                         " out of the kinetics analysis' 'bodies'");
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<ex> kinetics_unknowns(const Model& m, const model::Analysis& a) {
   std::vector<ex> out;
-  for (auto& g : generic_unknowns(m, a)) out.push_back(m.bind(g, a.from));
+  for (auto& g : generic_unknowns(m, instant_of(m, a))) out.push_back(m.bind(g, a.from));
   return out;
 }
 
@@ -213,9 +325,10 @@ KineticsBalance kinetics(const Model& m, const model::Analysis& a, const Knowled
   const int S = a.from;
   out.state = S;
   out.unknowns = kinetics_unknowns(m, a);
-  std::vector<BodyLoad> loads = body_loads(m, a);
+  const Instant in = instant_of(m, a);
+  std::vector<BodyLoad> loads = body_loads(m, in);
   const std::vector<BodyAcceleration> acc = accelerations(m);
-  out.rows = generic_rows(m, a, loads, acc);
+  out.rows = generic_rows(m, in, loads, acc);
   for (int b : a.bodies) {
     const BodyAcceleration& g = acc[static_cast<std::size_t>(b)];
     out.accelerations.push_back({b, m.bind(g.ax, S), m.bind(g.ay, S), m.bind(g.alpha, S)});
@@ -240,87 +353,131 @@ KineticsBalance kinetics(const Model& m, const model::Analysis& a, const Knowled
   exmap env_all = env;
   for (auto& p : m.params)
     if (p.unknown) env_all[p.sym] = numeric(1) + numeric(13 * (++j) % 29, 29);
-  exmap zero;
-  for (auto& u : out.unknowns) zero[u] = 0;
+  const Independent ind = independent_rows(m, out.rows, out.unknowns, at, env_all, "the kinetics at state '" + m.states[static_cast<std::size_t>(S)].name + "'", a.pos);
+  for (std::size_t i : ind.chosen) out.rows[i].used = true;
+  return out;
+}
 
-  // each row r(u) = A u − b: its coefficients at the sample point
-  const std::size_t n = out.unknowns.size();
-  std::vector<std::vector<double>> A;
-  std::vector<double> b;
-  for (auto& r : out.rows) {
-    ex res = r.equation.lhs - r.equation.rhs;
-    std::vector<double> row;
-    try {
-      for (auto& u : out.unknowns) row.push_back(number(res.diff(ex_to<symbol>(u)), at, env_all));
-      b.push_back(-number(res.subs(zero), at, env_all));
-    } catch (const std::exception& err) {
-      throw SceneError(a.pos, "the kinetics at state '" + m.states[static_cast<std::size_t>(S)].name + "' cannot be taken: the " + r.equation.label +
-                                  " is undefined there (" + model::math_fault(err) + ")",
-                       "a kinetic friction where nothing slides, or a drive at rest, has no force there: take the kinetics at another state");
-    }
-    for (double x : row)
-      if (!std::isfinite(x))
-        throw SceneError(a.pos, "the kinetics at state '" + m.states[static_cast<std::size_t>(S)].name + "' cannot be taken: the " +
-                                    r.equation.label + " has no value at the state's values",
-                         "give the positions and rates at that state, or take the kinetics at another state");
-    A.push_back(row);
+std::vector<ex> support_forces(const Model& m, const std::vector<bool>& on, const std::vector<bool>& held, const std::vector<int>& bodies,
+                               const std::vector<ex>& wanted, const std::string& what, const SourcePos& pos) {
+  const Instant in{on, held, bodies, " during " + what, pos};
+  const std::vector<ex> unknowns = generic_unknowns(m, in);
+  for (const ex& w : wanted)
+    if (std::find_if(unknowns.begin(), unknowns.end(), [&](const ex& u) { return u.is_equal(w); }) == unknowns.end())
+      throw SceneError(pos, "the force " + model::text(w) + " does not act during " + what, "report the scene");
+  const std::vector<BodyLoad> loads = body_loads(m, in);
+  const std::vector<KineticsBalance::Row> rows = generic_rows(m, in, loads, accelerations(m));
+  // a sample point of the motion: t, q, q̇ and the parameters without values
+  exmap at, env_all = m.numeric_environment();
+  int j = 0;
+  for (auto& c : m.coords) {
+    at[c.q] = numeric(30 + 17 * (j++), 100);
+    at[c.qd] = numeric(30 + 17 * (j++), 100);
   }
-  // independent rows, in order (Lagrange's equations and the constraints first): Gram–Schmidt
-  std::vector<std::vector<double>> basis;
-  std::vector<std::size_t> chosen;
-  for (std::size_t i = 0; i < out.rows.size(); ++i) {
-    std::vector<double> v = A[i];
-    double norm0 = 0;
-    for (double x : v) norm0 += x * x;
-    if (!(norm0 > 0) || !std::isfinite(norm0)) continue;
-    for (auto& e : basis) {
-      double d = 0;
-      for (std::size_t k = 0; k < n; ++k) d += v[k] * e[k];
-      for (std::size_t k = 0; k < n; ++k) v[k] -= d * e[k];
-    }
-    double norm = 0;
-    for (double x : v) norm += x * x;
-    if (norm <= 1e-18 * norm0) continue;
-    for (double& x : v) x /= std::sqrt(norm);
-    basis.push_back(v);
-    chosen.push_back(i);
+  at[m.t] = numeric(1, 3);
+  for (auto& p : m.params)
+    if (p.unknown || !p.value) env_all[p.sym] = numeric(1) + numeric(13 * (++j) % 29, 29);
+  const Independent ind = independent_rows(m, rows, unknowns, at, env_all, what, pos);
+  // A u = b over the chosen rows, solved in closed form
+  lst eqs, xs;
+  for (std::size_t i : ind.chosen) eqs.append(rows[i].equation.lhs == rows[i].equation.rhs);
+  for (const ex& u : unknowns) xs.append(u);
+  ex sol;
+  try {
+    sol = lsolve(eqs, xs);
+  } catch (const std::exception& err) {
+    throw SceneError(pos, "Newton's second law during " + what + " has no closed form for the supports' forces (" + std::string(err.what()) + ")",
+                     "check the forces at states with kinetics analyses instead");
   }
-  if (chosen.size() < n) {
-    // the unknowns outside the rows' span are what Newton's law leaves open
-    std::vector<ex> open;
-    for (std::size_t k = 0; k < n; ++k) {
-      double in = 0;
-      for (auto& e : basis) in += e[k] * e[k];
-      if (in < 1 - 1e-9) open.push_back(out.unknowns[k]);
+  std::vector<ex> out;
+  for (const ex& w : wanted)
+    for (const ex& r : sol)
+      if (r.lhs().is_equal(w)) out.push_back(model::trig_simplify(normal(r.rhs())));
+  if (out.size() != wanted.size())
+    throw SceneError(pos, "Newton's second law during " + what + " does not give every force asked for", "report the scene");
+  return out;
+}
+
+std::vector<int> friction_bodies(const Model& m, const Reaction& r) {
+  std::vector<int> out = r.bodies();
+  for (int b : m.effects[static_cast<std::size_t>(m.effect_index(r.normal))].reaction(m)->bodies())
+    if (std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
+  return out;
+}
+
+namespace {
+/// Does e hold a parameter without a value?
+bool mu_unvalued(const Model& m, const ex& e) {
+  for (auto& p : m.params)
+    if (!p.value && e.has(p.sym)) return true;
+  return false;
+}
+}  // namespace
+
+FrictionLimits static_friction_limits(const Model& m) {
+  FrictionLimits out;
+  for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
+    const model::Effect& e = m.effects[ei];
+    const auto r = e.reaction(m);
+    if (!r || r->kind != Reaction::Kind::Relation || r->mu_s.is_zero()) continue;
+    const ex F = m.instant_reactions.at(e.name)[0], N = m.instant_reactions.at(r->normal)[0];
+    const model::Effect& track = m.effects[static_cast<std::size_t>(m.effect_index(r->normal))];
+    // |F| ≤ μ_s |N| at state S: μ_s |N| − |F| ≥ 0, showing the ratio |F|/|N| it needs
+    std::string mu = model::text(r->mu_s);
+    if (!is_a<numeric>(r->mu_s))
+      if (auto v = numerics::evaluate(r->mu_s, m.numeric_environment(), 30); v && !mu_unvalued(m, r->mu_s)) mu += " = " + numerics::format(*v, 6);
+    auto limit = [&](const ex& Fs, const ex& Ns, int S) {
+      const std::string st = m.states[static_cast<std::size_t>(S)].name;
+      Condition c{r->mu_s * abs(Ns) - abs(Fs),
+                  "'" + e.name + "' slips at state '" + st + "': holding it takes a friction force of {v} times the normal force of '" + r->normal +
+                      "', more than mu_s = " + mu + " allows (short by {} N)",
+                  "give a larger mu_s, or let it slide: kinetic friction (a friction effect) in place of the constraint; the least mu_s is "
+                  "abs(F(" + e.name + ")@" + st + "/N(" + r->normal + ")@" + st + "), which a result can ask for",
+                  r->limit_pos, "'" + e.name + "' holds without slipping at state '" + st + "', |F| <= mu_s |N(" + r->normal + ")| with mu_s = " + mu};
+      c.shown = abs(Fs) / abs(Ns);
+      // one per state (a kinetics analysis and an energy analysis ending there say the same)
+      if (std::none_of(out.at_states.begin(), out.at_states.end(), [&](const FrictionLimit& x) { return x.effect == e.name && x.state == S; }))
+        out.at_states.push_back({e.name, r->normal, mu, S, c});
+    };
+    for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
+      const model::Analysis& a = m.analyses[ai];
+      const bool at_state = a.type && a.type->at_state();
+      if (at_state ? e.at_state(a.from) != model::Effect::AtState::Acts || track.at_state(a.from) != model::Effect::AtState::Acts
+                   : e.activity(a) != model::Effect::Activity::Whole || track.activity(a) != model::Effect::Activity::Whole)
+        continue;
+      if (a.instant())
+        throw SceneError(r->limit_pos, "constraint '" + e.name + "' states mu_s, and acts in the impact from state '" + m.states[a.from].name + "' to '" +
+                                           m.states[a.to].name + "', where kinergy does not check static friction (the impulse it takes against mu_s times the normal impulse)",
+                         "switch the constraint off over the impact ('off:'), or leave 'mu_s' out");
+      const auto has = [&](const ex& x) { return std::any_of(a.unknowns.begin(), a.unknowns.end(), [&](const ex& u) { return u.is_equal(x); }); };
+      if (at_state && has(m.bind(F, a.from)) && has(m.bind(N, a.from))) {
+        limit(m.bind(F, a.from), m.bind(N, a.from), a.from);  // the forces the kinetics solves for
+        continue;
+      }
+      // over the motion of the analysis (or at a state the kinetics' bodies do not cover), F and
+      // N in closed form from Newton–Euler for every body
+      std::vector<bool> on, held;
+      for (auto& x : m.effects) on.push_back(at_state ? x.at_state(a.from) == model::Effect::AtState::Acts : x.activity(a) == model::Effect::Activity::Whole);
+      for (std::size_t k = 0; k < m.constraints.size(); ++k)
+        held.push_back(at_state ? m.constraint_at(k, a.from, true) : m.constraint_activity(k, a) == model::Effect::Activity::Whole);
+      const std::string what = "the " + a.kind + " analysis" + (at_state ? " at state '" + m.states[a.from].name + "'"
+                                                                          : " from state '" + m.states[a.from].name + "' to '" + m.states[a.to].name + "'");
+      std::vector<ex> FN;
+      try {
+        FN = support_forces(m, on, held, friction_bodies(m, *r), {F, N}, what, a.pos);
+      } catch (const SceneError& err) {
+        throw SceneError(r->limit_pos, "constraint '" + e.name + "' states mu_s, which is checked against the forces Newton's second law gives during " +
+                                           what + ", but: " + err.problem(),
+                         err.fix());
+      }
+      limit(m.bind(FN[0], a.from), m.bind(FN[1], a.from), a.from);
+      if (at_state) continue;
+      limit(m.bind(FN[0], a.to), m.bind(FN[1], a.to), a.to);
+      // the ratio |F|/|N| along the motion: where it changes, the states do not settle it
+      const ex ratio = model::trig_simplify(FN[0] / FN[1]);
+      if ((!motion_free(m, ratio) || ratio.has(m.t)) && std::find(out.along.begin(), out.along.end(), static_cast<int>(ai)) == out.along.end())
+        out.along.push_back(static_cast<int>(ai));
     }
-    throw SceneError(a.pos, "Newton's second law at state '" + m.states[S].name + "' does not determine " + names_of(open) +
-                                ": the supports on the bodies of this kinetics analysis are more than their motion needs (statically indeterminate)",
-                     "remove a support the coordinates make redundant, or leave out of 'bodies' the body it holds");
-  }
-  std::vector<std::vector<double>> As;
-  std::vector<double> bs;
-  for (std::size_t i : chosen) {
-    As.push_back(A[i]);
-    bs.push_back(b[i]);
-    out.rows[i].used = true;
-  }
-  const std::vector<double> u = solve_dense(As, bs);
-  // every other row follows from the chosen ones, or a force is missing from it
-  for (std::size_t i = 0; i < out.rows.size(); ++i) {
-    if (out.rows[i].used) continue;
-    double lhs = 0, scale = std::fabs(b[i]);
-    for (std::size_t k = 0; k < n; ++k) {
-      lhs += A[i][k] * u[k];
-      scale = std::max(scale, std::fabs(A[i][k] * u[k]));
-    }
-    if (!std::isfinite(lhs) || std::fabs(lhs - b[i]) <= 1e-8 * std::max(scale, 1e-300)) continue;
-    const auto& r = out.rows[i];
-    const std::string who = r.body >= 0 ? m.bodies[static_cast<std::size_t>(r.body)].name : "";
-    throw SceneError(a.pos, r.equation.label + " does not hold with the supports the scene declares: a force the scene does not "
-                                "declare acts on " + (who.empty() ? std::string("the bodies") : who) +
-                                " (its coordinates hold it to a path, or a constraint without an effect acts on it)",
-                     "declare that support (a pin, a track, a constraint effect), or leave " + (who.empty() ? std::string("that body") : who) +
-                         " out of the kinetics analysis' 'bodies'");
   }
   return out;
 }

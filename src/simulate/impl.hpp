@@ -12,6 +12,7 @@
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/native.hpp"
 #include "kinergy/numeric/tape.hpp"
+#include "kinergy/principles/kinetics.hpp"
 #include "kinergy/simulate/simulate.hpp"
 
 namespace kinergy::simulate {
@@ -86,6 +87,15 @@ struct Simulator::Impl {
   std::vector<double> flimit;
   std::vector<ContactMode> cmode;
   std::vector<double> ce;
+  // --- static friction that rolling contacts state: |F| ≤ μ_s |N| along the run ---
+  struct Limit {
+    std::string effect, normal;
+    double mu = 0;
+    ex F, N;  ///< in closed form (t, q, q̇), from Newton–Euler for every body
+    SourcePos pos;
+  };
+  std::vector<Limit> limits;
+  std::size_t a_lim = 0;  ///< F, N of each limit in the auxiliary kernel
   // --- workspace ---
   Mat M, B;
   Vec f, b, qdd, lambda;
@@ -99,6 +109,7 @@ struct Simulator::Impl {
     nc = eq.g.size();
     if (n == 0) throw SimulationError("the scene has no coordinates: nothing moves", "add coordinates to the bodies");
     doubles_hold_parameters();
+    static_friction();
     compile();
     fmode.assign(eq.friction.size(), FrictionMode::Slide);
     fdir.assign(eq.friction.size(), {1, 0});
@@ -252,7 +263,44 @@ struct Simulator::Impl {
     xa.resize(1 + 2 * n);
   }
 
-  // T, V, g, ∂g/∂t, the contact gaps, the impulses and (last) the stop expression
+  // The relations held by static friction (a rolling contact with mu_s) among the effects that
+  // act: F and N at a general instant, from Newton–Euler for every body (principles::support_forces).
+  void static_friction() {
+    std::vector<bool> on, held;
+    for (std::size_t i = 0; i < m.effects.size(); ++i) on.push_back(o.effects_on.empty() || o.effects_on[i]);
+    for (std::size_t k = 0; k < m.constraints.size(); ++k) {
+      const model::Effect* c = m.carrier(k);
+      held.push_back(!c || on[static_cast<std::size_t>(m.effect_index(c->name))]);
+    }
+    for (std::size_t i = 0; i < m.effects.size(); ++i) {
+      const model::Effect& e = m.effects[i];
+      auto r = e.reaction(m);
+      if (!r || r->kind != model::Reaction::Kind::Relation || r->mu_s.is_zero() || !on[i] ||
+          !on[static_cast<std::size_t>(m.effect_index(r->normal))])
+        continue;
+      Limit l;
+      l.effect = e.name;
+      l.normal = r->normal;
+      l.pos = r->limit_pos;
+      const ex mu = value_of(r->mu_s, values, "mu_s of '" + e.name + "'").evalf();
+      l.mu = is_a<numeric>(mu) ? ex_to<numeric>(mu).to_double() : 0;
+      try {
+        auto FN = principles::support_forces(m, on, held, principles::friction_bodies(m, *r),
+                                             {m.instant_reactions.at(e.name)[0], m.instant_reactions.at(r->normal)[0]}, "the simulated motion",
+                                             r->limit_pos);
+        l.F = FN[0];
+        l.N = FN[1];
+      } catch (const SceneError& err) {
+        throw SimulationError("'" + e.name + "' states mu_s, which the simulation checks against the forces Newton's second law gives, but: " +
+                                  err.problem(),
+                              err.fix(), r->limit_pos);
+      }
+      limits.push_back(l);
+    }
+  }
+
+  // T, V, g, ∂g/∂t, the contact gaps, the impulses, F and N of the friction limits and (last)
+  // the stop expression
   void build_aux(const std::optional<ex>& when) {
     std::vector<ex> a;
     a_T = a.size();
@@ -268,6 +316,11 @@ struct Simulator::Impl {
     a_imp = a.size();
     for (auto& I : eq.impulses)
       for (auto& P : I.P) a.push_back(value_of(P, values, "impulse '" + m.effects[I.effect].name + "'"));
+    a_lim = a.size();
+    for (auto& l : limits) {
+      a.push_back(value_of(l.F, values, "the friction that holds '" + l.effect + "'"));
+      a.push_back(value_of(l.N, values, "the normal force of '" + l.normal + "'"));
+    }
     a_stop = a.size();
     has_stop = when.has_value();
     if (when) a.push_back(value_of(*when, values, "the stop condition"));

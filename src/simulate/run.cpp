@@ -244,6 +244,7 @@ private:
       impulse_work_ = p_.T() - T0;  // the work of the given impulses, ½ P·(q̇⁻ + q̇⁺)
       note("the given impulse(s) act");
     }
+    holds_rolling();
     if (p_.eq.contacts.empty() && p_.eq.friction.empty()) return;  // nothing more to settle at the start
     // contacts: penetrated (an error), touching and approaching (an impact now), touching at rest
     p_.eval_aux(t_, y_.data());
@@ -287,7 +288,7 @@ private:
   void integrate() {
     double dt = stepper_->adaptive() ? std::min(span_ * 1e-3, 1e-3) : fixed_dt_;
     // a scene without contacts, friction or a stop condition has no events to look for
-    const bool watch = !p_.eq.contacts.empty() || !p_.eq.friction.empty() || p_.has_stop;
+    const bool watch = !p_.eq.contacts.empty() || !p_.eq.friction.empty() || !p_.limits.empty() || p_.has_stop;
     std::vector<double> ev0 = watch ? events(t_, y_) : std::vector<double>{}, ev1;
     std::vector<double> vn0 = vn_last_;
     state_type y;  // the trial step (a buffer reused: no allocation per step)
@@ -429,7 +430,31 @@ private:
       max_T_ = std::max(max_T_, p_.T());
     }
     if (p_.o.record && !sampling()) record();
+    holds_rolling();
     return moved;
+  }
+
+  // each rolling contact with μ_s: |F| ≤ μ_s |N| at the step's end (to a part in 10⁹ of μ_s |N|,
+  // the equality of a contact on the point of slipping); past it the body slips, which this
+  // simulation does not model
+  void holds_rolling() {
+    if (p_.limits.empty()) return;
+    p_.eval_aux(t_, y_.data());
+    for (std::size_t k = 0; k < p_.limits.size(); ++k) {
+      const double F = std::fabs(p_.aux[p_.a_lim + 2 * k]), N = std::fabs(p_.aux[p_.a_lim + 2 * k + 1]);
+      if (F > p_.limits[k].mu * N * (1 + 1e-9)) slips(k);
+    }
+  }
+
+  // rolling contact k slips now (its F and N in aux): the error, with both numbers
+  [[noreturn]] void slips(std::size_t k) {
+    const auto& l = p_.limits[k];
+    const double F = std::fabs(p_.aux[p_.a_lim + 2 * k]), N = std::fabs(p_.aux[p_.a_lim + 2 * k + 1]);
+    throw SlipError("'" + l.effect + "' slips at t = " + num(t_) + " s: holding it takes a friction force of " + num(F) + " N, " + num(F / N) +
+                        " times the normal force of '" + l.normal + "' (" + num(N) + " N), and mu_s = " + num(l.mu) +
+                        " allows no more (the simulation does not go on with it sliding)",
+                    "give a larger mu_s, or model the sliding: kinetic friction (a friction effect) in place of the constraint from that state on",
+                    l.pos);
   }
 
   // ---------------------------------------------------------------- regular samples
@@ -521,7 +546,7 @@ private:
   std::vector<double> events(double t, const state_type& y) {
     std::vector<double> ev;
     const bool contacts = !p_.eq.contacts.empty(), friction = !p_.eq.friction.empty();
-    if (!contacts && !friction && !p_.has_stop) return {1.0};
+    if (!contacts && !friction && p_.limits.empty() && !p_.has_stop) return {1.0};
     std::vector<double> lam;
     if (contacts || friction) {
       std::vector<double> dydt(y.size());
@@ -542,6 +567,9 @@ private:
         ev.push_back(p_.flimit[k] - std::hypot(F[0], F[1]));
       }
     }
+    // a rolling contact with μ_s: μ_s |N| − |F|, positive while it holds
+    for (std::size_t k = 0; k < p_.limits.size(); ++k)
+      ev.push_back(p_.limits[k].mu * std::fabs(p_.aux[p_.a_lim + 2 * k + 1]) - std::fabs(p_.aux[p_.a_lim + 2 * k]));
     // a stop condition that is zero at the start (a turning point sought from rest) takes the
     // sign it has as the motion begins: the run ends at its next zero
     if (p_.has_stop && stop_sign_ == 0 && t > t_ && p_.aux[p_.a_stop] != 0) stop_sign_ = p_.aux[p_.a_stop] > 0 ? 1 : -1;
@@ -562,13 +590,14 @@ private:
 
   /// @returns false when the run ends here (the stop condition).
   bool handle(std::size_t i) {
-    const std::size_t nct = p_.eq.contacts.size(), nf = p_.eq.friction.size();
+    const std::size_t nct = p_.eq.contacts.size(), nf = p_.eq.friction.size(), nl = p_.limits.size();
     p_.eval_aux(t_, y_.data());
     if (p_.o.record) record();
-    if (i == nct + nf) {
+    if (i == nct + nf + nl) {
       run_.stopped = true;
       return false;
     }
+    if (i >= nct + nf) slips(i - nct - nf);
     if (i < nct) {
       if (p_.cmode[i] == ContactMode::Open) {
         // every open contact touching and approaching now strikes together

@@ -89,6 +89,13 @@ const std::vector<Row> kTable = {
   {"cord_pull", "P", "momentum", "e: {cord_pull: [block, A], P: F0}", true, ""},
   {"constraint", "between", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]]}", true, ""},
   {"constraint", "at", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]]}", true, ""},
+  // static friction: the block on its rail, pushed, drives the wheel on its hub (F = m a/2 = F0/3, N = m g)
+  {"constraint", "mu_s", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_s: mu, normal: rail}\n"
+                                   "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}}\n  w: {gravity: g}\n  p: {force: block, F: [F0, 0]}\n  hub: {pin: [C, wheel]}", true, ""},
+  {"constraint", "normal", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_s: mu/10, normal: rail}\n"
+                                     "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}}\n  w: {gravity: g}\n  p: {force: block, F: [F0, 0]}\n  hub: {pin: [C, wheel]}", false, "'e' slips at state '1'"},
+  {"constraint", "mu_s", "impact", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_s: mu, normal: rail}\n"
+                                   "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}}", false, "where kinergy does not check static friction"},
   {"track", "line", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}}", true, ""},
   {"track", "circle", "energy", "e: {track: block, circle: {centre: [0, 0], radius: R}}", false, "off the circle"},
   {"track", "offset", "energy", "e: {track: block, line: {through: [0, -r/5], along: [1, 0]}, offset: r/5}", true, ""},

@@ -87,6 +87,12 @@ struct Reaction {
   std::size_t constraint = 0;
   ex e = 0;
   bool stick = false;
+  /// A relation held by static friction (rolling without slipping, `mu_s` on a constraint
+  /// effect): its force may be at most μ_s |N|, N the normal force of the track effect named
+  /// `normal`. μ_s = 0: no limit stated.
+  ex mu_s = 0;
+  std::string normal;
+  SourcePos limit_pos;  ///< where `mu_s` is written
   /// The names of its unknowns over a duration: Rx, Ry (pin), N (track), J (relation); a
   /// contact has none (it acts in impacts only).
   std::vector<std::string> parts() const;

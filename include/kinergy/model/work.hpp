@@ -25,6 +25,8 @@ struct Condition {
   /// What e ≥ 0 says, stated with a closed form where it cannot be checked (it holds a parameter
   /// without a value): "the sliding under 'table' keeps its sense at state '2'".
   std::string assumed;
+  /// A value `what` shows in place of "{v}" (the ratio a friction needs), where it has one.
+  ex shown = 0;
 };
 
 /// The work of one non-conservative effect between two states, in state symbols.

@@ -71,4 +71,34 @@ std::vector<ex> kinetics_unknowns(const model::Model& m, const model::Analysis& 
 /// @throws SceneError (an undeclared support, reactions that Newton's law does not determine).
 KineticsBalance kinetics(const model::Model& m, const model::Analysis& a, const Knowledge& k);
 
+/// Forces of supports at a general instant of a motion, in closed form (functions of t, q, q̇ and
+/// the parameters): Lagrange's equations and Newton–Euler for each of `bodies`, the effects `on`
+/// acting and the constraints `held` holding (by index), solved for q̈, the reactions on those
+/// bodies and the multipliers; each of `wanted` (generic symbols of Model::instant_reactions) is
+/// returned. `what` names the motion in messages. @throws SceneError where Newton's law leaves a
+/// force open, or a support the scene does not declare acts on one of the bodies.
+std::vector<ex> support_forces(const model::Model& m, const std::vector<bool>& on, const std::vector<bool>& held, const std::vector<int>& bodies,
+                               const std::vector<ex>& wanted, const std::string& what, const SourcePos& pos);
+/// The bodies whose Newton–Euler equations give a static-friction relation's F and N: its parties'
+/// and its normal track's.
+std::vector<int> friction_bodies(const model::Model& m, const model::Reaction& r);
+
+/// Static friction of the relations that state it (|F| ≤ μ_s |N|: a rolling contact, `mu_s` on a
+/// constraint effect), judged where each acts: at the state of a kinetics analysis (the F and N
+/// it solves for), at both ends of an analysis over an interval (F and N in closed form from
+/// Newton–Euler over its motion: support_forces). Each is μ_s |N| − |F| ≥ 0, showing the ratio
+/// |F|/|N| it needs. `along`: the analyses over an interval where that ratio changes with the
+/// motion, so that its states alone do not settle it (the simulation checks it along the way).
+/// @throws SceneError in an impact (not checked there), or where Newton's law leaves F or N open.
+struct FrictionLimit {
+  std::string effect, normal, mu;  ///< the relation, its track, μ_s as written (and its value)
+  int state = -1;
+  Condition holds;  ///< μ_s |N| − |F| ≥ 0 at the state, `shown`: |F|/|N|
+};
+struct FrictionLimits {
+  std::vector<FrictionLimit> at_states;  ///< one per relation and state, in order
+  std::vector<int> along;
+};
+FrictionLimits static_friction_limits(const model::Model& m);
+
 }  // namespace kinergy::principles

@@ -37,6 +37,13 @@ private:
   SourcePos pos_;
 };
 
+/// A rolling contact that slips in the run: holding it takes more friction than its μ_s allows
+/// (`mu_s` on a constraint effect). The simulator does not switch it to sliding.
+class SlipError : public SimulationError {
+public:
+  using SimulationError::SimulationError;
+};
+
 struct Options {
   Method method = Method::Dopri5;
   double tol = 1e-10;        ///< absolute and relative tolerance of the adaptive methods
