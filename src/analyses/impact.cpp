@@ -45,7 +45,7 @@ void section(emit::Sections& w, int k, const model::Analysis& a, const principle
     }
   }
   for (auto& e : m.effects)
-    if (const model::Blow* g = e.blow()) {
+    if (const model::Blow* g = e.blow(); g && e.strikes_in(m, a)) {
       if (any) intro.push_back(W("; "));
       any = true;
       intro.push_back(W("the given impulse " + e.name + " at " + g->at.text + ", "));
@@ -123,7 +123,8 @@ public:
       if (!cs->is_list()) throw SceneError(cs->pos, "'contacts' must be a list", "write 'contacts: [hit1, hit2]'");
       for (auto& it : cs->items) names.push_back(&it);
     }
-    // a given impulse switched off (or not yet on) at this impact does not strike in it
+    // a given impulse switched off (or not yet on) at this impact does not strike in it (read
+    // before the later analyses: which one a blow strikes in is settled once all are read)
     bool blows = std::any_of(m.effects.begin(), m.effects.end(),
                              [&](const model::Effect& e) { return e.blow() != nullptr && e.activity(a) != model::Effect::Activity::None; });
     model::Struck st;

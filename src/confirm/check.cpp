@@ -142,7 +142,7 @@ std::vector<Leg> legs(const Solution& s) {
     leg.to = a.to;
     leg.start = state_values(m, k, a.from);
     leg.expect = state_values(m, k, a.to);
-    leg.stop.impulses = a.instant();
+    leg.stop.impulses = a.takes_blows();  // a blow at its first state, as its principle counts it
     // a state given by a parameter without a value (the variable of an extreme, the speed whose
     // least value is asked) is no one motion
     for (int st : {a.from, a.to})
@@ -278,7 +278,9 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
   // only the effects that act over this analysis
   Options own = o;
   own.effects_on.clear();
-  for (auto& e : m.effects) own.effects_on.push_back(e.activity(m.analyses[leg.analysis]) != model::Effect::Activity::None);
+  // (a blow only where it strikes: at the first state of the analysis that takes it)
+  for (auto& e : m.effects)
+    own.effects_on.push_back(e.blow() ? e.strikes_in(m, m.analyses[leg.analysis]) : e.activity(m.analyses[leg.analysis]) != model::Effect::Activity::None);
   // the motion's own size, so that the absolute tolerance is relative to it (never larger than
   // tol): the smallest of the coordinates' changes and rates that are not zero (a time scale of
   // 1 s), so that each keeps its relative accuracy — a rate of 6e-5 among positions of 1 — but not
@@ -394,7 +396,7 @@ draw::Motion motion_of(const Run& r, const std::string& title) {
 
 bool impulses_at(const model::Model& m, int start) {
   bool at = m.analyses.empty();
-  for (auto& a : m.analyses) at = at || (a.instant() && a.from == start);
+  for (auto& a : m.analyses) at = at || (a.takes_blows() && a.from == start);
   return at;
 }
 
@@ -497,7 +499,9 @@ Run run_following(const model::Model& m, const exmap& solved, const exmap& param
   for (bool first = true;; first = false) {
     Options own = o;
     own.effects_on.clear();
-    for (auto& e : m.effects) own.effects_on.push_back(acts_after(e, cur));
+    // (a blow at the state where it strikes, or at the start of a scene without analyses)
+    for (auto& e : m.effects)
+      own.effects_on.push_back(acts_after(e, cur) && (!e.blow() || m.analyses.empty() || e.strike_state(m) == cur));
     // the next state where an effect is switched
     int next = -1;
     const model::Effect* by = nullptr;

@@ -48,6 +48,18 @@ ex Effect::power(const Model& m) const {
   return P;
 }
 
+std::optional<int> Effect::strike_state(const Model& m) const {
+  if (!blow()) return std::nullopt;
+  std::optional<int> first;
+  for (auto& a : m.analyses)
+    if (a.takes_blows() && activity(a) != Activity::None && (!first || a.from < *first)) first = a.from;
+  return first;
+}
+
+bool Effect::strikes_in(const Model& m, const Analysis& a) const {
+  return blow() && a.takes_blows() && activity(a) != Activity::None && strike_state(m) == a.from;
+}
+
 std::vector<int> Effect::bodies_acted(const Model& m) const {
   std::vector<int> out;
   auto add_body = [&](int b) {
@@ -78,8 +90,8 @@ principles::Work Effect::work_across(const Model& m, const Analysis& a, const pr
 std::pair<ex, ex> Effect::impulse(const Model& m, int self, int ai) const {
   if (auto r = reaction(m)) return principles::reaction_impulse(m, *this, *r, self, ai);
   if (const Blow* j = blow()) {
-    // (switched off, or not yet on, over the analysis: it does not strike there)
-    if (activity(m.analyses[static_cast<std::size_t>(ai)]) == Activity::None) return {0, 0};
+    // (switched off, or not yet on, over the analysis, or struck before it: it does not strike there)
+    if (!strikes_in(m, m.analyses[static_cast<std::size_t>(ai)])) return {0, 0};
     return {j->Jx, j->Jy};
   }
   return principles::load_impulse(m, *this, ai);
@@ -96,7 +108,7 @@ ex Effect::impulse_size(const Model& m, int ai, const ex& x, const ex& y) const 
 std::pair<ex, ex> Effect::impact_impulse_on(const Model& m, int body, int ai) const {
   const Analysis& a = m.analyses[static_cast<std::size_t>(ai)];
   if (const Blow* j = blow()) {
-    if (j->at.body != body || activity(a) == Activity::None) return {0, 0};
+    if (j->at.body != body || !strikes_in(m, a)) return {0, 0};
     return {j->Jx, j->Jy};
   }
   auto r = reaction(m);

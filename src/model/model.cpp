@@ -284,6 +284,7 @@ int Model::body_index(const std::string& n) const {
 }
 
 bool Analysis::instant() const { return type && type->instant(); }
+bool Analysis::takes_blows() const { return type && type->impulsive() && !type->at_state(); }
 
 Model::Contact Model::contact(int i) const {
   const Effect& e = effects[static_cast<std::size_t>(i)];

@@ -223,7 +223,7 @@ Work load_work(const Model& m, const Effect& e, int s1, int s2, const Knowledge&
 void effect_pushes(const Model& m, const Effect& e, const Analysis& a, const Knowledge& k, std::vector<Push>& out) {
   load_pushes(m, e, a, k, out);
   if (auto r = e.reaction(m)) reaction_pushes(m, e, *r, a, out);
-  if (const model::Blow* j = e.blow(); j && j->at.body >= 0 && in_set(a.bodies, j->at.body)) {
+  if (const model::Blow* j = e.blow(); j && j->at.body >= 0 && in_set(a.bodies, j->at.body) && e.strikes_in(m, a)) {
     Push p;  // the impulse itself (no time integral)
     p.Rx = j->Jx;
     p.Ry = j->Jy;

@@ -649,7 +649,7 @@ static void impact_momentum(const Model& m, const Analysis& a, ImpactBalance& ou
     }
     for (auto& e : m.effects) {
       const model::Blow* g = e.blow();
-      if (!g || e.activity(a) == Effect::Activity::None) continue;  // switched off: it does not strike
+      if (!g || !e.strikes_in(m, a)) continue;  // switched off, or struck before: it does not strike here
       auto [dx, dy] = m.position_derivative(g->at, q);
       rhs += before(dot(g->Jx, g->Jy, dx, dy));
     }
@@ -684,7 +684,7 @@ static void impact_diagrams(const Model& m, const Analysis& a, ImpactBalance& ou
   }
   for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
     const Effect& e = m.effects[ei];
-    if (const model::Blow* g = e.blow(); g && g->at.body >= 0 && e.activity(a) != Effect::Activity::None) {
+    if (const model::Blow* g = e.blow(); g && g->at.body >= 0 && e.strikes_in(m, a)) {
       Push push;
       push.unknown = true;
       push.body = g->at.body;

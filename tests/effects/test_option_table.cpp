@@ -85,6 +85,7 @@ const std::vector<Row> kTable = {
   {"contact", "tangential", "impact", "e: {contact: [W, block], normal: [1, 0], e: 0.5, tangential: stick}", true, "residuals"},
   {"contact", "e", "energy", "e: {contact: [W, block], normal: [1, 0], e: 0.5}", true, ""},
   {"impulse", "J", "impact", "e: {impulse: block, J: [-J0, 0]}", true, ""},
+  {"impulse", "J", "momentum", "e: {impulse: block, J: [J0, 0]}", true, ""},
   {"cord_pull", "P", "energy", "e: {cord_pull: [block, A], P: F0}", true, ""},
   {"cord_pull", "P", "momentum", "e: {cord_pull: [block, A], P: F0}", true, ""},
   {"constraint", "between", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]]}", true, ""},

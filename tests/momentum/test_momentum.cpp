@@ -21,6 +21,7 @@
 
 #include "../support/helpers.hpp"
 #include "kinergy/common/error.hpp"
+#include "kinergy/confirm/confirm.hpp"
 #include "kinergy/problem.hpp"
 
 namespace fs = std::filesystem;
@@ -1255,4 +1256,50 @@ TEST_CASE("kinergy verify derivations/momentum/*.yaml exits 0", "[momentum][cli]
   INFO("stderr: " << r.err);
   CHECK(r.status == 0);
   CHECK(r.err.empty());
+}
+
+TEST_CASE("a blow strikes once: in a momentum analysis from the instant before it, or in the impact before one", "[momentum][blow]") {
+  // a 2 kg block at rest on a floor with kinetic friction mu = 0.2, struck with J0 = 6 N*s, slides
+  // for t2 = 0.5 s: v = J0/m - mu g t2 = 3 - 0.981 = 2.019 m/s (by hand)
+  const std::string base = R"(title: A block struck on a rough floor, then sliding
+parameters:
+  m: 2 kg
+  g: 9.81 m/s^2
+  mu: 0.2
+  J0: 6 N*s
+  t2: 0.5 s
+coordinates:
+  x: m
+bodies:
+  block: {mass: m, inertia: particle, position: [x, 0]}
+effects:
+  hit: {impulse: block, J: [J0, 0]}
+  rub: {friction: block, mu: mu, normal: m*g, direction: positive}
+states:
+  1: {t: 0, x: 0, x_dot: 0}
+  2: {t: t2}
+analyses:
+  - momentum: {from: 1, to: 2, along: x}
+find:
+  v2: {value: x_dot@2, unit: m/s}
+)";
+  const double v = 6.0 / 2 - 0.2 * 9.81 * 0.5;
+  // one momentum analysis: the blow at its first state, and the confirming simulation strikes it there too
+  auto s = kt::solve_text(base);
+  CHECK(kt::result_si(s, "v2") == Approx(v).epsilon(1e-13));
+  kinergy::confirm(s);
+  REQUIRE(s.confirmed.size() == 1);
+  CHECK(s.confirmed[0].by == kinergy::Confirmed::By::Simulation);
+  // an impact, then a momentum analysis: the blow strikes in the impact only (it was counted in
+  // both, 5.019 m/s, which the simulation refused)
+  std::string chain = kt::edit(base, "  2: {t: t2}\n", "  2: {}\n  3: {t: t2}\n");
+  chain = kt::edit(chain, "direction: positive}", "direction: positive, on: 2}");
+  chain = kt::edit(chain, "  - momentum: {from: 1, to: 2, along: x}\n", "  - impact: {from: 1, to: 2}\n  - momentum: {from: 2, to: 3, along: x}\n");
+  chain = kt::edit(chain, "  v2: {value: x_dot@2, unit: m/s}\n", "  v2: {value: x_dot@2, unit: m/s}\n  v3: {value: x_dot@3, unit: m/s}\n  J: {value: \"impulse_x(hit, 2, 3)\", unit: N*s}\n");
+  auto c = kt::solve_text(chain);
+  CHECK(kt::result_si(c, "v2") == Approx(3.0).epsilon(1e-13));
+  CHECK(kt::result_si(c, "v3") == Approx(v).epsilon(1e-13));
+  CHECK(kt::result_si(c, "J") == 0);  // it does not strike again at state 2
+  kinergy::confirm(c);
+  for (auto& k : c.confirmed) CHECK(k.by == kinergy::Confirmed::By::Simulation);
 }

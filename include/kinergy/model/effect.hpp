@@ -227,6 +227,12 @@ public:
   ex power(const Model& m) const;
   /// The bodies it acts on (a fixed party is not a body; gravity: every body).
   std::vector<int> bodies_acted(const Model& m) const;
+  /// A given impulse strikes once: at the first state of the earliest analysis (by that state)
+  /// that takes blows (Analysis::takes_blows: an impact, a momentum analysis over a duration) and
+  /// over which it acts. That state, or none (not a blow; no such analysis).
+  std::optional<int> strike_state(const Model& m) const;
+  /// Does it strike in analysis a (a blow, at a's first state)?
+  bool strikes_in(const Model& m, const Analysis& a) const;
   /// Impulse (x, y) over analysis `ai` (`impulse_x`, `impulse_y`); `self` is this effect's index.
   /// @throws InputError when it has none there.
   std::pair<ex, ex> impulse(const Model& m, int self, int ai) const;

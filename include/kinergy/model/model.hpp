@@ -111,6 +111,9 @@ struct Analysis {
   std::variant<std::monostate, Along, About, Struck> options;
   /// An impact: no time passes, positions do not change (its kind says so: type->instant()).
   bool instant() const;
+  /// Does it take the scene's given impulses (blows) at its first state: an impact, and a
+  /// momentum analysis over a duration (principles::effect_pushes)? Energy and kinetics do not.
+  bool takes_blows() const;
   /// The direction of a momentum analysis along one only (nullptr: along x and y).
   const Along* along() const { return std::get_if<Along>(&options); }
   /// The moment point of an angular momentum analysis (nullptr for another kind).
