@@ -568,7 +568,10 @@ private:
       a.type->check(m, a, given, sol_.branch, env);
     }
     // static friction is a verdict on the solution chosen, not a choice between roots
-    for (const principles::FrictionLimit& l : sol_.friction_limits) hold(l.holds, sol_.branch);
+    for (const principles::FrictionLimit& l : sol_.friction_limits) {
+      if (l.pushes) hold(*l.pushes, sol_.branch);
+      hold(l.holds, sol_.branch);
+    }
     valid_where();
   }
 
@@ -654,7 +657,10 @@ private:
   /// stated with the closed forms (Solution::valid_where).
   void valid_where() {
     std::vector<principles::Condition> all;
-    for (const principles::FrictionLimit& l : sol_.friction_limits) all.push_back(l.holds);
+    for (const principles::FrictionLimit& l : sol_.friction_limits) {
+      if (l.pushes) all.push_back(*l.pushes);
+      all.push_back(l.holds);
+    }
     for (auto& bal : sol_.balances)
       for (const principles::Condition& c : bal->conditions()) all.push_back(c);
     for (const principles::Condition& c : all) {
@@ -683,8 +689,13 @@ private:
     std::string what = c.what;
     what.replace(what.find("{}"), 2, numerics::format(-*v, 6));
     if (auto at = what.find("{v}"); at != std::string::npos) {
-      auto shown = numerics::evaluate(c.shown.subs(given).subs(b.sol), env, 30);
-      what.replace(at, 3, shown ? numerics::format(*shown, 6) : std::string("?"));
+      std::optional<GiNaC::numeric> shown;
+      try {
+        shown = numerics::evaluate(c.shown.subs(given).subs(b.sol), env, 30);
+      } catch (const std::exception&) {
+        // (a ratio whose denominator vanishes: a friction force with no normal force)
+      }
+      what.replace(at, 3, shown ? numerics::format(*shown, 6) : std::string("infinite (no normal force)"));
     }
     throw SceneError(c.pos, what, c.fix);
   }

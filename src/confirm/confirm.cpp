@@ -80,6 +80,7 @@ KineticsCheck check_kinetics(const Solution& s, int ai) {
   const std::size_t n = m.coords.size();
   simulate::Options o;
   o.native = false;  // the tape: no compiler run for a check
+  o.rolling_limits = false;  // the accelerations at the state (its static friction is checked on the solution)
   simulate::Simulator sim(m, parameter_values(s), o);
   std::vector<double> y(sim.size(), 0.0), dy(sim.size(), 0.0);
   const model::State& S = m.states[static_cast<std::size_t>(a.from)];

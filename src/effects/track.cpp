@@ -25,6 +25,7 @@ public:
   ex tx = 0, ty = 0;  ///< the line's direction (unit)
   ex R = 0;           ///< the circle's radius
   ex offset = 0;      ///< the point's distance from the surface (on the normal's side; circle: outward)
+  int side = 0;       ///< the sign of the offset: the side of the surface the round body is on (0: a guide)
   std::string shape;  ///< "the line through [..] along [..]", "the circle of centre [..] and radius R"
   SourcePos arg_pos;  ///< where its point is named
 
@@ -32,7 +33,9 @@ public:
   // N n̂ on the point: the coordinates keep it on the track
   std::optional<model::Reaction> reaction(const Model& m) const override {
     auto [nx, ny] = normal(m);
-    return model::Reaction::track(p, nx, ny);
+    model::Reaction r = model::Reaction::track(p, nx, ny);
+    r.side = side;
+    return r;
   }
 
   /// The unit normal n̂ at the point (generic): the line's normal k × t̂, or the circle's radius.
@@ -163,6 +166,8 @@ std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
   if (auto* o = ed.options.get("offset")) {
     e->offset = r.quantity(r.text_of(*o, "offset", "r"), false, L, "offset", "an offset is a length (the radius of the round body)");
     e->shape += " at distance " + o->scalar;
+    // a round body on the offset's side: the surface can only push it that way
+    if (auto v = numerics::evaluate(e->offset, r.model().numeric_environment(), 30); v && !v->is_zero()) e->side = v->is_positive() ? 1 : -1;
     if (e->circle) {
       auto rv = r.value_of(e->R + e->offset, o->pos, "the radius of the circle the point keeps to");
       if (rv && !rv->is_positive())

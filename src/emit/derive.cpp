@@ -673,7 +673,12 @@ private:
         if (l.effect != first.effect) continue;
         if (std::any_of(s_.valid_where.begin(), s_.valid_where.end(), [&](const principles::Condition& w) { return w.assumed == l.holds.assumed; }))
           continue;  // stated with the closed form instead
-        auto v = numerics::evaluate(l.holds.shown.subs(m_.given_values()).subs(s_.branch.sol), m_.numeric_environment(), 30);
+        std::optional<GiNaC::numeric> v;
+        try {
+          v = numerics::evaluate(l.holds.shown.subs(m_.given_values()).subs(s_.branch.sol), m_.numeric_environment(), 30);
+        } catch (const std::exception&) {
+          // (no normal force and no friction needed: 0/0, nothing to show)
+        }
         if (v) at += std::string(at.empty() ? "" : ", ") + numerics::format(*v, o_.digits) + " at state " + m_.states[static_cast<std::size_t>(l.state)].name;
       }
       if (at.empty()) continue;

@@ -1,5 +1,6 @@
 #include "kinergy/emit/emit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -69,6 +70,12 @@ std::string text(const Solution& s, const Options& o) {
     os << "Valid only where (these hold parameters without values, so they are not checked here):\n";
     for (auto& c : s.valid_where) os << "  " << plain(c.e) << " >= 0   (" << c.assumed << ")\n";
   }
+  // a rolling contact's static friction between states, where it changes with the motion, is
+  // checked only by the simulation that confirms the analysis
+  for (int ai : s.friction_along)
+    if (std::none_of(s.confirmed.begin(), s.confirmed.end(), [&](const Confirmed& c) { return c.analysis == ai && c.by == Confirmed::By::Simulation; }))
+      os << "Not checked: the static friction of the rolling between the states of the " << analysis_name(s, ai)
+         << " analysis, where it changes with the motion (the simulation that checks it was not run: --no-confirm)\n";
   if (!s.confirmed.empty()) {
     os << "Confirmed a second way:\n";
     for (auto& c : s.confirmed) os << "  " << analysis_name(s, c.analysis) << ": " << confirmed_text(c) << "\n";

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "kinergy/common/error.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/principles/momentum.hpp"
@@ -10,6 +12,15 @@ using model::Model;
 
 EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& k) {
   m.constraints_over(a);  // none switched inside the analysis (the coordinates differ on either side)
+  // a blow strikes at the first state of the impact or momentum analysis that takes it, the rates
+  // there being those before it: work and energy from that state (or across it) would leave it out
+  for (auto& e : m.effects)
+    if (auto s = e.strike_state(m); s && *s >= std::min(a.from, a.to) && *s < std::max(a.from, a.to))
+      throw SceneError(a.pos, "the energy analysis from state '" + m.states[a.from].name + "' to '" + m.states[a.to].name + "' " +
+                                  (*s == a.from ? "starts at" : "passes") + " state '" + m.states[*s].name + "', where the given impulse '" + e.name +
+                                  "' strikes (its rates there are those before the blow), and work and energy do not take a blow",
+                       "take the energy from a state after the blow: add an impact analysis from '" + m.states[*s].name +
+                           "' to a new state (its rates just after), and start the energy analysis there");
   EnergyBalance b;
   const bool whole = a.bodies.size() == m.bodies.size();
   // a body set (isolated): its own kinetic energy; each effect acting only on it counts whole,

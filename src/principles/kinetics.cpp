@@ -406,6 +406,14 @@ std::vector<int> friction_bodies(const Model& m, const Reaction& r) {
 }
 
 namespace {
+/// "disk and plank", for messages.
+std::string body_names(const Model& m, const std::vector<int>& bodies) {
+  std::string out;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    out += (i ? (i + 1 == bodies.size() ? " and " : ", ") : "") + m.bodies[static_cast<std::size_t>(bodies[i])].name;
+  return out;
+}
+
 /// Does e hold a parameter without a value?
 bool mu_unvalued(const Model& m, const ex& e) {
   for (auto& p : m.params)
@@ -426,18 +434,31 @@ FrictionLimits static_friction_limits(const Model& m) {
     std::string mu = model::text(r->mu_s);
     if (!is_a<numeric>(r->mu_s))
       if (auto v = numerics::evaluate(r->mu_s, m.numeric_environment(), 30); v && !mu_unvalued(m, r->mu_s)) mu += " = " + numerics::format(*v, 6);
+    // the track's normal force as the surface presses the body: σ N for a round body on one side
+    // of it (a floor, a dome, a bowl: σ the side, it cannot pull), |N| for a guide that holds both ways
+    const int side = track.reaction(m)->side;
     auto limit = [&](const ex& Fs, const ex& Ns, int S) {
       const std::string st = m.states[static_cast<std::size_t>(S)].name;
-      Condition c{r->mu_s * abs(Ns) - abs(Fs),
-                  "'" + e.name + "' slips at state '" + st + "': holding it takes a friction force of {v} times the normal force of '" + r->normal +
+      const ex pressed = side ? side * Ns : abs(Ns);
+      // |F| ≤ μ_s σN
+      Condition c{r->mu_s * pressed - abs(Fs),
+                  "'" + e.name + "' slips at state '" + st + "': holding it takes |F|/|N| = {v} of the normal force of '" + r->normal +
                       "', more than mu_s = " + mu + " allows (short by {} N)",
                   "give a larger mu_s, or let it slide: kinetic friction (a friction effect) in place of the constraint; the least mu_s is "
                   "abs(F(" + e.name + ")@" + st + "/N(" + r->normal + ")@" + st + "), which a result can ask for",
                   r->limit_pos, "'" + e.name + "' holds without slipping at state '" + st + "', |F| <= mu_s |N(" + r->normal + ")| with mu_s = " + mu};
-      c.shown = abs(Fs) / abs(Ns);
+      c.shown = abs(Fs) / pressed;
+      // σN ≥ 0: the surface pushes (it cannot pull a body resting on it)
+      std::optional<Condition> pushes;
+      if (side)
+        pushes = Condition{side * Ns,
+                           "at state '" + st + "' the surface of '" + r->normal + "' would have to pull on the rolling body ({} N): it leaves the "
+                               "surface there, and the rolling '" + e.name + "' takes for granted does not hold",
+                           "check the loads at state '" + st + "' (a pull that lifts the body), or take the states while it still presses",
+                           r->limit_pos, "the surface of '" + r->normal + "' presses on the rolling body at state '" + st + "'"};
       // one per state (a kinetics analysis and an energy analysis ending there say the same)
       if (std::none_of(out.at_states.begin(), out.at_states.end(), [&](const FrictionLimit& x) { return x.effect == e.name && x.state == S; }))
-        out.at_states.push_back({e.name, r->normal, mu, S, c});
+        out.at_states.push_back({e.name, r->normal, mu, S, c, pushes});
     };
     for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
       const model::Analysis& a = m.analyses[ai];
@@ -468,7 +489,8 @@ FrictionLimits static_friction_limits(const Model& m) {
       } catch (const SceneError& err) {
         throw SceneError(r->limit_pos, "constraint '" + e.name + "' states mu_s, which is checked against the forces Newton's second law gives during " +
                                            what + ", but: " + err.problem(),
-                         err.fix());
+                         "declare every support of " + body_names(m, friction_bodies(m, *r)) +
+                             " (a pin, a track, a constraint effect): the check writes Newton's second law for each; or leave 'mu_s' out");
       }
       limit(m.bind(FN[0], a.from), m.bind(FN[1], a.from), a.from);
       if (at_state) continue;

@@ -91,10 +91,18 @@ struct Simulator::Impl {
   struct Limit {
     std::string effect, normal;
     double mu = 0;
-    ex F, N;  ///< in closed form (t, q, q̇), from Newton–Euler for every body
+    int side = 0;  ///< the track's side (model::Reaction::side): N as the surface presses is side·N, |N| for a guide
+    ex F, N;  ///< in closed form (t, q, q̇), from Newton–Euler for the rolling body
     SourcePos pos;
   };
   std::vector<Limit> limits;
+  /// Rolling contact k's margin μ_s σN − |F| and its F, σN from the auxiliary kernel's last values.
+  double limit_margin(std::size_t k, double* F = nullptr, double* N = nullptr) const {
+    const double f = std::fabs(aux[a_lim + 2 * k]), n = aux[a_lim + 2 * k + 1], pressed = limits[k].side ? limits[k].side * n : std::fabs(n);
+    if (F) *F = f;
+    if (N) *N = pressed;
+    return limits[k].mu * pressed - f;
+  }
   std::size_t a_lim = 0;  ///< F, N of each limit in the auxiliary kernel
   // --- workspace ---
   Mat M, B;
@@ -266,6 +274,7 @@ struct Simulator::Impl {
   // The relations held by static friction (a rolling contact with mu_s) among the effects that
   // act: F and N at a general instant, from Newton–Euler for every body (principles::support_forces).
   void static_friction() {
+    if (!o.rolling_limits) return;
     std::vector<bool> on, held;
     for (std::size_t i = 0; i < m.effects.size(); ++i) on.push_back(o.effects_on.empty() || o.effects_on[i]);
     for (std::size_t k = 0; k < m.constraints.size(); ++k) {
@@ -282,6 +291,7 @@ struct Simulator::Impl {
       l.effect = e.name;
       l.normal = r->normal;
       l.pos = r->limit_pos;
+      l.side = m.effects[static_cast<std::size_t>(m.effect_index(r->normal))].reaction(m)->side;
       const ex mu = value_of(r->mu_s, values, "mu_s of '" + e.name + "'").evalf();
       l.mu = is_a<numeric>(mu) ? ex_to<numeric>(mu).to_double() : 0;
       try {
@@ -293,7 +303,9 @@ struct Simulator::Impl {
       } catch (const SceneError& err) {
         throw SimulationError("'" + e.name + "' states mu_s, which the simulation checks against the forces Newton's second law gives, but: " +
                                   err.problem(),
-                              err.fix(), r->limit_pos);
+                              "declare every support of the rolling body and its parties (a pin, a track): the check writes Newton's second law "
+                              "for each; or leave 'mu_s' out",
+                              r->limit_pos);
       }
       limits.push_back(l);
     }

@@ -441,15 +441,21 @@ private:
     if (p_.limits.empty()) return;
     p_.eval_aux(t_, y_.data());
     for (std::size_t k = 0; k < p_.limits.size(); ++k) {
-      const double F = std::fabs(p_.aux[p_.a_lim + 2 * k]), N = std::fabs(p_.aux[p_.a_lim + 2 * k + 1]);
-      if (F > p_.limits[k].mu * N * (1 + 1e-9)) slips(k);
+      double F = 0, N = 0;
+      const double margin = p_.limit_margin(k, &F, &N);
+      if (margin < -1e-9 * p_.limits[k].mu * std::fabs(N)) slips(k);
     }
   }
 
   // rolling contact k slips now (its F and N in aux): the error, with both numbers
   [[noreturn]] void slips(std::size_t k) {
     const auto& l = p_.limits[k];
-    const double F = std::fabs(p_.aux[p_.a_lim + 2 * k]), N = std::fabs(p_.aux[p_.a_lim + 2 * k + 1]);
+    double F = 0, N = 0;
+    p_.limit_margin(k, &F, &N);
+    if (N <= 0 && l.side)
+      throw SlipError("'" + l.effect + "' loses its contact at t = " + num(t_) + " s: the surface of '" + l.normal + "' would have to pull on the body (" +
+                          num(N) + " N as it presses), and holding it rolling takes a friction force of " + num(F) + " N",
+                      "the body leaves the surface there; the simulation does not go on with it free of it", l.pos);
     throw SlipError("'" + l.effect + "' slips at t = " + num(t_) + " s: holding it takes a friction force of " + num(F) + " N, " + num(F / N) +
                         " times the normal force of '" + l.normal + "' (" + num(N) + " N), and mu_s = " + num(l.mu) +
                         " allows no more (the simulation does not go on with it sliding)",
@@ -568,8 +574,7 @@ private:
       }
     }
     // a rolling contact with μ_s: μ_s |N| − |F|, positive while it holds
-    for (std::size_t k = 0; k < p_.limits.size(); ++k)
-      ev.push_back(p_.limits[k].mu * std::fabs(p_.aux[p_.a_lim + 2 * k + 1]) - std::fabs(p_.aux[p_.a_lim + 2 * k]));
+    for (std::size_t k = 0; k < p_.limits.size(); ++k) ev.push_back(p_.limit_margin(k));
     // a stop condition that is zero at the start (a turning point sought from rest) takes the
     // sign it has as the motion begins: the run ends at its next zero
     if (p_.has_stop && stop_sign_ == 0 && t > t_ && p_.aux[p_.a_stop] != 0) stop_sign_ = p_.aux[p_.a_stop] > 0 ? 1 : -1;

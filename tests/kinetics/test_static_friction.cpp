@@ -47,7 +47,7 @@ TEST_CASE("static friction: a rolling disk with enough mu_s solves, and the deri
 TEST_CASE("static friction: too little mu_s is an error at its line, with both numbers", "[kinetics][friction]") {
   // needs tan(20 deg)/3 = 0.121323; mu_s = 0.1 leaves F - mu_s N = 1.57254 N (case 3a)
   const std::string text = kt::edit(incline(), "  mus: 0.3\n", "  mus: 0.1\n");
-  REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("'rolling' slips at state '1'") && Catch::Contains("0.121323 times the normal force of 'incline'") &&
+  REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("'rolling' slips at state '1'") && Catch::Contains("|F|/|N| = 0.121323 of the normal force of 'incline'") &&
                                             Catch::Contains("mu_s = mus = 0.1") && Catch::Contains("short by 1.57254 N") &&
                                             Catch::Contains("abs(F(rolling)@1/N(incline)@1)"));
   // over an energy analysis too (the disk rolls 3 m): F and N from Newton-Euler over its motion
@@ -169,4 +169,84 @@ TEST_CASE("static friction: what is refused, naming what would be needed", "[kin
     REQUIRE_THROWS_WITH(solve_text(hit), Catch::Contains("acts in the impact from state '1' to '2', where kinergy does not check static friction") &&
                                              Catch::Contains("'off:'"));
   }
+}
+
+namespace {
+
+// a sphere (m = 2 kg, r = 0.1 m) rolling on a dome of radius R = 1 m; theta from the top
+std::string dome(const std::string& state1, const std::string& analyses_and_find) {
+  return R"(title: Ball rolling on a dome
+parameters:
+  m: 2 kg
+  r: 0.1 m
+  R: 1 m
+  g: 9.81 m/s^2
+  mus: 2
+  w0: 5 rad/s
+points:
+  O: [0, 0]
+coordinates:
+  theta: rad
+  phi: rad
+bodies:
+  ball:
+    mass: m
+    inertia: {sphere: r}
+    position: [(R + r)*sin(theta), (R + r)*cos(theta)]
+    angle: phi
+effects:
+  gravity: {g: g}
+  dome: {track: ball, circle: {centre: [0, 0], radius: R}, offset: r}
+  rolling: {constraint: "(R + r)*theta + r*phi = 0", between: [ball, O], at: [R*sin(theta), R*cos(theta)], mu_s: mus, normal: dome}
+states:
+  1: )" + state1 + "\n" + analyses_and_find;
+}
+
+const char* kKinetics = "analyses:\n  - kinetics: {at: 1}\nfind:\n  F1: {value: F(rolling)@1, unit: N}\n  N1: {value: N(dome)@1, unit: N}\n";
+
+}  // namespace
+
+TEST_CASE("static friction: a surface that would have to pull, and a friction force with no normal force", "[kinetics][friction][errors]") {
+  // by hand: m (R + r) theta_dot^2 = m g cos(theta) - N and F = (2/7) m g sin(theta) (tangential
+  // Newton with (7/5) m (R + r) theta_ddot = m g sin(theta)). At theta = 1, theta_dot = 2.4623727572:
+  // N = 2 (9.81 cos 1 - 1.1 * 2.4623727572^2) = -2.73848 N
+  REQUIRE_THROWS_WITH(solve_text(dome("{theta: 1 rad, theta_dot: 2.4623727572 rad/s}", kKinetics)),
+                      Catch::Contains("at state '1' the surface of 'dome' would have to pull on the rolling body (2.73848 N)") &&
+                          Catch::Contains("it leaves the surface there"));
+  // theta_dot^2 = g cos(1)/(R + r): N = 0, F = (2/7)(2)(9.81) sin 1 = 4.71705 N
+  const std::string at_zero = dome("{theta: 1 rad, theta_dot: sqrt(g*cos(1)/(R + r))}", kKinetics);
+  std::string err;
+  try {
+    solve_text(at_zero);
+  } catch (const kinergy::SceneError& e) {
+    err = e.what();
+  }
+  CHECK_THAT(err, Catch::Contains("'rolling' slips at state '1': holding it takes |F|/|N| = infinite (no normal force)") &&
+                      Catch::Contains("short by 4.71705 N"));
+  CHECK(err.find("internal error") == std::string::npos);
+}
+
+TEST_CASE("static friction: the simulator stops where the body would leave the surface", "[kinetics][friction][simulate]") {
+  // at the top with theta_dot = 5 rad/s: N = m g - m (R + r) theta_dot^2 = 19.62 - 55 < 0, F = 0
+  int st = 0;
+  const std::string path = written("dome_top", dome("{theta: 0, theta_dot: w0, phi: 0, phi_dot: -(R + r)*w0/r}", ""));
+  const std::string out = kt::run_cli("simulate " + path + " --until 1", st);
+  INFO(out);
+  CHECK(st != 0);
+  CHECK_THAT(out, Catch::Contains("'rolling' loses its contact at t = 0 s") && Catch::Contains("(-35.38 N as it presses)"));
+}
+
+TEST_CASE("static friction: mu_s without a value in a kinetics analysis is confirmed by the equations of motion", "[kinetics][friction][cli]") {
+  int st = 0;
+  const std::string out = kt::run_cli("solve " + written("incline_sym", kt::edit(incline(), "  mus: 0.3\n", "  mus: number\n")), st);
+  INFO(out);
+  CHECK(st == 0);
+  CHECK_THAT(out, Catch::Contains("Valid only where") && Catch::Contains("kinetics at 1: by the equations of motion"));
+}
+
+TEST_CASE("static friction: --no-confirm says the way between the states was not checked", "[kinetics][friction][cli]") {
+  int st = 0;
+  const std::string out = kt::run_cli("solve --no-confirm derivations/energy/disk_pushed_static_friction.yaml", st);
+  CHECK(st == 0);
+  CHECK_THAT(out, Catch::Contains("Not checked: the static friction of the rolling between the states of the energy 1 -> 2 analysis"));
 }

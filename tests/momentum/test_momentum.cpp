@@ -1302,4 +1302,9 @@ find:
   CHECK(kt::result_si(c, "J") == 0);  // it does not strike again at state 2
   kinergy::confirm(c);
   for (auto& k : c.confirmed) CHECK(k.by == kinergy::Confirmed::By::Simulation);
+  // an energy analysis from the state where the blow strikes would leave it out: refused
+  std::string energy = kt::edit(base, "  2: {t: t2}\n", "  2: {t: t2}\n  3: {x: 0.5 m}\n");
+  energy = kt::edit(energy, "  - momentum: {from: 1, to: 2, along: x}\n", "  - momentum: {from: 1, to: 2, along: x}\n  - energy: {from: 1, to: 3}\n");
+  REQUIRE_THROWS_WITH(kt::solve_text(energy), Catch::Contains("the energy analysis from state '1' to '3' starts at state '1', where the given impulse 'hit' strikes") &&
+                                                  Catch::Contains("add an impact analysis from '1'"));
 }

@@ -2,6 +2,7 @@
 /// q̈ and the forces the supports exert there, from Newton–Euler for each body with the supports'
 /// reactions as unknowns, the rates at the state from the other analyses or as given.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -93,7 +94,8 @@ std::vector<int> friction_bodies(const model::Model& m, const model::Reaction& r
 struct FrictionLimit {
   std::string effect, normal, mu;  ///< the relation, its track, μ_s as written (and its value)
   int state = -1;
-  Condition holds;  ///< μ_s |N| − |F| ≥ 0 at the state, `shown`: |F|/|N|
+  Condition holds;  ///< μ_s σN − |F| ≥ 0 at the state, `shown`: |F|/(σN) (σN: as the surface presses, |N| for a guide)
+  std::optional<Condition> pushes;  ///< σN ≥ 0: a surface under a round body cannot pull it (none for a guide)
 };
 struct FrictionLimits {
   std::vector<FrictionLimit> at_states;  ///< one per relation and state, in order

@@ -54,6 +54,7 @@ struct Options {
   double step = 0;           ///< fixed step of symplectic and rk4 (0: span/10⁴)
   bool native = true;        ///< right-hand side as machine code (else the tape, same doubles)
   bool record = true;        ///< keep samples (every accepted step, or every `sample_dt`)
+  bool rolling_limits = true;  ///< stop where a rolling contact's mu_s no longer holds it (off: its accelerations at one state only)
   /// > 0: samples at the regular times t₀ + k·sample_dt, from the integrator's steps by cubic
   /// Hermite interpolation (the state and its rate at both ends of the step: error O(h⁴)), and
   /// at each event exactly (an impact: the states before and after it, at the same time);
