@@ -29,6 +29,20 @@ std::string written(const std::string& name, const std::string& text) {
 
 const char* kRolling = "  rolling: {constraint: \"x + r*phi = 0\", between: [disk, O], at: [x*cos(beta), -x*sin(beta)], mu_s: mus, normal: incline}\n";
 
+/// A sphere (m = 2 kg, r = 0.1 m) rolling on a circle of radius R about the origin, theta from
+/// the bottom inside a bowl (its centre at R - r) or from the top on a dome (at R + r), with its
+/// rolling 'rolling' held by mu_s on the track named `track`; state 1 and what follows it.
+std::string ball_on_circle(bool inside, const std::string& R, const std::string& w0, const std::string& mus, const std::string& state1,
+                           const std::string& rest) {
+  const std::string rho = inside ? "(R - r)" : "(R + r)", y = inside ? "-" : "", track = inside ? "bowl" : "dome";
+  return std::string("title: Ball rolling on a circle\nparameters:\n  m: 2 kg\n  r: 0.1 m\n  R: ") + R + "\n  g: 9.81 m/s^2\n  w0: " + w0 +
+         "\n  mus: " + mus + "\npoints:\n  O: [0, 0]\ncoordinates:\n  theta: rad\n  phi: rad\nbodies:\n  ball:\n    mass: m\n"
+         "    inertia: {sphere: r}\n    position: [" + rho + "*sin(theta), " + y + rho + "*cos(theta)]\n    angle: phi\neffects:\n"
+         "  gravity: {g: g}\n  " + track + ": {track: ball, circle: {centre: [0, 0], radius: R}, offset: " + (inside ? "-r" : "r") + "}\n"
+         "  rolling: {constraint: \"" + rho + "*theta + r*phi = 0\", between: [ball, O], at: [R*sin(theta), " + y + "R*cos(theta)], mu_s: mus, normal: " +
+         track + "}\nstates:\n  1: " + state1 + "\n" + rest;
+}
+
 }  // namespace
 
 TEST_CASE("static friction: a rolling disk with enough mu_s solves, and the derivation says it was checked", "[kinetics][friction]") {
@@ -103,32 +117,7 @@ TEST_CASE("static friction: where the friction needed changes along an energy an
 TEST_CASE("static friction: the simulator stops where a rolling body slips", "[kinetics][friction][simulate]") {
   // a sphere launched up the inside of a bowl at 6 rad/s, mu_s = 0.5: F/N reaches 0.5 at
   // theta = 1.35547, t = 0.279195 s, F = 5.47626 N, N = 10.9525 N (case 3c)
-  const std::string bowl = R"(title: Ball rolling up the inside of a bowl
-parameters:
-  m: 2 kg
-  r: 0.1 m
-  R: 0.5 m
-  g: 9.81 m/s^2
-  w0: 6 rad/s
-  mus: 0.5
-points:
-  O: [0, 0]
-coordinates:
-  theta: rad
-  phi: rad
-bodies:
-  ball:
-    mass: m
-    inertia: {sphere: r}
-    position: [(R - r)*sin(theta), -(R - r)*cos(theta)]
-    angle: phi
-effects:
-  gravity: {g: g}
-  bowl: {track: ball, circle: {centre: [0, 0], radius: R}, offset: -r}
-  rolling: {constraint: "(R - r)*theta + r*phi = 0", between: [ball, O], at: [R*sin(theta), -R*cos(theta)], mu_s: mus, normal: bowl}
-states:
-  1: {theta: 0, theta_dot: w0, phi: 0, phi_dot: -(R - r)*w0/r}
-)";
+  const std::string bowl = ball_on_circle(true, "0.5 m", "6 rad/s", "0.5", "{theta: 0, theta_dot: w0, phi: 0, phi_dot: -(R - r)*w0/r}", "");
   int st = 0;
   std::string out = kt::run_cli("simulate " + written("bowl", bowl) + " --until 2", st);
   CHECK(st != 0);
@@ -136,7 +125,7 @@ states:
                       Catch::Contains("bowl.yaml:23:"));
   // launched at 4 rad/s it turns at theta = 0.996 rad, where F/N = (2/7) tan(theta) = 0.44 is
   // its greatest: it rolls up and back
-  out = kt::run_cli("simulate " + written("bowl2", kt::edit(bowl, "  w0: 6 rad/s\n", "  w0: 4 rad/s\n")) + " --until 1.5", st);
+  out = kt::run_cli("simulate " + written("bowl2", ball_on_circle(true, "0.5 m", "4 rad/s", "0.5", "{theta: 0, theta_dot: w0, phi: 0, phi_dot: -(R - r)*w0/r}", "")) + " --until 1.5", st);
   INFO(out);
   CHECK(st == 0);
 }
@@ -173,35 +162,6 @@ TEST_CASE("static friction: what is refused, naming what would be needed", "[kin
 
 namespace {
 
-// a sphere (m = 2 kg, r = 0.1 m) rolling on a dome of radius R = 1 m; theta from the top
-std::string dome(const std::string& state1, const std::string& analyses_and_find) {
-  return R"(title: Ball rolling on a dome
-parameters:
-  m: 2 kg
-  r: 0.1 m
-  R: 1 m
-  g: 9.81 m/s^2
-  mus: 2
-  w0: 5 rad/s
-points:
-  O: [0, 0]
-coordinates:
-  theta: rad
-  phi: rad
-bodies:
-  ball:
-    mass: m
-    inertia: {sphere: r}
-    position: [(R + r)*sin(theta), (R + r)*cos(theta)]
-    angle: phi
-effects:
-  gravity: {g: g}
-  dome: {track: ball, circle: {centre: [0, 0], radius: R}, offset: r}
-  rolling: {constraint: "(R + r)*theta + r*phi = 0", between: [ball, O], at: [R*sin(theta), R*cos(theta)], mu_s: mus, normal: dome}
-states:
-  1: )" + state1 + "\n" + analyses_and_find;
-}
-
 const char* kKinetics = "analyses:\n  - kinetics: {at: 1}\nfind:\n  F1: {value: F(rolling)@1, unit: N}\n  N1: {value: N(dome)@1, unit: N}\n";
 
 }  // namespace
@@ -210,11 +170,11 @@ TEST_CASE("static friction: a surface that would have to pull, and a friction fo
   // by hand: m (R + r) theta_dot^2 = m g cos(theta) - N and F = (2/7) m g sin(theta) (tangential
   // Newton with (7/5) m (R + r) theta_ddot = m g sin(theta)). At theta = 1, theta_dot = 2.4623727572:
   // N = 2 (9.81 cos 1 - 1.1 * 2.4623727572^2) = -2.73848 N
-  REQUIRE_THROWS_WITH(solve_text(dome("{theta: 1 rad, theta_dot: 2.4623727572 rad/s}", kKinetics)),
+  REQUIRE_THROWS_WITH(solve_text(ball_on_circle(false, "1 m", "5 rad/s", "2", "{theta: 1 rad, theta_dot: 2.4623727572 rad/s}", kKinetics)),
                       Catch::Contains("at state '1' the surface of 'dome' would have to pull on the rolling body (2.73848 N)") &&
                           Catch::Contains("it leaves the surface there"));
   // theta_dot^2 = g cos(1)/(R + r): N = 0, F = (2/7)(2)(9.81) sin 1 = 4.71705 N
-  const std::string at_zero = dome("{theta: 1 rad, theta_dot: sqrt(g*cos(1)/(R + r))}", kKinetics);
+  const std::string at_zero = ball_on_circle(false, "1 m", "5 rad/s", "2", "{theta: 1 rad, theta_dot: sqrt(g*cos(1)/(R + r))}", kKinetics);
   std::string err;
   try {
     solve_text(at_zero);
@@ -229,7 +189,7 @@ TEST_CASE("static friction: a surface that would have to pull, and a friction fo
 TEST_CASE("static friction: the simulator stops where the body would leave the surface", "[kinetics][friction][simulate]") {
   // at the top with theta_dot = 5 rad/s: N = m g - m (R + r) theta_dot^2 = 19.62 - 55 < 0, F = 0
   int st = 0;
-  const std::string path = written("dome_top", dome("{theta: 0, theta_dot: w0, phi: 0, phi_dot: -(R + r)*w0/r}", ""));
+  const std::string path = written("dome_top", ball_on_circle(false, "1 m", "5 rad/s", "2", "{theta: 0, theta_dot: w0, phi: 0, phi_dot: -(R + r)*w0/r}", ""));
   const std::string out = kt::run_cli("simulate " + path + " --until 1", st);
   INFO(out);
   CHECK(st != 0);
