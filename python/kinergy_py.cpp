@@ -9,7 +9,9 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
+#include <sstream>
 
 #include "kinergy/app/app.hpp"
 #include "kinergy/common/error.hpp"
@@ -43,6 +45,16 @@ struct PyScene {
     for (auto& p : def.parameters) out[p.name] = p.value.s;
     return out;
   }
+  // each parameter that has a value, in SI units (what SymPy's lambdify of a result's closed form takes)
+  std::map<std::string, double> values_si() const {
+    const model::Model m = model::Model::build(def);
+    const GiNaC::exmap env = m.numeric_environment();
+    std::map<std::string, double> out;
+    for (auto& p : m.params)
+      if (p.value)
+        if (auto v = numerics::evaluate(*p.value, env, 20)) out[p.name] = v->to_double();
+    return out;
+  }
   // a parameter's value as a scene writes it ("2 kg", "30 deg", 9.81)
   void set(const std::string& name, const py::object& value) {
     std::string text = py::isinstance<py::str>(value) ? value.cast<std::string>() : py::str(value).cast<std::string>();
@@ -60,6 +72,74 @@ struct PyScene {
     return draw::scene_at(s.model, s.branch.sol, parameter_values(s), st).svg();
   }
 };
+
+/// GiNaC's expression e as SymPy builds it: sums, products, powers, rational and decimal numbers,
+/// the elementary functions, π; a symbol of GiNaC's positive or real domain as such a SymPy
+/// symbol (one per name, in `symbols`). @throws InputError for a kind of node SymPy is not given
+/// (naming the result).
+py::object to_sympy(const GiNaC::ex& e, const py::module_& sp, py::dict& symbols, const std::string& result) {
+  using namespace GiNaC;
+  auto args = [&](const ex& x) {
+    py::list out;
+    for (std::size_t i = 0; i < x.nops(); ++i) out.append(to_sympy(x.op(i), sp, symbols, result));
+    return out;
+  };
+  if (is_a<symbol>(e)) {
+    const symbol& x = ex_to<symbol>(e);
+    const py::str name(x.get_name());
+    if (!symbols.contains(name)) {
+      py::dict assume;
+      if (x.get_domain() == domain::positive) assume["positive"] = true;
+      else if (x.get_domain() == domain::real) assume["real"] = true;
+      symbols[name] = sp.attr("Symbol")(name, **assume);
+    }
+    return symbols[name];
+  }
+  if (is_a<numeric>(e)) {
+    const numeric& n = ex_to<numeric>(e);
+    if (!n.is_real()) return sp.attr("Add")(to_sympy(n.real(), sp, symbols, result), sp.attr("Mul")(sp.attr("I"), to_sympy(n.imag(), sp, symbols, result)));
+    std::ostringstream os;
+    if (n.is_integer()) return sp.attr("Integer")((os << n, os.str()));
+    if (n.is_rational()) {
+      std::ostringstream d;
+      d << n.denom();
+      return sp.attr("Rational")((os << n.numer(), os.str()), d.str());
+    }
+    // a decimal: its digits as GiNaC holds them (CLN prints "1.25L-3" style exponents)
+    os.precision(40);
+    os << n;
+    std::string t = os.str();
+    for (char& c : t)
+      if (c == 'L' || c == 'E') c = 'e';
+    return sp.attr("Float")(t, std::max<long>(15, static_cast<long>(t.size())));
+  }
+  if (is_a<constant>(e)) {
+    if (e.is_equal(Pi)) return sp.attr("pi");
+    if (e.is_equal(Euler)) return sp.attr("EulerGamma");
+    if (e.is_equal(Catalan)) return sp.attr("Catalan");
+  }
+  if (is_a<add>(e)) return sp.attr("Add")(*args(e));
+  if (is_a<mul>(e)) return sp.attr("Mul")(*args(e));
+  if (is_a<power>(e)) return sp.attr("Pow")(*args(e));
+  if (is_a<function>(e)) {
+    static const std::map<std::string, std::string> names{
+        {"sin", "sin"},   {"cos", "cos"},   {"tan", "tan"},     {"asin", "asin"},   {"acos", "acos"},   {"atan", "atan"},
+        {"atan2", "atan2"}, {"sinh", "sinh"}, {"cosh", "cosh"}, {"tanh", "tanh"},   {"asinh", "asinh"}, {"acosh", "acosh"},
+        {"atanh", "atanh"}, {"exp", "exp"},   {"log", "log"},   {"abs", "Abs"},     {"csgn", "sign"},   {"step", "Heaviside"},
+        {"factorial", "factorial"}};
+    const std::string f = ex_to<function>(e).get_name();
+    if (auto it = names.find(f); it != names.end()) return sp.attr(it->second.c_str())(*args(e));
+    if (f == "integral") {
+      // ∫_a^b f ds (a work with no elementary antiderivative): integral(f, s, a, b)
+      const py::list a = args(e);
+      return sp.attr("Integral")(a[0], py::make_tuple(a[1], a[2], a[3]));
+    }
+    throw InputError("result '" + result + "' holds the function " + f + ", which kinergy does not hand to SymPy", "use .closed (its text) instead");
+  }
+  throw InputError("result '" + result + "' holds " + emit::plain(e) +
+                       ", which kinergy does not hand to SymPy",
+                   "use .closed (its text) instead");
+}
 
 struct PyResult {
   std::shared_ptr<const Solution> s;
@@ -96,16 +176,12 @@ struct PyResult {
     d["evaluation"] = v->note();
     return d;
   }
-  // the closed form as SymPy builds it from its text, every name a symbol of its own
+  // the closed form as a SymPy expression, built from GiNaC's tree (not parsed from text: '^' is
+  // not XOR, a parameter may be named 'lambda'), each symbol positive or real as kinergy knows it
   py::object sympy() const {
-    py::module_ sp = py::module_::import("sympy");
-    py::dict names;
-    for (auto it = r().closed.preorder_begin(); it != r().closed.preorder_end(); ++it)
-      if (GiNaC::is_a<GiNaC::symbol>(*it)) {
-        const std::string n = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
-        names[py::str(n)] = sp.attr("Symbol")(n);
-      }
-    return sp.attr("parse_expr")(emit::plain(r().closed), py::arg("local_dict") = names);
+    const py::module_ sp = py::module_::import("sympy");
+    py::dict symbols;
+    return to_sympy(r().closed, sp, symbols, r().name);
   }
 };
 
@@ -234,6 +310,9 @@ PYBIND11_MODULE(kinergy, m) {
            "its value to `digits` proven digits (ball arithmetic): a dict of value, proven, midpoint, radius (the exact "
            "value lies within radius of midpoint; None when not proven) and evaluation")
       .def("__float__", &PyResult::to_float)
+      .def_property_readonly(
+          "si", [](const PyResult& r) -> py::object { return r.r().si ? py::object(py::float_(r.r().si->to_double())) : py::object(py::none()); },
+          "its value in SI units, as its closed form gives it (None when a parameter has no value)")
       .def("sympy", &PyResult::sympy, "the closed form as a SymPy expression (sympy must be installed)")
       .def("__repr__", [](const PyResult& r) { return "<kinergy.Result " + r.r().name + " = " + emit::plain(r.r().closed) + ">"; });
 
@@ -274,6 +353,7 @@ PYBIND11_MODULE(kinergy, m) {
       .def_property_readonly("title", [](const PyScene& s) { return s.def.title; })
       .def_property_readonly("parameters", &PyScene::parameters, "name -> value as written")
       .def("set", &PyScene::set, py::arg("name"), py::arg("value"), "give a parameter a value as a scene writes it ('2 kg')")
+      .def("values_si", &PyScene::values_si, "name -> value in SI units, for each parameter that has one")
       .def("solve", &solve_scene_def, py::arg("confirm") = true,
            "solve it: each result in closed form and its value, each analysis confirmed a second way (a simulation of the same "
            "scene, else the equations' residuals at 50 digits) unless confirm=False")

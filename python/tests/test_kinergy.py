@@ -57,8 +57,44 @@ def test_a_scene_from_text():
 def test_sympy_form():
     sympy = pytest.importorskip("sympy")
     form = kinergy.load(ROD).solve()["omega2"].sympy()
-    g, l, t = sympy.symbols("g l theta2")
+    # kinergy's parameters with positive values are positive symbols
+    g, l, t = sympy.symbols("g l theta2", positive=True)
     assert sympy.simplify(form - sympy.sqrt(3 * g * sympy.sin(t) / l)) == 0
+    assert all(x.is_positive for x in form.free_symbols)
+
+
+def test_sympy_of_every_result_of_every_derivation():
+    """Issue 29, defect 2: the SymPy expression is built from GiNaC's tree; evaluated at the
+    scene's SI values it gives the result's SI value (to 1e-10), for every closed-form result."""
+    sympy = pytest.importorskip("sympy")
+    import glob
+    checked = 0
+    for path in sorted(glob.glob(os.path.join(ROOT, "derivations", "*", "*.yaml"))):
+        scene = kinergy.load(path)
+        values = scene.values_si()
+        for r in scene.solve(confirm=False).results:
+            if not r.closed_form or r.si is None:
+                continue
+            form = r.sympy()
+            at = {x: values[x.name] for x in form.free_symbols if x.name in values}
+            v = complex(sympy.N(form.subs(at), 30))
+            assert abs(v.imag) <= 1e-12 * max(1.0, abs(r.si)), (path, r.name, v)
+            assert abs(v.real - r.si) <= 1e-10 * max(1e-300, abs(r.si)) or abs(v.real - r.si) < 1e-14, (path, r.name, v, r.si)
+            checked += 1
+    assert checked >= 150
+
+
+def test_sympy_powers_and_names_python_reserves():
+    """'a^b' is a power (parsing the text made it Xor), and a parameter named 'lambda' (a Python
+    keyword) is a symbol of that name."""
+    sympy = pytest.importorskip("sympy")
+    text = open(ROD).read().replace("  theta2: 30 deg\n", "  theta2: 30 deg\n  a: 2\n  b: 3\n  lambda: 0.5\n")
+    text = text.replace("find:\n", "find:\n  p: {value: a^b + lambda}\n")
+    r = kinergy.loads(text).solve()["p"]
+    form = r.sympy()
+    a, b, lam = sympy.symbols("a b lambda", positive=True)
+    assert sympy.simplify(form - (a**b + lam)) == 0
+    assert float(form.subs({a: 2, b: 3, lam: 0.5})) == 8.5 == float(r)
 
 
 def test_derivation_drawing_and_notebook_views():
