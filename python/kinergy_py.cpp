@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -36,9 +37,12 @@ namespace {
 
 struct PySolution;
 
-// A scene as written, its parameters changeable before it is solved.
+// A scene as written, its parameters changeable before it is solved. It keeps its text, the name
+// it was loaded under and the values set since, so that it pickles (a Dask worker rebuilds it).
 struct PyScene {
   scene::SceneDef def;
+  std::string text, name;
+  std::vector<std::pair<std::string, std::string>> sets;
 
   std::map<std::string, std::string> parameters() const {
     std::map<std::string, std::string> out;
@@ -56,9 +60,10 @@ struct PyScene {
     return out;
   }
   // a parameter's value as a scene writes it ("2 kg", "30 deg", 9.81)
-  void set(const std::string& name, const py::object& value) {
-    std::string text = py::isinstance<py::str>(value) ? value.cast<std::string>() : py::str(value).cast<std::string>();
-    app::set_parameter(def, name, text);
+  void set(const std::string& parameter, const py::object& value) {
+    const std::string v = py::isinstance<py::str>(value) ? value.cast<std::string>() : py::str(value).cast<std::string>();
+    app::set_parameter(def, parameter, v);
+    sets.emplace_back(parameter, v);
   }
   std::string draw(const py::object& state) const {
     model::Model m = model::Model::build(def);
@@ -187,7 +192,8 @@ struct PyResult {
 
 struct PySolution {
   std::shared_ptr<const Solution> s;
-  scene::SceneDef def;
+  PyScene scene;     ///< what was solved (a pickled solution is solved again from it)
+  bool confirmed = true;
 
   std::vector<PyResult> results() const {
     std::vector<PyResult> out;
@@ -263,12 +269,44 @@ struct PySolution {
   }
 };
 
-PyScene load(const std::string& path) { return {scene::load_file(path)}; }
-PyScene loads(const std::string& text, const std::string& name) { return {scene::load_string(text, name)}; }
+// a path as Python gives it: str, pathlib.Path or any os.PathLike
+PyScene load(const py::object& path) {
+  const std::string p = py::str(py::module_::import("os").attr("fspath")(path));
+  PyScene sc{scene::load_file(p), "", p, {}};
+  std::ifstream f(p, std::ios::binary);
+  std::ostringstream text;
+  text << f.rdbuf();
+  sc.text = text.str();
+  return sc;
+}
+PyScene loads(const std::string& text, const std::string& name) { return {scene::load_string(text, name), text, name, {}}; }
 PySolution solve_scene_def(const PyScene& sc, bool confirmed) {
   Solution s = solve_scene(sc.def);
   if (confirmed) confirm(s);  // each analysis a second way: a disagreement raises SceneError
-  return {std::make_shared<const Solution>(std::move(s)), sc.def};
+  return {std::make_shared<const Solution>(std::move(s)), sc, confirmed};
+}
+
+// pickling: a scene is its text, its name and the values set since; a solution is its scene
+// solved again (the same bytes: kinergy's output does not depend on the process)
+py::tuple scene_state(const PyScene& sc) {
+  py::list sets;
+  for (auto& [k, v] : sc.sets) sets.append(py::make_tuple(k, v));
+  return py::make_tuple(sc.text, sc.name, sets);
+}
+PyScene scene_from(const py::tuple& t) {
+  if (t.size() != 3) throw InputError("a pickled kinergy.Scene holds its text, name and values set", "pickle it with this version of kinergy");
+  PyScene sc = loads(t[0].cast<std::string>(), t[1].cast<std::string>());
+  for (auto item : t[2].cast<py::list>()) {
+    auto kv = item.cast<py::tuple>();
+    sc.set(kv[0].cast<std::string>(), kv[1]);
+  }
+  return sc;
+}
+
+// "omega2 = 3.502 rad/s" (or its closed form, when a parameter has no value)
+std::string shown(const PyResult& r) {
+  if (!r.r().si) return r.r().name + " = " + emit::plain(r.r().closed);
+  return r.r().name + " = " + r.value(4) + (r.r().unit.empty() ? "" : " " + r.r().unit);
 }
 
 }  // namespace
@@ -314,7 +352,15 @@ PYBIND11_MODULE(kinergy, m) {
           "si", [](const PyResult& r) -> py::object { return r.r().si ? py::object(py::float_(r.r().si->to_double())) : py::object(py::none()); },
           "its value in SI units, as its closed form gives it (None when a parameter has no value)")
       .def("sympy", &PyResult::sympy, "the closed form as a SymPy expression (sympy must be installed)")
-      .def("__repr__", [](const PyResult& r) { return "<kinergy.Result " + r.r().name + " = " + emit::plain(r.r().closed) + ">"; });
+      .def("__format__",
+           [](const PyResult& r, const std::string& spec) {
+             // f"{r:.3f}": its value in its unit, formatted as a float is
+             return py::module_::import("builtins").attr("format")(py::float_(r.to_float()), spec);
+           })
+      .def("__repr__", [](const PyResult& r) {
+        return "<kinergy.Result " + r.r().name + " = " + emit::plain(r.r().closed) +
+               (r.r().si ? " = " + r.value(4) + (r.r().unit.empty() ? "" : " " + r.r().unit) : std::string()) + ">";
+      });
 
   py::class_<PySolution>(m, "Solution", "A solved scene")
       .def_property_readonly("results", &PySolution::results)
@@ -342,6 +388,45 @@ PYBIND11_MODULE(kinergy, m) {
                if (r.r().name == name) return r;
              throw py::key_error(name);
            })
+      // a mapping of the results by name, in the scene's order
+      .def("__len__", [](const PySolution& s) { return s.s->results.size(); })
+      .def("__contains__",
+           [](const PySolution& s, const py::object& name) {
+             if (!py::isinstance<py::str>(name)) return false;
+             const std::string n = name.cast<std::string>();
+             return std::any_of(s.s->results.begin(), s.s->results.end(), [&](const Result& r) { return r.name == n; });
+           })
+      .def("keys",
+           [](const PySolution& s) {
+             py::list out;
+             for (auto& r : s.s->results) out.append(r.name);
+             return out;
+           })
+      .def("__iter__",
+           [](const PySolution& s) {
+             py::list out;
+             for (auto& r : s.s->results) out.append(r.name);
+             return py::iter(out);
+           })
+      .def("values", &PySolution::results)
+      .def("items",
+           [](const PySolution& s) {
+             py::list out;
+             for (auto& r : s.results()) out.append(py::make_tuple(r.r().name, r));
+             return out;
+           })
+      .def("__repr__",
+           [](const PySolution& s) {
+             std::string out = "<kinergy.Solution of '" + s.s->scene.title + "':";
+             for (auto& r : s.results()) out += " " + shown(r) + ";";
+             if (!s.s->results.empty()) out.pop_back();
+             return out + ">";
+           })
+      .def(py::pickle([](const PySolution& s) { return py::make_tuple(scene_state(s.scene), s.confirmed); },
+                      [](const py::tuple& t) {
+                        if (t.size() != 2) throw InputError("a pickled kinergy.Solution holds its scene and whether it was confirmed", "pickle it with this version of kinergy");
+                        return solve_scene_def(scene_from(t[0].cast<py::tuple>()), t[1].cast<bool>());
+                      }))
       .def("derive", &PySolution::derive, py::arg("format") = "text", "the worked solution: 'text', 'latex' or 'html'")
       .def("verify", &PySolution::verify, "True when every claim of the scene's expect holds")
       .def("simulate", &PySolution::simulate, py::arg("until"), py::arg("samples") = 1000, py::arg("start") = py::none(),
@@ -358,6 +443,14 @@ PYBIND11_MODULE(kinergy, m) {
            "solve it: each result in closed form and its value, each analysis confirmed a second way (a simulation of the same "
            "scene, else the equations' residuals at 50 digits) unless confirm=False")
       .def("draw", &PyScene::draw, py::arg("state") = py::none(), "the scene at a state (the first by default) as SVG")
+      .def("__repr__",
+           [](const PyScene& s) {
+             std::string out = "<kinergy.Scene '" + s.def.title + "' (" + s.name + ")";
+             for (std::size_t i = 0; i < s.def.parameters.size(); ++i)
+               out += (i ? ", " : ": ") + s.def.parameters[i].name + " = " + s.def.parameters[i].value.s;
+             return out + ">";
+           })
+      .def(py::pickle([](const PyScene& s) { return scene_state(s); }, [](const py::tuple& t) { return scene_from(t); }))
       .def("_repr_svg_", [](const PyScene& s) -> py::object {
         try {
           return py::str(s.draw(py::none()));

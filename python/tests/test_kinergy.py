@@ -172,3 +172,32 @@ def test_solve_confirms_each_analysis_a_second_way():
         kinergy.loads(ball, "ball.yaml").solve()
     assert "simulated -4.4294469, closed form 4.4294469" in err.value.message
     assert abs(float(kinergy.loads(ball, "ball.yaml").solve(confirm=False)["v2"]) - math.sqrt(9.81 * 2)) < 1e-12
+
+
+def test_repr_mapping_format_path_and_pickle():
+    """Issue 29, defect 5: repr of Scene, Solution and Result say what they hold; a Solution is a
+    mapping of its results by name; a Result formats as its float does; load() takes a
+    pathlib.Path; Scene and Solution pickle (a Dask worker rebuilds them)."""
+    import pathlib
+    import pickle
+    scene = kinergy.load(pathlib.Path(ROD))
+    assert repr(scene) == ("<kinergy.Scene 'Rod sliding on a horizontal and a vertical track' (" + str(pathlib.Path(ROD)) +
+                           "): m = 5 kg, l = 1.2 m, g = 9.81 m/s^2, theta2 = 30 deg>")
+    scene.set("l", "2 m")
+    solution = scene.solve()
+    assert len(solution) == 1 and list(solution) == ["omega2"] == solution.keys()
+    assert "omega2" in solution and "zz" not in solution and 3 not in solution
+    assert [name for name, _ in solution.items()] == ["omega2"] and solution.values()[0].name == "omega2"
+    assert dict(solution.items())["omega2"].closed == "sqrt(3*g*sin(theta2)/l)"
+    r = solution["omega2"]
+    assert f"{r:.3f}" == f"{omega(2.0):.3f}" == "2.712"
+    assert repr(r) == "<kinergy.Result omega2 = sqrt(3*g*sin(theta2)/l) = 2.712 rad/s>"
+    assert repr(solution) == "<kinergy.Solution of 'Rod sliding on a horizontal and a vertical track': omega2 = 2.712 rad/s>"
+    # pickled and back: the same scene with its value set, the same solution
+    scene2 = pickle.loads(pickle.dumps(scene))
+    assert scene2.parameters["l"] == "2 m" and repr(scene2) == repr(scene)
+    solution2 = pickle.loads(pickle.dumps(solution))
+    assert float(solution2["omega2"]) == float(r) and solution2.confirmed == solution.confirmed
+    # a scene from text pickles too
+    text_scene = kinergy.loads(open(ROD).read(), "rod.yaml")
+    assert float(pickle.loads(pickle.dumps(text_scene)).solve()["omega2"]) == pytest.approx(omega(1.2), rel=1e-14)
