@@ -60,8 +60,21 @@ struct PyScene {
     return out;
   }
   // a parameter's value as a scene writes it ("2 kg", "30 deg", 9.81)
+  // a parameter's value: text as a scene writes it ("2 kg", "30 deg"), or a number in the unit the
+  // scene writes it in (2.0 for 'l: 1.2 m' is 2.0 m; 45 for 'theta2: 30 deg' is 45 deg); checked here
   void set(const std::string& parameter, const py::object& value) {
-    const std::string v = py::isinstance<py::str>(value) ? value.cast<std::string>() : py::str(value).cast<std::string>();
+    std::string v;
+    if (py::isinstance<py::str>(value)) {
+      v = value.cast<std::string>();
+    } else if ((py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value)) && !py::isinstance<py::bool_>(value)) {
+      const double x = value.cast<double>();
+      if (!std::isfinite(x)) throw InputError("the value " + py::repr(value).cast<std::string>() + " for '" + parameter + "' is not a finite number", "give a finite number");
+      const std::string unit = app::written_unit(def, parameter);
+      v = py::repr(value).cast<std::string>() + (unit.empty() ? "" : " " + unit);
+    } else {
+      throw InputError("the value for '" + parameter + "' is a " + py::str(value.get_type().attr("__name__")).cast<std::string>(),
+                       "give text as a scene writes it ('2 kg') or a number in the scene's unit for it");
+    }
     app::set_parameter(def, parameter, v);
     sets.emplace_back(parameter, v);
   }
@@ -436,8 +449,23 @@ PYBIND11_MODULE(kinergy, m) {
 
   py::class_<PyScene>(m, "Scene", "A scene as written: change its parameters, solve it, draw it")
       .def_property_readonly("title", [](const PyScene& s) { return s.def.title; })
-      .def_property_readonly("parameters", &PyScene::parameters, "name -> value as written")
-      .def("set", &PyScene::set, py::arg("name"), py::arg("value"), "give a parameter a value as a scene writes it ('2 kg')")
+      .def_property_readonly(
+          "parameters",
+          [](const PyScene& s) {
+            // read-only: a value is changed with set() (assigning into a copy changed nothing)
+            return py::module_::import("types").attr("MappingProxyType")(py::cast(s.parameters()));
+          },
+          "name -> value as written (read-only: change one with set())")
+      .def(
+          "set",
+          [](PyScene& s, const py::args& args, const py::kwargs& values) {
+            // set("l", "2 m"), set("l", 2.0) in the scene's unit, or set(l="2 m", theta2=45)
+            if (args.size() == 2) s.set(args[0].cast<std::string>(), args[1]);
+            else if (!args.empty()) throw InputError("set takes a name and a value, or name=value pairs", "write set('l', '2 m') or set(l='2 m')");
+            for (auto [k, v] : values) s.set(k.cast<std::string>(), py::reinterpret_borrow<py::object>(v));
+          },
+          "give parameters values: set('l', '2 m'), set('l', 2.0) (a number in the unit the scene writes it in), or "
+          "set(l='2 m', theta2=45); each checked at once")
       .def("values_si", &PyScene::values_si, "name -> value in SI units, for each parameter that has one")
       .def("solve", &solve_scene_def, py::arg("confirm") = true,
            "solve it: each result in closed form and its value, each analysis confirmed a second way (a simulation of the same "

@@ -140,10 +140,12 @@ def test_errors_carry_their_place_and_fix():
         scene.set("zz", 1)
     assert e.value.message == "the scene has no parameter 'zz'"
     assert e.value.fix == "set one of its parameters: m, l, g, theta2"
-    scene.set("l", "2 kg")
+    # a value of the wrong kind is refused where it is given, not at the scene's line at solve()
     with pytest.raises(kinergy.SceneError) as e:
-        scene.solve()
-    assert "is in kg but must be in m" in e.value.message
+        scene.set("l", "2 kg")
+    assert e.value.message == "the value '2 kg' for 'l' is a mass, but the scene writes 'l: 1.2 m', a length"
+    assert e.value.fix == "give 'l' in a unit of the same kind (e.g. m)"
+    assert not e.value.file  # (it is no place in the scene's file)
     with pytest.raises(KeyError):
         kinergy.load(ROD).solve()["nothing"]
     # digits outside 1..1000 are refused at once (they ran for ever and took gigabytes)
@@ -201,3 +203,35 @@ def test_repr_mapping_format_path_and_pickle():
     # a scene from text pickles too
     text_scene = kinergy.loads(open(ROD).read(), "rod.yaml")
     assert float(pickle.loads(pickle.dumps(text_scene)).solve()["omega2"]) == pytest.approx(omega(1.2), rel=1e-14)
+
+
+def test_parameters_set_checked_at_once():
+    """Issue 29, defect 6: a number is in the unit the scene writes the parameter in; several at
+    once by name; text checked where it is given (not at the scene's line at solve()); the
+    parameters mapping is read-only, since assigning into it changed nothing."""
+    scene = kinergy.load(ROD)
+    with pytest.raises(TypeError):
+        scene.parameters["l"] = "2 m"
+    scene.set("l", 2.0)                      # 'l: 1.2 m': 2.0 m
+    assert scene.parameters["l"] == "2.0 m"
+    assert abs(float(scene.solve()["omega2"]) - omega(2.0)) < 1e-12
+    scene.set("theta2", 90)                  # 'theta2: 30 deg': 90 deg, not 90 rad
+    assert abs(float(scene.solve()["omega2"]) - omega(2.0, 90.0)) < 1e-12
+    scene.set(l="3 m", theta2=45)
+    assert abs(float(scene.solve()["omega2"]) - omega(3.0, 45.0)) < 1e-12
+    with pytest.raises(kinergy.SceneError) as e:
+        scene.set("l", "2 kg")
+    assert "the value '2 kg' for 'l' is a mass, but the scene writes 'l: 3 m', a length" in str(e.value)
+    with pytest.raises(kinergy.SceneError) as e:
+        scene.set("l", "two m")
+    assert "the value 'two m' for 'l' is no quantity" in str(e.value)
+    with pytest.raises(kinergy.SceneError) as e:
+        scene.set("l", True)
+    assert "the value for 'l' is a bool" in str(e.value)
+    with pytest.raises(kinergy.SceneError) as e:
+        scene.set("l", float("inf"))
+    assert "is not a finite number" in str(e.value)
+    with pytest.raises(kinergy.SceneError) as e:
+        scene.set(zz=1)
+    assert "the scene has no parameter 'zz'" in str(e.value)
+    assert scene.parameters["l"] == "3 m"    # a refused value leaves the scene as it was

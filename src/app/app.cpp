@@ -6,6 +6,7 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/confirm/check.hpp"
 #include "kinergy/draw/animation.hpp"
+#include "kinergy/units/units.hpp"
 
 namespace kinergy::app {
 
@@ -18,9 +19,47 @@ const scene::ParameterDef& parameter(const scene::SceneDef& def, const std::stri
   throw InputError("the scene has no parameter '" + name + "'", verb + " one of its parameters: " + names);
 }
 
+namespace {
+
+/// "a length", "a mass", "a pure number (or an angle)", "a quantity in N": for messages.
+std::string kind_of(const units::Dimension& d) {
+  using units::Dimension;
+  if (d.dimensionless()) return "a pure number (or an angle)";
+  if (d == Dimension::length()) return "a length";
+  if (d == Dimension::mass()) return "a mass";
+  if (d == Dimension::time()) return "a time";
+  return "a quantity in " + units::si_name(d);
+}
+
+}  // namespace
+
 void set_parameter(scene::SceneDef& def, const std::string& name, const std::string& text) {
   const scene::ParameterDef& p = parameter(def, name);
+  // checked here, where it is given, not at the scene's line when the scene is solved
+  units::Quantity now, was;
+  try {
+    now = units::parse_quantity(text);
+  } catch (const InputError& e) {
+    throw InputError("the value '" + text + "' for '" + name + "' is no quantity: " + e.what(), e.fix());
+  }
+  try {
+    was = units::parse_quantity(p.value.s);
+  } catch (const InputError&) {
+    was = now;  // (the scene's own text is checked where it is read)
+  }
+  if (now.unit.dim != was.unit.dim)
+    throw InputError("the value '" + text + "' for '" + name + "' is " + kind_of(now.unit.dim) + ", but the scene writes '" + name + ": " +
+                         p.value.s + "', " + kind_of(was.unit.dim),
+                     "give '" + name + "' in a unit of the same kind" + (was.unit.text.empty() ? std::string(" (a pure number)") : " (e.g. " + was.unit.text + ")"));
   def.parameters[static_cast<std::size_t>(&p - def.parameters.data())].value.s = text;
+}
+
+std::string written_unit(const scene::SceneDef& def, const std::string& name) {
+  try {
+    return units::parse_quantity(parameter(def, name).value.s).unit.text;
+  } catch (const InputError&) {
+    return "";
+  }
 }
 
 int state_index(const model::Model& m, const std::string& name) {

@@ -19,8 +19,12 @@ namespace kinergy::app {
 const scene::ParameterDef& parameter(const scene::SceneDef& def, const std::string& name, const std::string& verb = "set");
 
 /// Set parameter `name` to `text`, as a scene writes a value ("2 kg", "30 deg", "9.81").
-/// @throws InputError when the scene has no such parameter.
+/// @throws InputError when the scene has no such parameter, when the text is no quantity, or when
+/// it is of another kind than the scene writes (a mass for a length), naming both.
 void set_parameter(scene::SceneDef& def, const std::string& name, const std::string& text);
+/// The unit parameter `name` is written in ("m", "deg", "" for a pure number): a bare number
+/// given for it is in that unit.
+std::string written_unit(const scene::SceneDef& def, const std::string& name);
 
 /// The index of state `name` ("" : the first). @throws InputError when there is none.
 int state_index(const model::Model& m, const std::string& name);
