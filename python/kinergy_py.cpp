@@ -203,6 +203,12 @@ struct PyResult {
   }
 };
 
+// what Solution.verify() gives: whether every claim holds, and each claim's check
+struct Verdict {
+  bool ok = true;
+  py::list checks;
+};
+
 struct PySolution {
   std::shared_ptr<const Solution> s;
   PyScene scene;     ///< what was solved (a pickled solution is solved again from it)
@@ -220,10 +226,21 @@ struct PySolution {
     if (format == "html") return app::derivation_page(*s, d);
     throw InputError("there is no derivation format '" + format + "'", "ask for 'text', 'latex' or 'html'");
   }
-  bool verify() const {
-    for (auto& c : verify::verify(*s))
-      if (!c.ok()) return false;
-    return true;
+  // every claim of the scene's expect, as batch gives them: a list of {result, what, ok, detail};
+  // the Verdict is true when every one holds
+  py::object verify() const {
+    py::list checks;
+    bool all = true;
+    for (auto& c : verify::verify(*s)) {
+      py::dict d;
+      d["result"] = c.name;
+      d["what"] = c.what;
+      d["ok"] = c.ok();
+      d["detail"] = c.detail;
+      checks.append(d);
+      all = all && c.ok();
+    }
+    return py::cast(Verdict{all, checks});
   }
   // t, q, q̇, T, V at regular times (as `kinergy simulate --samples`), as NumPy arrays
   py::dict simulate(double until, int samples, const py::object& start) const {
@@ -332,11 +349,12 @@ PYBIND11_MODULE(kinergy, m) {
       PyErr_NewExceptionWithDoc("kinergy.SceneError", "A bad scene or request: file, line, column, message, fix.", PyExc_ValueError, nullptr));
   m.attr("SceneError") = error_type;
   py::register_exception_translator([](std::exception_ptr p) {
+    // (a place that is not in a file — a value given in Python, a run's limit — is None)
     auto raise = [](const std::string& what, const std::string& file, int line, int col, const std::string& message, const std::string& fix) {
       py::object e = error_type(what);
-      e.attr("file") = file;
-      e.attr("line") = line;
-      e.attr("column") = col;
+      e.attr("file") = file.empty() ? py::object(py::none()) : py::object(py::str(file));
+      e.attr("line") = line > 0 ? py::object(py::int_(line)) : py::object(py::none());
+      e.attr("column") = col > 0 ? py::object(py::int_(col)) : py::object(py::none());
       e.attr("message") = message;
       e.attr("fix") = fix;
       PyErr_SetObject(error_type.ptr(), e.ptr());
@@ -347,6 +365,10 @@ PYBIND11_MODULE(kinergy, m) {
       raise(e.what(), e.pos().file, e.pos().line, e.pos().col, e.problem(), e.fix());
     } catch (const InputError& e) {
       raise(std::string(e.what()) + " \u2014 " + e.fix(), "", 0, 0, e.what(), e.fix());
+    } catch (const simulate::SimulationError& e) {
+      // a run that cannot be made (until = inf, a step limit, a slip): the module's error, not RuntimeError
+      const std::string at = e.pos().file.empty() ? std::string() : e.pos().str() + ": ";
+      raise(at + e.what() + " \u2014 " + e.fix(), e.pos().file, e.pos().line, e.pos().col, e.what(), e.fix());
     }
   });
 
@@ -441,7 +463,8 @@ PYBIND11_MODULE(kinergy, m) {
                         return solve_scene_def(scene_from(t[0].cast<py::tuple>()), t[1].cast<bool>());
                       }))
       .def("derive", &PySolution::derive, py::arg("format") = "text", "the worked solution: 'text', 'latex' or 'html'")
-      .def("verify", &PySolution::verify, "True when every claim of the scene's expect holds")
+      .def("verify", &PySolution::verify,
+           "every claim of the scene's expect checked: a Verdict, true when each holds, with .checks (result, what, ok, detail)")
       .def("simulate", &PySolution::simulate, py::arg("until"), py::arg("samples") = 1000, py::arg("start") = py::none(),
            "the motion from a state (the first by default) until a time, at regular samples: t, q, q_dot, T, V (NumPy)")
       .def("_repr_latex_", &PySolution::repr_latex)
@@ -487,6 +510,18 @@ PYBIND11_MODULE(kinergy, m) {
         }
       });
 
+  py::class_<Verdict>(m, "Verdict", "The checks of a scene's claims: true when every one holds")
+      .def("__bool__", [](const Verdict& v) { return v.ok; })
+      .def_property_readonly("checks", [](const Verdict& v) { return v.checks; }, "each claim: {result, what, ok, detail}")
+      .def("__repr__", [](const Verdict& v) {
+        std::string out = std::string("<kinergy.Verdict ") + (v.ok ? "holds" : "FAILS") + ":";
+        for (auto c : v.checks) {
+          auto d = c.cast<py::dict>();
+          out += " " + d["result"].cast<std::string>() + " (" + d["what"].cast<std::string>() + ") " + (d["ok"].cast<bool>() ? "ok" : "fails") + ";";
+        }
+        if (!v.checks.empty()) out.pop_back();
+        return out + ">";
+      });
   m.def("load", &load, py::arg("path"), "a scene from a YAML file");
   m.def("loads", &loads, py::arg("text"), py::arg("name") = "<string>", "a scene from YAML text");
 }

@@ -235,3 +235,23 @@ def test_parameters_set_checked_at_once():
         scene.set(zz=1)
     assert "the scene has no parameter 'zz'" in str(e.value)
     assert scene.parameters["l"] == "3 m"    # a refused value leaves the scene as it was
+
+
+def test_verify_gives_its_reasons_and_errors_are_the_modules():
+    """Issue 29, defect 7: verify() says why, as batch does; a run that cannot be made raises the
+    module's error (it was RuntimeError); a place that is in no file is None (it was '' and 0)."""
+    verdict = kinergy.load(ROD).solve().verify()
+    assert verdict and [(c["result"], c["what"], c["ok"]) for c in verdict.checks] == [("omega2", "form", True), ("omega2", "value", True)]
+    assert repr(verdict) == "<kinergy.Verdict holds: omega2 (form) ok; omega2 (value) ok>"
+    wrong = open(ROD).read().replace("value: 3.50 rad/s", "value: 3.6 rad/s")
+    assert wrong != open(ROD).read()
+    verdict = kinergy.loads(wrong).solve().verify()
+    assert not verdict
+    bad = [c for c in verdict.checks if not c["ok"]]
+    assert len(bad) == 1 and bad[0]["what"] == "value" and "3.6" in bad[0]["detail"]
+    with pytest.raises(kinergy.SceneError) as e:
+        kinergy.load(ROD).solve().simulate(until=float("inf"))
+    assert e.value.file is None and e.value.line is None and e.value.column is None
+    with pytest.raises(kinergy.SceneError) as e:
+        kinergy.load(ROD).solve()["omega2"].value(0)
+    assert e.value.file is None and e.value.line is None
