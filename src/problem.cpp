@@ -639,10 +639,7 @@ private:
       if (!energy) continue;
       const auto& bal = *energy;
       if (std::any_of(bal.works.begin(), bal.works.end(), [](const principles::Work& w) { return w.ends_only; })) continue;
-      bool symbolic = false;
-      const ex eq = bal.equation.residual().subs(given);
-      for (auto& p : m.params) symbolic = symbolic || (!p.value && !p.unknown && eq.has(p.sym));
-      if (!symbolic) principles::check_reached(m, a, bal, values);
+      if (!unvalued(bal.equation.residual().subs(given))) principles::check_reached(m, a, bal, values);
     }
   }
 
