@@ -7,7 +7,8 @@
 # SECONDS 0: no time limit. With RUNS, SEED and no time limit the run is the same every time (the
 # test command uses one such short run); it runs with address randomisation off where that is
 # allowed, since GiNaC's forms (and so the coverage) depend on addresses.
-# Builds in build-fuzz/. Exit 0 when no input crashed, leaked, ran out of memory or time.
+# Builds in build-fuzz/. Exit 0 when no input crashed, leaked, ran out of memory or time (a slow
+# input that finished within -timeout is not a finding: a loaded machine gives the same verdict).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds="${1:-60}"
@@ -39,11 +40,8 @@ if [ "$jobs" -gt 1 ]; then
   done_line="^INFO: (fuzzed for [0-9]* iterations|exiting: 0 time)"
 fi
 "${norandom[@]}" ./build-fuzz/tests/fuzz/kinergy_fuzz "$corpus" -dict=tests/fuzz/scene.dict -max_total_time="$seconds" \
-  -runs="$runs" -seed="$seed" -timeout=60 -rss_limit_mb=4096 -max_len=8192 -print_final_stats=1 "${fork[@]}" \
+  -runs="$runs" -seed="$seed" -timeout=60 -report_slow_units=100000 -rss_limit_mb=4096 -max_len=8192 -print_final_stats=1 "${fork[@]}" \
   -artifact_prefix=build-fuzz/findings/ >"$log" 2>&1 || status=$?
 grep -E "^(#[0-9]+ +(DONE|INITED)|Done [0-9]+ runs|INFO: (fuzzed for|exiting)|stat::number_of_executed_units|stat::peak_rss_mb|==[0-9]+==ERROR|SUMMARY|kinergy_fuzz:|.*(crash|leak|timeout|oom)-)" "$log" || true
 [ "$jobs" -gt 1 ] && grep -E "^#[0-9]+:" "$log" | tail -1
-if [ -n "$(ls -A build-fuzz/findings 2>/dev/null)" ] || [ "$status" -ne 0 ] || ! grep -qE "$done_line" "$log"; then
-  echo "fuzz: the run did not finish clean (exit $status; see $log and build-fuzz/findings)" >&2
-  exit 1
-fi
+bash tests/fuzz/verdict.sh build-fuzz/findings "$log" "$status" "$done_line"
