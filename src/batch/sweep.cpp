@@ -1,4 +1,5 @@
 // One scene solved over a grid of parameter values: CSV, JSON and a gnuplot plot.
+#include "kinergy/common/interrupt.hpp"
 #include "kinergy/app/app.hpp"
 #include "kinergy/batch/sweep.hpp"
 
@@ -77,6 +78,7 @@ Sweep sweep(const scene::SceneDef& def, const std::vector<Range>& ranges) {
   std::size_t total = 1;
   for (auto& r : ranges) total *= static_cast<std::size_t>(r.count);
   for (std::size_t k = 0; k < total; ++k) {
+    poll_interrupt();
     Sweep::Row row;
     scene::SceneDef at = def;
     // the grid's k-th point, the last range varying fastest

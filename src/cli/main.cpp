@@ -400,7 +400,7 @@ struct SimulateCommand {
     simulate->add_option("--plot", plot_out, "draw coordinates and energy against time into FILE.svg or FILE.png (gnuplot)")
         ->check(writable_file());
     simulate->add_option("--samples", samples,
-                         "for --csv and --plot: this many samples at regular times over the run, from the integrator's dense output, "
+                         "for --csv and --plot: samples at N+1 regular times, from the start to --until every (until - start)/N s, from the integrator's dense output, "
                          "with every event exactly (default 1000; 0: the accepted steps themselves)")
         ->check(CLI::Range(0, 10000000));
     simulate->add_option("--dt", sample_dt, "for --csv and --plot: a sample every DT seconds instead of --samples")

@@ -1,3 +1,4 @@
+#include "kinergy/common/interrupt.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
 #include <cmath>
@@ -217,6 +218,7 @@ std::optional<numeric> integrate(const ex& f_in, const symbol& s, const numeric&
       h /= 2;
       // the new nodes are the odd multiples of h
       for (numeric t = -T + h; t < T; t += 2 * h) {
+        poll_interrupt();
         auto v = node(t);
         if (!v) throw std::domain_error("no value");
         sum += *v;

@@ -1,3 +1,4 @@
+#include "kinergy/common/interrupt.hpp"
 #include "kinergy/numeric/evaluator.hpp"
 
 #include "kinergy/expr/canonical.hpp"
@@ -310,6 +311,7 @@ std::optional<Precise> Evaluator::settled(int n) const {
   if (prev->is_rational()) return Precise{*prev, 0, true, false, 0, false, {}, {}};
   int shrinking = 0;
   while (p < limit) {
+    poll_interrupt();
     long q = std::min(limit, p + std::max(20L, p / 2));
     auto cur = covering(q);
     if (!cur) return std::nullopt;

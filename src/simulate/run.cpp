@@ -8,6 +8,7 @@
 
 #include <boost/numeric/odeint.hpp>
 
+#include "kinergy/common/interrupt.hpp"
 #include "impl.hpp"
 
 namespace kinergy::simulate {
@@ -294,6 +295,7 @@ private:
     state_type y;  // the trial step (a buffer reused: no allocation per step)
     std::size_t since_progress = 0;
     while (t_ < stop_.until) {
+      poll_interrupt();  // Ctrl-C from Python (common/interrupt.hpp)
       if (run_.steps >= p_.o.max_steps)
         throw SimulationError("the run took more than " + std::to_string(p_.o.max_steps) + " steps and stopped at t = " + num(t_) + " s",
                               "loosen --tol, shorten --until, or raise the step limit");

@@ -1,3 +1,4 @@
+#include "kinergy/common/interrupt.hpp"
 #include "kinergy/solve/solver.hpp"
 
 #include <algorithm>
@@ -82,6 +83,7 @@ public:
     work_.push_back(s);
     std::optional<SolveError> last;
     while (!work_.empty()) {
+      poll_interrupt();
       State st = std::move(work_.back());
       work_.pop_back();
       try {
@@ -183,6 +185,7 @@ private:
 
   void step(State st) {
     for (;;) {
+      poll_interrupt();
       prune(st);
       if (st.eqs.empty()) {
         // a sign taken for granted that the solution breaks: not a solution (the other case is)

@@ -59,16 +59,18 @@ got=$(bash -c "source '$completion'; COMP_WORDS=('$prefix/bin/kinergy' simulate 
 [ "$got" = "--animate" ] || fail "completing 'kinergy simulate --ani' gave '$got'"
 got=$(bash -c "source '$completion'; COMP_WORDS=('$prefix/bin/kinergy' simulate x.yaml --method s); COMP_CWORD=4; _kinergy; echo \"\${COMPREPLY[*]}\"")
 [ "$got" = "symplectic" ] || fail "completing '--method s' gave '$got'"
-# the Python module, where it was built: importable from the prefix
-module=$(find "$prefix" -name 'kinergy.cpython-*.so' | head -1)
+# the Python package, where it was built: importable from the prefix, its worked problems and its
+# ball arithmetic module installed inside it
+module=$(find "$prefix" -name '_kinergy.cpython-*.so' | head -1)
 if [ -e "$build/python" ]; then
-  [ -n "$module" ] || fail "the Python module is not installed"
-  got=$(PYTHONPATH="$(dirname "$module")" /usr/bin/python3 -c "import kinergy; print(float(kinergy.load('$src/derivations/energy/sliding_rod.yaml').solve()['omega2']))")
-  grep -E '^3\.50' <<<"$got" >/dev/null || fail "the installed Python module printed: $got"
-  # its proven digits, from the module installed beside it
-  got=$(LD_DEBUG=files PYTHONPATH="$(dirname "$module")" /usr/bin/python3 -c "import kinergy; print(kinergy.load('$src/derivations/energy/sliding_rod.yaml').solve()['omega2'].ball(20))" 2>&1)
-  grep -q "'proven': True" <<<"$got" || fail "the installed Python module's ball(20): $got"
-  grep -q "file=$arb " <<<"$got" || grep -q "file=$(cd "$(dirname "$arb")" && pwd -P)/kinergy_arb.so " <<<"$got" ||
-    fail "the installed Python module did not load the module installed beside it: $(grep -o 'file=[^ ]*kinergy_arb.so' <<<"$got")"
+  [ -n "$module" ] || fail "the Python package is not installed"
+  pkgpath="$(dirname "$(dirname "$module")")"
+  got=$(cd / && PYTHONPATH="$pkgpath" /usr/bin/python3 -c "import kinergy; print(float(kinergy.example('energy/sliding_rod').solve()['omega2']))")
+  grep -E '^3\.50' <<<"$got" >/dev/null || fail "the installed Python package printed: $got"
+  # its proven digits, from the module installed beside its core
+  got=$(cd / && LD_DEBUG=files PYTHONPATH="$pkgpath" /usr/bin/python3 -c "import kinergy; print(kinergy.example('energy/sliding_rod').solve()['omega2'].ball(20))" 2>&1)
+  grep -q "'proven': True" <<<"$got" || fail "the installed Python package's ball(20): $got"
+  grep -q "file=$(dirname "$module")/kinergy_arb.so " <<<"$got" ||
+    fail "the installed Python package did not load the module installed beside its core: $(grep -o 'file=[^ ]*kinergy_arb.so' <<<"$got")"
 fi
-echo "test_install: installed, found by CMake and pkg-config, man page, completion and the Python module work"
+echo "test_install: installed, found by CMake and pkg-config, man page, completion and the Python package work"

@@ -1,0 +1,25 @@
+#include "kinergy/common/interrupt.hpp"
+
+#include <atomic>
+#include <chrono>
+
+namespace kinergy {
+
+namespace {
+std::atomic<InterruptHook> g_hook{nullptr};
+}
+
+void set_interrupt_hook(InterruptHook hook) { g_hook.store(hook); }
+
+void poll_interrupt() {
+  const InterruptHook hook = g_hook.load(std::memory_order_relaxed);
+  if (!hook) return;
+  using clock = std::chrono::steady_clock;
+  thread_local clock::time_point last = clock::now();
+  const clock::time_point now = clock::now();
+  if (now - last < std::chrono::milliseconds(50)) return;
+  last = now;
+  hook();
+}
+
+}  // namespace kinergy
