@@ -698,7 +698,7 @@ PYBIND11_MODULE(_kinergy, m) {
         // for Jupyter, which shows text/html before text/latex: the results typeset as MathML (the
         // browser's own, no script), one per line, under the scene's title
         return in_core([&] {
-          std::string o = "<div class=\"kinergy-solution\"><p><b>" + xml_escape(s.s->scene.title) + "</b></p>";
+          std::string o = "<div class=\"kinergy-solution\" style=\"font-size:120%\"><p><b>" + xml_escape(s.s->scene.title) + "</b></p>";
           for (auto& r : s.results()) o += emit::mathml(r.tex(), true);
           return o + "</div>";
         });
@@ -745,6 +745,18 @@ PYBIND11_MODULE(_kinergy, m) {
              return out + ">";
            })
       .def(py::pickle([](const PyScene& s) { return scene_state(s); }, [](const py::tuple& t) { return scene_from(t); }))
+      .def(
+          "_repr_html_",
+          [](const PyScene& s) -> py::object {
+            // the drawing inline in HTML, which a notebook shows first (an exported notebook keeps
+            // it: nbconvert strips an image/svg+xml output's elements, not an HTML output's)
+            try {
+              return py::str("<div class=\"kinergy-scene\">" + in_core([&] { return s.draw(""); }) + "</div>");
+            } catch (const std::exception&) {
+              return py::none();
+            }
+          },
+          sig("_repr_html_(self)", "for Jupyter: the scene drawn at its first state, as SVG inside HTML (None when it cannot be drawn)"))
       .def("_repr_svg_", [](const PyScene& s) -> py::object {
         try {
           return py::str(in_core([&] { return s.draw(""); }));

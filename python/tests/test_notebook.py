@@ -42,10 +42,11 @@ def test_the_example_notebook_runs_and_shows_mathematics(tmp_path, monkeypatch):
         kinds.update(o.get("data", {}).keys())
         assert o.get("output_type") != "error"
     assert "image/svg+xml" in kinds  # the scene drawn
+    assert "<svg" in nb.cells[1].outputs[0]["data"]["text/html"]  # and inline in HTML
     assert "text/latex" in kinds     # the solution's results
     text = "".join(o.get("text", "") for o in outputs if o.get("output_type") == "stream")
     assert "l = 2.0 m: omega2 = 2.712471 rad/s" in text
-    assert "301 regular rows and 21 impacts" in text and "the first at 0.494619 s" in text
+    assert "301 regular rows and 21 impacts, the first at 0.494619 s" in text
     # the solution's HTML (what Jupyter shows): omega2 = sqrt(3 g sin(theta2) / l) = 3.50179 rad/s as MathML
     solution_html = nb.cells[2].outputs[0]["data"]["text/html"]
     math = ET.fromstring(re.search(r"<math.*</math>", solution_html, re.S).group(0))
@@ -61,4 +62,6 @@ def test_the_notebook_exported_to_html_carries_the_mathematics(tmp_path, monkeyp
     page, _ = nbconvert.HTMLExporter().from_notebook_node(nb)
     # typeset by the browser itself: MathML elements in the page, no script needed for them
     assert "<math" in page and "<msqrt>" in page and "<mfrac>" in page
+    # the scene's drawing with its elements (nbconvert empties an image/svg+xml output's <svg>)
+    assert 'data-name="rod.G"' in page
     (tmp_path / "kinergy.html").write_text(page)

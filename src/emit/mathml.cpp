@@ -24,6 +24,7 @@ const std::map<std::string, std::string> kOperators{
     {"lbrace", "{"}, {"rbrace", "}"}, {"{", "{"}, {"}", "}"}, {"%", "%"}, {"int", "∫"}, {"sum", "∑"}, {"partial", "∂"}};
 const std::map<std::string, std::string> kSpaces{{",", "0.1667em"}, {":", "0.2222em"}, {";", "0.2778em"}, {"!", "-0.1667em"},
                                                  {"quad", "1em"},   {"qquad", "2em"},   {" ", "0.25em"}};
+const std::string kThin = "<mspace width=\"0.1667em\"/>";
 bool is_function(const std::string& c) {
   static const char* names[] = {"sin", "cos", "tan", "cot", "sec", "csc", "arcsin", "arccos", "arctan", "sinh", "cosh", "tanh",
                                 "exp", "ln", "log", "min", "max", "sgn"};
@@ -136,7 +137,8 @@ private:
       if (!sub.empty() && !sup.empty()) a = "<msubsup>" + a + sub + sup + "</msubsup>";
       else if (!sub.empty()) a = "<msub>" + a + sub + "</msub>";
       else if (!sup.empty()) a = "<msup>" + a + sup + "</msup>";
-      out += a + (applied ? "<mo>&#x2061;</mo>" : "");
+      // a function's name set off by thin spaces, as TeX's \sin is (3 g sin θ₂)
+      out += applied ? kThin + a + "<mo>&#x2061;</mo>" + kThin : a;
     }
   }
 
