@@ -499,7 +499,11 @@ PYBIND11_MODULE(_kinergy, m) {
               "value lies within radius of midpoint; None when not proven) and evaluation"))
       .def("__float__", [](const PyResult& r) { return in_core([&] { return r.to_float(); }); }, sig("__float__(self, /)", "its value in its unit"))
       .def_property_readonly(
-          "si", [](const PyResult& r) -> py::object { return r.r().si ? py::object(py::float_(r.r().si->to_double())) : py::object(py::none()); },
+          "si",
+          [](const PyResult& r) -> py::object {
+            if (!r.r().si) return py::none();
+            return py::float_(in_core([&] { return r.r().si->to_double(); }));
+          },
           "its value in SI units, as its closed form gives it (None when a parameter has no value)")
       .def(
           "sympy",
@@ -653,11 +657,12 @@ PYBIND11_MODULE(_kinergy, m) {
             // one row per result: name, value (a float in its unit), unit, closed_form (None where a
             // numeric root was needed), si
             py::list name, value, unit, closed, si;
-            std::vector<double> values;
+            std::vector<double> values, sis;
             std::vector<std::string> forms;
             in_core([&] {
               for (auto& r : s.results()) {
                 values.push_back(r.r().si ? r.to_float() : std::nan(""));
+                sis.push_back(r.r().si ? r.r().si->to_double() : std::nan(""));
                 forms.push_back(r.r().closed_form ? emit::plain(r.r().closed) : std::string());
               }
             });
@@ -668,7 +673,7 @@ PYBIND11_MODULE(_kinergy, m) {
               value.append(values[i]);
               unit.append(r.unit);
               closed.append(r.closed_form ? py::object(py::str(forms[i])) : py::object(py::none()));
-              si.append(r.si ? py::object(py::float_(r.si->to_double())) : py::object(py::none()));
+              si.append(r.si ? py::object(py::float_(sis[i])) : py::object(py::none()));
             }
             py::dict cols;
             cols["value"] = value;

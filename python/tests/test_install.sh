@@ -24,7 +24,7 @@ case "$where" in
   *) echo "FAIL: kinergy was imported from $where, not from the venv" >&2; exit 1 ;;
 esac
 (cd "$t" && "$t/venv/bin/python" -m pip show --files kinergy | grep -E "^(Name|Version|Location):|py.typed|__init__.pyi|kinergy_arb.so|sliding_rod.yaml")
-(cd "$t" && KINERGY_SOURCE_DIR="$src" "$t/venv/bin/python" -m pytest -q -p no:cacheprovider "$src/python/tests")
+(cd "$t" && KINERGY_SOURCE_DIR="$src" KINERGY_CLI="$build/kinergy" "$t/venv/bin/python" -m pytest -q -p no:cacheprovider -rs "$src/python/tests")
 
 # 2. a bare venv (nothing but pip) and pip's build isolation, offline
 "$py" -m venv "$t/bare"

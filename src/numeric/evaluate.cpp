@@ -1,3 +1,4 @@
+#include "kinergy/numeric/digits.hpp"
 #include "kinergy/common/interrupt.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
@@ -32,20 +33,18 @@ static long covering_digits(const ex& v, long digits) {
 }
 
 std::optional<GiNaC::numeric> evaluate(const ex& e, const exmap& values, int digits) {
-  long saved = Digits;
-  Digits = digits;
+  const DigitsScope precision(digits);
   std::optional<GiNaC::numeric> out;
   try {
     ex s = e.subs(values);
     long need = covering_digits(s, digits);
     if (need == 0) throw std::domain_error("an angle too large for the working precision");
-    Digits = need;
+    precision.set(need);
     ex v = s.evalf();
     if (is_a<GiNaC::numeric>(v) && ex_to<GiNaC::numeric>(v).is_real()) out = ex_to<GiNaC::numeric>(v);
   } catch (const std::exception&) {
     out.reset();  // division by zero, domain errors: no number
   }
-  Digits = saved;
   return out;
 }
 
@@ -191,8 +190,7 @@ std::optional<numeric> integrate(const ex& f_in, const symbol& s, const numeric&
     if (!v) return std::nullopt;
     return *v * w;
   };
-  const long saved = Digits;
-  Digits = work;
+  const DigitsScope precision(work);
   std::optional<numeric> result;
   try {
     // the nodes reach |t| = T, where the weights fall below 10^-work
@@ -233,7 +231,6 @@ std::optional<numeric> integrate(const ex& f_in, const symbol& s, const numeric&
   } catch (const std::exception&) {
     result = std::nullopt;
   }
-  Digits = saved;
   return result;
 }
 

@@ -1,3 +1,4 @@
+#include "kinergy/numeric/digits.hpp"
 #include "kinergy/common/interrupt.hpp"
 #include "kinergy/solve/solver.hpp"
 
@@ -501,55 +502,56 @@ private:
     const int scan_digits = quadrature ? 6 : 20;  // the signs only: a quadrature at 6 digits is cheap
     std::vector<ex> roots;
     std::vector<NumericRoot> found;  // each root's bracket, for proving its digits later
-    long saved = Digits;
-    Digits = kWork + 10;
-    auto keep = [&](const numeric& x, const numeric& lo, const numeric& hi) {
-      // a root only where the residual vanishes against the size of its terms (not a pole)
-      exmap at = p_.env;
-      at[u] = x;
-      bool known = false;
-      if (numerically_zero(r, at, known) || !known) {
-        roots.push_back(x);
-        found.push_back({r, lo, hi});
+    {
+      const numerics::DigitsScope precision(kWork + 10);  // the scan's working precision, to its end
+      auto keep = [&](const numeric& x, const numeric& lo, const numeric& hi) {
+        // a root only where the residual vanishes against the size of its terms (not a pole)
+        exmap at = p_.env;
+        at[u] = x;
+        bool known = false;
+        if (numerically_zero(r, at, known) || !known) {
+          roots.push_back(x);
+          found.push_back({r, lo, hi});
+        }
+      };
+      auto grid = [&](int i) { return numeric(ref) - numeric(span) + numeric(2 * span) * numeric(i, n); };
+      // the sign changes on the grid (and its exact zeros), then the nine nearest the reference
+      // refined: a residual with many roots (a pendulum against pin friction has two a turn) keeps
+      // the ones about the motion, not the first nine from the grid's left end
+      struct Bracket {
+        numeric x0, x1;
+        bool exact;
+      };
+      std::vector<Bracket> brackets;
+      numeric x0 = grid(0);
+      auto f0 = residual_at(r, u, x0, scan_digits);
+      if (f0 && f0->is_zero()) brackets.push_back({x0, x0, true});
+      for (int i = 1; i <= n; ++i) {
+        poll_interrupt();  // (2000 residuals: Ctrl-C from Python stops the scan here)
+        numeric x1 = grid(i);
+        auto f1 = residual_at(r, u, x1, scan_digits);
+        if (f1 && f1->is_zero()) brackets.push_back({x1, x1, true});  // exactly on the grid
+        else if (f0 && f1 && !f0->is_zero() && (f0->is_negative() != f1->is_negative())) brackets.push_back({x0, x1, false});
+        x0 = x1;
+        f0 = f1;
       }
-    };
-    auto grid = [&](int i) { return numeric(ref) - numeric(span) + numeric(2 * span) * numeric(i, n); };
-    // the sign changes on the grid (and its exact zeros), then the nine nearest the reference
-    // refined: a residual with many roots (a pendulum against pin friction has two a turn) keeps
-    // the ones about the motion, not the first nine from the grid's left end
-    struct Bracket {
-      numeric x0, x1;
-      bool exact;
-    };
-    std::vector<Bracket> brackets;
-    numeric x0 = grid(0);
-    auto f0 = residual_at(r, u, x0, scan_digits);
-    if (f0 && f0->is_zero()) brackets.push_back({x0, x0, true});
-    for (int i = 1; i <= n; ++i) {
-      numeric x1 = grid(i);
-      auto f1 = residual_at(r, u, x1, scan_digits);
-      if (f1 && f1->is_zero()) brackets.push_back({x1, x1, true});  // exactly on the grid
-      else if (f0 && f1 && !f0->is_zero() && (f0->is_negative() != f1->is_negative())) brackets.push_back({x0, x1, false});
-      x0 = x1;
-      f0 = f1;
+      const numeric centre(ref);
+      std::stable_sort(brackets.begin(), brackets.end(), [&](const Bracket& p, const Bracket& q) {
+        return abs((p.x0 + p.x1) / 2 - centre) < abs((q.x0 + q.x1) / 2 - centre);
+      });
+      for (auto& br : brackets) {
+        if (roots.size() > 8) break;
+        if (br.exact) {
+          keep(br.x0, br.x0, br.x0);
+          continue;
+        }
+        auto a = residual_at(r, u, br.x0, kWork + 10), b = residual_at(r, u, br.x1, kWork + 10);
+        if (a && b) {
+          auto x = refine(r, u, br.x0, br.x1, *a, *b);
+          if (x) keep(*x, br.x0, br.x1);
+        }
+      }
     }
-    const numeric centre(ref);
-    std::stable_sort(brackets.begin(), brackets.end(), [&](const Bracket& p, const Bracket& q) {
-      return abs((p.x0 + p.x1) / 2 - centre) < abs((q.x0 + q.x1) / 2 - centre);
-    });
-    for (auto& br : brackets) {
-      if (roots.size() > 8) break;
-      if (br.exact) {
-        keep(br.x0, br.x0, br.x0);
-        continue;
-      }
-      auto a = residual_at(r, u, br.x0, kWork + 10), b = residual_at(r, u, br.x1, kWork + 10);
-      if (a && b) {
-        auto x = refine(r, u, br.x0, br.x1, *a, *b);
-        if (x) keep(*x, br.x0, br.x1);
-      }
-    }
-    Digits = saved;
     if (roots.empty())
       throw SolveError("the " + q.label + " has no closed form for " + model::text(u) + " and no root was found near " +
                            numerics::format(numeric(ref), 6),
