@@ -165,27 +165,47 @@ def prepare_metadata_for_build_wheel(metadata_directory, config_settings=None):
     return info
 
 
-def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
-    package, core = _compile(config_settings)
+def _write_wheel(wheel_directory, files):
+    """A wheel of (path in the wheel, bytes), its dist-info and RECORD added: its file name."""
     info, meta = _dist_info_files()
     name = "%s-%s-%s.whl" % (NAME, _version(), _tag())
-    path = os.path.join(wheel_directory, name)
     record = []
-    with zipfile.ZipFile(path, "w", compression=zipfile.ZIP_DEFLATED) as z:
-        def add(arcname, data, mode=0o644):
+    with zipfile.ZipFile(os.path.join(wheel_directory, name), "w", compression=zipfile.ZIP_DEFLATED) as z:
+        for arcname, data in list(files) + meta:
             zi = zipfile.ZipInfo(arcname, date_time=(1980, 1, 1, 0, 0, 0))  # the same bytes every build
-            zi.external_attr = (0o100000 | mode) << 16
+            zi.external_attr = (0o100000 | (0o755 if arcname.endswith(".so") else 0o644)) << 16
             zi.compress_type = zipfile.ZIP_DEFLATED
             z.writestr(zi, data)
             record.append(_record_line(arcname, data))
+        record.append(info + "/RECORD,,")
+        z.writestr(zipfile.ZipInfo(info + "/RECORD", date_time=(1980, 1, 1, 0, 0, 0)), ("\n".join(record) + "\n").encode())
+    return name
+
+
+def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
+    package, core = _compile(config_settings)
+
+    def contents():
         for arcname, disk in _files(package, core):
             with open(disk, "rb") as f:
-                add(arcname, f.read(), 0o755 if disk.endswith(".so") else 0o644)
-        for arcname, data in meta:
-            add(arcname, data)
-        record.append(info + "/RECORD,,")
-        add(info + "/RECORD", ("\n".join(record) + "\n").encode())
-    return name
+                yield arcname, f.read()
+    return _write_wheel(wheel_directory, contents())
+
+
+# PEP 660: `pip install -e .` puts the build directory's package on the path (a .pth file): its
+# Python files are links to python/kinergy/ (an edit shows at once), its core is what CMake built
+# last (after a C++ change: cmake --build on that directory, or pip install -e . again)
+def get_requires_for_build_editable(config_settings=None):
+    return []
+
+
+def prepare_metadata_for_build_editable(metadata_directory, config_settings=None):
+    return prepare_metadata_for_build_wheel(metadata_directory, config_settings)
+
+
+def build_editable(wheel_directory, config_settings=None, metadata_directory=None):
+    package, _ = _compile(config_settings)
+    return _write_wheel(wheel_directory, [("kinergy_editable.pth", (os.path.dirname(package) + "\n").encode())])
 
 
 def build_sdist(sdist_directory, config_settings=None):

@@ -2,7 +2,8 @@
 # The Python package as a user installs it (issue 29): into a fresh virtual environment with
 # `pip install --no-build-isolation --no-index .` (offline: kinergy's build backend needs nothing
 # from a package index), then the whole pytest suite against that install; and plain `pip install .`
-# (pip's build isolation, offline) into a bare venv, which imports it and solves a bundled scene.
+# (pip's build isolation, offline) into a bare venv, which imports it and solves a bundled scene;
+# and pip install -e . (PEP 660), which imports it from the build directory.
 #   bash python/tests/test_install.sh PYTHON BUILD_DIR
 # The wheel is built from BUILD_DIR (configured for PYTHON: nothing is compiled again).
 set -euo pipefail
@@ -37,3 +38,12 @@ assert r.closed_form == 'sqrt(3*g*sin(theta2)/l)', r.closed_form
 assert abs(float(r) - (3 * 9.81 * 0.5 / 1.2) ** 0.5) < 1e-12
 print('a bare venv, pip install . offline:', r)
 ")
+
+# 3. an editable install (PEP 660): the build directory's package on the path
+"$py" -m venv "$t/edit"
+"$t/edit/bin/python" -m pip install --quiet --no-index -e "$src"
+where=$(cd "$t" && "$t/edit/bin/python" -c "import kinergy; print(kinergy.__file__); kinergy.example('energy/sliding_rod').solve()")
+case "$where" in
+  "$build/python/kinergy/"*) echo "editable: $where" ;;
+  *) echo "FAIL: the editable install imported kinergy from $where, not from $build/python" >&2; exit 1 ;;
+esac
