@@ -16,8 +16,9 @@ runs="${2:--1}"
 seed="${3:-0}"
 jobs="${4:-1}"
 command -v clang++ >/dev/null || { echo "fuzz: clang++ is not installed (Debian: clang, libclang-rt-14-dev)" >&2; exit 2; }
-# -gline-tables-only: a finding's stack names files and lines, and the build (two of the test
-# command's minutes) takes less than with full debug information; the code is the same either way
+# -gline-tables-only: a finding's stack names files and lines, and the build takes less time than
+# with full debug information (the test command builds this directory from nothing); the code is
+# the same either way
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only -DNDEBUG" \
   -DKINERGY_FUZZ=ON -DBUILD_TESTING=OFF >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target kinergy_fuzz >/dev/null
