@@ -53,6 +53,27 @@ TEST_CASE("numeric integrals to 40 digits against mpmath", "[numeric][integrate]
   CHECK(!kinergy::numerics::integrate(d * x, x, 0, 1, {}, 20));
 }
 
+TEST_CASE("a few digits of an integral are taken in doubles, to those digits, against mpmath", "[numeric][integrate]") {
+  // (digits <= 10: the signs a numeric root's scan asks at 100 points; the integrand compiled once)
+  symbol x("x");
+  for (int digits : {6, 10}) {
+    INFO(digits);
+    auto I = kinergy::numerics::integrate(exp(-pow(x, 2)), x, 0, 1, {}, digits);
+    REQUIRE(I);
+    CHECK(agree(*I, "0.74682413281242702539946743613185300535449968681261", 12));
+    I = kinergy::numerics::integrate(sin(x) / x, x, 0, dec("3.14159265358979323846264338327950288419716939937510"), {}, digits);
+    REQUIRE(I);
+    CHECK(agree(*I, "1.8519370519824661703610533701579913633458097289812", 12));
+    I = kinergy::numerics::integrate(exp(-pow(x, 2)), x, 1, 0, {}, digits);
+    REQUIRE(I);
+    CHECK(agree(-*I, "0.74682413281242702539946743613185300535449968681261", 12));
+    // no real value inside, a symbol without a value: nothing, as at any precision
+    CHECK(!kinergy::numerics::integrate(log(x), x, dec("-1"), 1, {}, digits));
+    symbol d("d");
+    CHECK(!kinergy::numerics::integrate(d * x, x, 0, 1, {}, digits));
+  }
+}
+
 TEST_CASE("a work with no closed form is taken numerically, or refused naming what is missing", "[numeric][integrate][work]") {
   auto text = kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/wheel_cam_couple_numeric.yaml");
   auto s = kinergy::solve_scene(kinergy::scene::load_string(text, "cam.yaml"));
