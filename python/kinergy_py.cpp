@@ -751,24 +751,25 @@ PYBIND11_MODULE(_kinergy, m) {
            })
       .def(py::pickle([](const PyScene& s) { return scene_state(s); }, [](const py::tuple& t) { return scene_from(t); }))
       .def(
-          "_repr_html_",
-          [](const PyScene& s) -> py::object {
-            // the drawing inline in HTML, which a notebook shows first (an exported notebook keeps
-            // it: nbconvert strips an image/svg+xml output's elements, not an HTML output's)
+          "_repr_mimebundle_",
+          [](const PyScene& s, const py::object&, const py::object&) -> py::object {
+            // for Jupyter: the scene drawn once (drawing a scene with analyses solves it), as SVG
+            // and as that SVG inline in HTML, which a notebook shows first (an exported notebook
+            // keeps it: nbconvert strips an image/svg+xml output's elements, not an HTML output's)
+            std::string svg;
             try {
-              return py::str("<div class=\"kinergy-scene\">" + in_core([&] { return s.draw(""); }) + "</div>");
+              svg = in_core([&] { return s.draw(""); });
             } catch (const std::exception&) {
-              return py::none();
+              return py::none();  // (a scene that cannot be drawn shows as its repr)
             }
+            py::dict out;
+            out["image/svg+xml"] = svg;
+            out["text/html"] = "<div class=\"kinergy-scene\">" + svg + "</div>";
+            return out;
           },
-          sig("_repr_html_(self)", "for Jupyter: the scene drawn at its first state, as SVG inside HTML (None when it cannot be drawn)"))
-      .def("_repr_svg_", [](const PyScene& s) -> py::object {
-        try {
-          return py::str(in_core([&] { return s.draw(""); }));
-        } catch (const std::exception&) {
-          return py::none();
-        }
-      }, sig("_repr_svg_(self)", "for Jupyter: the scene drawn at its first state (None when it cannot be drawn)"));
+          py::arg("include") = py::none(), py::arg("exclude") = py::none(),
+          sig("_repr_mimebundle_(self, include=None, exclude=None)",
+              "for Jupyter: the scene drawn at its first state, as SVG and as SVG inside HTML (None when it cannot be drawn)"));
 
   py::class_<Verdict>(m, "Verdict", "The checks of a scene's claims: true when every one holds")
       .def("__bool__", [](const Verdict& v) { return v.ok; }, sig("__bool__(self, /)", "whether every claim holds"))

@@ -106,7 +106,8 @@ def test_derivation_drawing_and_notebook_views():
     svg = scene.draw()
     assert svg.startswith("<svg") and 'data-name="rod.G"' in svg
     assert scene.draw(state="2") != svg
-    assert scene._repr_svg_().startswith("<svg")
+    bundle = scene._repr_mimebundle_()
+    assert bundle["image/svg+xml"].startswith("<svg") and bundle["text/html"].startswith('<div class="kinergy-scene"><svg')
     assert "\\begin{aligned}" in solution._repr_latex_()
     assert "<math" in solution._repr_html_()
     with pytest.raises(ValueError):
