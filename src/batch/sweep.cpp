@@ -1,5 +1,4 @@
 // One scene solved over a grid of parameter values: CSV, JSON and a gnuplot plot.
-#include "kinergy/common/interrupt.hpp"
 #include "kinergy/app/app.hpp"
 #include "kinergy/batch/sweep.hpp"
 
@@ -14,6 +13,7 @@
 #include <sstream>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/common/interrupt.hpp"
 #include "kinergy/common/markup.hpp"
 #include "kinergy/common/process.hpp"
 #include "kinergy/numeric/evaluate.hpp"

@@ -1,7 +1,4 @@
-#include "kinergy/numeric/digits.hpp"
-#include "kinergy/common/interrupt.hpp"
 #include "kinergy/numeric/evaluate.hpp"
-#include "kinergy/numeric/tape.hpp"
 
 #include <cmath>
 #include <map>
@@ -9,6 +6,10 @@
 #include <sstream>
 
 #include <cln/cln.h>
+
+#include "kinergy/common/interrupt.hpp"
+#include "kinergy/numeric/digits.hpp"
+#include "kinergy/numeric/tape.hpp"
 
 namespace kinergy::numerics {
 

@@ -1,4 +1,3 @@
-#include "kinergy/common/interrupt.hpp"
 #include "kinergy/numeric/evaluator.hpp"
 
 #include "kinergy/expr/canonical.hpp"
@@ -12,6 +11,7 @@
 
 #include <cln/cln.h>
 
+#include "kinergy/common/interrupt.hpp"
 #include "kinergy/numeric/ball.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/stable.hpp"

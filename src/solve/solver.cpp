@@ -1,5 +1,3 @@
-#include "kinergy/numeric/digits.hpp"
-#include "kinergy/common/interrupt.hpp"
 #include "kinergy/solve/solver.hpp"
 
 #include <algorithm>
@@ -8,7 +6,9 @@
 #include <sstream>
 #include <tuple>
 
+#include "kinergy/common/interrupt.hpp"
 #include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/digits.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/roots.hpp"
 

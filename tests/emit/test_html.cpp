@@ -28,7 +28,7 @@ TEST_CASE("derive --html without KaTeX says which Debian package has it", "[emit
 }
 
 TEST_CASE("every derivation's page in headless Chromium: the mathematics typeset, the figures, the animations moving",
-          "[emit][html][browser]") {
+          "[emit][html][browser][slow]") {
   const std::string chromium = kt::chromium();
   if (chromium.empty()) {
     WARN("chromium is not installed: the pages are not opened (bash .ci/setup --deps installs it)");

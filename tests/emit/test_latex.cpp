@@ -113,7 +113,7 @@ TEST_CASE("the text derivation of the sliding rod", "[emit][derive]") {
   CHECK(x.find("\\end{document}") != std::string::npos);
 }
 
-TEST_CASE("every derivation compiles with pdflatex, nothing running off the page", "[emit][pdflatex]") {
+TEST_CASE("every derivation compiles with pdflatex, nothing running off the page", "[emit][pdflatex][slow]") {
   if (!kinergy::emit::have_pdflatex()) {
     WARN("pdflatex is not installed: the LaTeX of the derivations is not compiled (bash .ci/setup --deps installs it)");
     return;

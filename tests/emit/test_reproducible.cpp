@@ -39,7 +39,7 @@ TEST_CASE("address randomisation is on for the processes the tests start", "[rep
 }
 
 TEST_CASE("solve --json, derive, derive --latex and simulate --equations of every derivation: the same bytes over 5 runs",
-          "[reproducible][approval]") {
+          "[reproducible][approval][slow]") {
   auto files = kt::relative_scene_files("derivations");
   REQUIRE(files.size() >= 12);
   for (auto& f : files) {
