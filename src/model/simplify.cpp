@@ -1,8 +1,7 @@
 #include "kinergy/model/simplify.hpp"
 
-#include <map>
-
 #include <algorithm>
+#include <map>
 #include <optional>
 #include <sstream>
 

@@ -52,14 +52,13 @@ std::optional<GiNaC::numeric> evaluate(const ex& e, const exmap& values, int dig
 }
 
 bool beyond_precision(const ex& e, const exmap& values, int digits) {
-  long saved = Digits;
+  const DigitsScope precision(Digits);  // (covering_digits sets it; restored as it was)
   bool beyond = false;
   try {
     beyond = covering_digits(e.subs(values), digits) == 0;
   } catch (const std::exception&) {
     beyond = false;  // not a number at all: some other reason
   }
-  Digits = saved;
   return beyond;
 }
 
@@ -94,10 +93,11 @@ Decimal decompose(const GiNaC::numeric& v, int n) {
     return d;
   }
   // a = 0.d1…dn × 10^e:  r = round(a / 10^(e − n)) must have exactly n digits
-  long saved = Digits;
-  Digits = 30;
-  GiNaC::numeric l = GiNaC::log(GiNaC::ex_to<GiNaC::numeric>(GiNaC::numeric(a).evalf())) / GiNaC::log(GiNaC::ex_to<GiNaC::numeric>(GiNaC::numeric(10).evalf()));
-  Digits = saved;
+  GiNaC::numeric l;
+  {
+    const DigitsScope precision(30);
+    l = GiNaC::log(GiNaC::ex_to<GiNaC::numeric>(GiNaC::numeric(a).evalf())) / GiNaC::log(GiNaC::ex_to<GiNaC::numeric>(GiNaC::numeric(10).evalf()));
+  }
   long e = static_cast<long>(std::floor(l.to_double())) + 1;
   // (cln::expt_pos needs a positive exponent: 10^0 would never return)
   const cln::cl_I lo = n > 1 ? cln::expt_pos(cln::cl_I(10), n - 1) : cln::cl_I(1);

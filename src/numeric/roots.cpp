@@ -1,5 +1,7 @@
 #include "kinergy/numeric/roots.hpp"
 
+#include "kinergy/numeric/digits.hpp"
+
 namespace kinergy::numerics {
 
 using GiNaC::numeric;
@@ -32,12 +34,10 @@ std::optional<numeric> bracketed_root(const Scalar& f, numeric a, numeric b, num
       side = 1;
     }
     // keep the working numbers floats of fixed size (rationals would grow with every step)
-    const long saved = GiNaC::Digits;
-    GiNaC::Digits = digits;
+    const DigitsScope precision(digits);
     c = GiNaC::ex_to<numeric>(c.evalf());
     a = GiNaC::ex_to<numeric>(a.evalf());
     b = GiNaC::ex_to<numeric>(b.evalf());
-    GiNaC::Digits = saved;
   }
   return c;
 }

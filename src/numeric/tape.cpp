@@ -1,6 +1,7 @@
 #include "kinergy/numeric/tape.hpp"
 
 #include "kinergy/expr/canonical.hpp"
+#include "kinergy/numeric/digits.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
 #include <algorithm>
@@ -620,8 +621,7 @@ std::optional<cl_R> to_cln(const ex& exact, long digits) {
   }
   if (exact.is_equal(Pi)) return cl_R(cln::pi(cln::float_format(digits)));
   // any other exact form (π/6, √2, e^…): GiNaC's evaluation with guard digits
-  long saved = Digits;
-  Digits = digits + 10;
+  const DigitsScope precision(digits + 10);
   std::optional<cl_R> out;
   try {
     ex v = exact.evalf();
@@ -630,7 +630,6 @@ std::optional<cl_R> to_cln(const ex& exact, long digits) {
   } catch (const std::exception&) {
     out.reset();
   }
-  Digits = saved;
   return out;
 }
 
