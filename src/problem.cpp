@@ -15,6 +15,7 @@
 #include "kinergy/numeric/roots.hpp"
 #include "kinergy/numeric/ball.hpp"
 #include "kinergy/numeric/evaluator.hpp"
+#include "kinergy/numeric/trace.hpp"
 #include "kinergy/principles/kinetics.hpp"
 
 namespace kinergy {
@@ -57,15 +58,28 @@ struct Selector {
     return out;
   }
 
-  bool meets(const model::RootSpec& r, const numeric& v) const {
+  /// Does value v (of form `form`, in the parameters) meet root choice r?
+  bool meets(const model::RootSpec& r, const numeric& v, const ex& form) const {
     using K = model::RootSpec::Kind;
     if (r.kind == K::Positive) return v.is_positive();
     if (r.kind == K::Negative) return v.is_negative();
     if (r.kind == K::Interval) {
       auto lo = numerics::evaluate(r.lo, env, 30), hi = numerics::evaluate(r.hi, env, 30);
+      // (the choice reads the signs of v − lo and hi − v: noted for a sweep)
+      if (lo) numerics::note(form - r.lo, v - *lo);
+      if (hi) numerics::note(r.hi - form, *hi - v);
       return lo && hi && *lo <= v && v <= *hi;
     }
     return true;
+  }
+
+  /// f's value on branch b as a form in the parameters (what find_value evaluates).
+  ex find_form(const model::Find& f, const solve::Branch& b) const {
+    try {
+      return f.value.subs(given_).subs(b.sol);
+    } catch (const std::exception&) {
+      return f.value;
+    }
   }
 
   // continuity: a rate keeps the sign of the motion between the states of each analysis; with
@@ -87,13 +101,23 @@ struct Selector {
         auto& [q1, v1] = m.states[a.from].sym.at(c.name);
         auto& [q2, v2] = m.states[a.to].sym.at(c.name);
         auto d = val(q2 - q1), r1 = val(v1), r2 = val(v2);
-        auto sgn = [](const std::optional<numeric>& x) {
+        // a sign, 0 within 1e-20 (each side of the band noted for a sweep)
+        auto sgn = [](const std::optional<numeric>& x, const ex& form) {
           if (!x) return 0;
+          const numeric tol = numerics::tenth(20);
+          numerics::note(form - tol, *x - tol);
+          numerics::note(form + tol, *x + tol);
           double v = x->to_double();
-          double tol = 1e-20;
-          return v > tol ? 1 : (v < -tol ? -1 : 0);
+          return v > 1e-20 ? 1 : (v < -1e-20 ? -1 : 0);
         };
-        int sd = sgn(d), s1 = sgn(r1), s2 = sgn(r2);
+        auto form = [&](const ex& s) {
+          try {
+            return s.subs(g).subs(b.sol);
+          } catch (const std::exception&) {
+            return s;
+          }
+        };
+        int sd = sgn(d, form(q2 - q1)), s1 = sgn(r1, form(v1)), s2 = sgn(r2, form(v2));
         if (sd != 0 && s2 != 0 && sd != s2) return false;
         if (sd != 0 && s1 != 0 && sd != s1) return false;
         if (rates_alone && !d && s1 != 0 && s2 != 0 && s1 != s2) return false;
@@ -108,7 +132,7 @@ struct Selector {
       for (auto& f : m.finds) {
         if (f.root.kind == model::RootSpec::Kind::None) continue;
         auto v = find_value(f, b);
-        if (v && !meets(f.root, *v)) good = false;
+        if (v && !meets(f.root, *v, find_form(f, b))) good = false;
       }
       if (good) ok.push_back(b);
     }
@@ -138,6 +162,11 @@ struct Selector {
         for (std::size_t i = 1; i < ok.size(); ++i) {
           auto vi = find_value(f, ok[i]);
           bool same = v0 && vi && abs(*v0 - *vi) <= abs(*v0) * numeric(1, 1000000000) + numeric(1, 100000000);
+          if (v0 && vi) {
+            const ex f0 = find_form(f, ok[0]);
+            numerics::note(abs(f0) * numeric(1, 1000000000) + numeric(1, 100000000) - abs(f0 - find_form(f, ok[i])),
+                           abs(*v0) * numeric(1, 1000000000) + numeric(1, 100000000) - abs(*v0 - *vi));
+          }
           if (!same)
             throw SceneError(f.pos, "'" + f.name + "' has more than one solution (" + values(ok, f) + ")",
                              "choose one with 'root: positive', 'root: negative' or 'root: {in: [lo, hi]}'");
@@ -423,7 +452,7 @@ private:
       try {
         solve::Branch b = Selector{m, env, given}.pick(solve(sol_.equations));
         for (auto& [k, v] : b.sol)
-          if (auto x = numerics::evaluate(v, env, 30)) know_->set(k, *x);
+          if (auto x = numerics::evaluate(v, env, 30)) know_->set(k, *x, v.subs(given));
       } catch (const SceneError&) {
         // decided later, with every equation
       }
@@ -556,7 +585,7 @@ private:
         for (auto& f : m.finds) {
           if (f.root.kind == model::RootSpec::Kind::None) continue;
           auto v = sel.find_value(f, b);
-          meets = meets && (!v || sel.meets(f.root, *v));
+          meets = meets && (!v || sel.meets(f.root, *v, sel.find_form(f, b)));
         }
         if (meets)
           throw SceneError(why.pos(), "the root asked for gives a solution the motion does not reach: " + why.problem(), why.fix());
@@ -589,6 +618,21 @@ private:
     return values;
   }
 
+  /// The same symbols' forms in the parameters (branch b): what a sweep follows the checks on
+  /// numbers_of by (numerics::TraceForms).
+  exmap forms_of(const solve::Branch& b) const {
+    exmap forms;
+    for (const exmap* part : {static_cast<const exmap*>(&given), static_cast<const exmap*>(&b.sol)})
+      for (auto& [k, v] : *part) {
+        try {
+          forms[k] = v.subs(given).subs(b.sol);
+        } catch (const std::exception&) {
+          forms[k] = v;
+        }
+      }
+    return forms;
+  }
+
   /// Does the motion reach each energy analysis' end state (branch b)?
   ///  - a coordinate at rest at the end state whose rate at the start is not zero comes to rest
   ///    the way it moves: (q₂ − q₁) q̇₁ > 0 (to lie the other way it must stop, and turn, first);
@@ -598,6 +642,8 @@ private:
   /// split where the end lies; an average force of an isolated set; a parameter without a value).
   void check_reached(const solve::Branch& b) const {
     const exmap values = numbers_of(b);
+    const exmap forms = forms_of(b);
+    const numerics::TraceForms traced(forms);
     auto value = [&](const ex& e) -> std::optional<numeric> {
       ex x = e.subs(values);
       if (is_a<numeric>(x) && ex_to<numeric>(x).is_real()) return ex_to<numeric>(x);
@@ -616,6 +662,7 @@ private:
           const ex x2 = part ? ex(S2.sym.at(c.name).second) : ex(S2.sym.at(c.name).first);
           auto v1 = value(x1), v2 = value(x2);
           same = v1 && v2 && abs(*v2 - *v1) <= numerics::tenth(25) * (abs(*v1) + abs(*v2));
+          if (v1 && v2) numerics::note(numerics::tenth(25) * (abs(x1) + abs(x2)) - abs(x2 - x1), numerics::tenth(25) * (abs(*v1) + abs(*v2)) - abs(*v2 - *v1));
           solved = solved || (part == 0 && !given.count(x2));  // where it ends was solved for, not given
         }
       if (same && solved)
@@ -626,6 +673,9 @@ private:
       for (auto& c : m.coords) {
         auto q1 = value(S1.sym.at(c.name).first), q2 = value(S2.sym.at(c.name).first);
         auto v1 = value(S1.sym.at(c.name).second), v2 = value(S2.sym.at(c.name).second);
+        if (v1) numerics::note(S1.sym.at(c.name).second, *v1);
+        if (v2) numerics::note(S2.sym.at(c.name).second, *v2);
+        if (q1 && q2 && v1) numerics::note((S2.sym.at(c.name).first - S1.sym.at(c.name).first) * S1.sym.at(c.name).second, (*q2 - *q1) * *v1);
         if (!q1 || !q2 || !v1 || !v2 || !v2->is_zero() || v1->is_zero() || (*q2 - *q1) * *v1 >= 0) continue;
         const std::string unit = units::si_name(c.dim).empty() ? "rad" : units::si_name(c.dim);
         throw SceneError(a.pos, "state '" + S2.name + "' has " + c.name + " at rest on the other side of state '" + S1.name + "' than the motion goes: " +
@@ -700,6 +750,8 @@ private:
   /// What the effects declare holds at every solved state of branch b.
   void check_declared(const solve::Branch& b) const {
     const exmap values = numbers_of(b);
+    const exmap forms = forms_of(b);
+    const numerics::TraceForms traced(forms);
     for (auto& e : m.effects)
       for (std::size_t s = 0; s < m.states.size(); ++s) e.check(m, static_cast<int>(s), values);
     // what the equations took for granted (a switching force passed, a declared direction of
@@ -731,6 +783,7 @@ private:
   /// 10^−n
 
   void extreme(const model::Find& f, Result& r) const {
+    numerics::note_untraced("where '" + f.name + "' is greatest or least (found by a scan)");
     const auto& x = *f.extreme;
     const symbol& p = ex_to<symbol>(x.p);
     const int digits = 45;

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 
 #include <unistd.h>
@@ -304,6 +305,8 @@ struct SweepCommand {
   std::string scene;
   std::vector<std::string> sweep_sets;
   std::string sweep_csv, sweep_json, sweep_plot;
+  kinergy::batch::SweepOptions options;
+  bool no_confirm = false;
 
   void add(CLI::App& app) {
     auto* sweep = app.add_subcommand("sweep", "solve a scene over a grid of parameter values: CSV, JSON, a plot");
@@ -313,6 +316,10 @@ struct SweepCommand {
     sweep->add_option("--csv", sweep_csv, "write the grid and each result to FILE.csv ('-': standard output, the default without --json)");
     sweep->add_option("--json", sweep_json, "write it as JSON to FILE ('-': standard output)");
     sweep->add_option("--plot", sweep_plot, "draw each result against the first parameter into FILE.svg or FILE.png (gnuplot)");
+    sweep->add_flag("--per-point", options.per_point, "solve the scene at every point (slow): no closed form carried between points");
+    sweep->add_option("--samples", options.samples, "points solved in full and compared with the closed forms (default 8)")
+        ->check(CLI::Range(0, 10000));
+    sweep->add_flag("--no-confirm", no_confirm, "do not confirm the sample points' solutions a second way (by simulation)");
   }
 
   int run() {
@@ -320,23 +327,63 @@ struct SweepCommand {
       const kinergy::scene::SceneDef def = kinergy::scene::load_file(scene);
       std::vector<kinergy::batch::Range> ranges;
       for (auto& t : sweep_sets) ranges.push_back(kinergy::batch::parse_range(t, def));
-      const auto s = kinergy::batch::sweep(def, ranges);
-      auto put = [&](const std::string& path, const std::string& text) {
-        if (path == "-") {
-          std::cout << text;
-          return;
-        }
-        std::ofstream out(path, std::ios::binary);
-        out << text;
-        if (!out) throw kinergy::InputError("cannot write '" + path + "'", "check the directory and its permissions");
-      };
       if (sweep_csv.empty() && sweep_json.empty() && sweep_plot.empty()) sweep_csv = "-";
-      if (!sweep_csv.empty()) put(sweep_csv, kinergy::batch::csv(s));
-      if (!sweep_json.empty()) put(sweep_json, kinergy::batch::json(s));
-      if (!sweep_plot.empty()) kinergy::batch::plot(s, def.title, sweep_plot);
-      std::size_t failed = 0;
-      for (auto& row : s.rows) failed += row.error.empty() ? 0 : 1;
-      std::cerr << "kinergy sweep: " << s.rows.size() << " points, " << failed << " without a solution\n";
+      options.confirm = !no_confirm;
+      if (!sweep_plot.empty()) kinergy::batch::check_plot(sweep_plot);
+      // the rows stream to their files as they come (a sweep of 10^6 points is not held)
+      std::ofstream csv_file, json_file;
+      auto open = [&](const std::string& path, std::ofstream& f) -> std::ostream* {
+        if (path.empty()) return nullptr;
+        if (path == "-") return &std::cout;
+        f.open(path, std::ios::binary);
+        if (!f) throw kinergy::InputError("cannot write '" + path + "'", "check the directory and its permissions");
+        return &f;
+      };
+      std::ostream* csv_out = open(sweep_csv, csv_file);
+      std::ostream* json_out = open(sweep_json, json_file);
+      std::string cbuf, jbuf;
+      bool first = true;
+      kinergy::batch::Sweep kept;
+      kinergy::batch::PlotRows plotted(ranges);
+      const bool terminal = ::isatty(2) != 0;
+      if (terminal)
+        options.progress = [](std::size_t done, std::size_t total) {
+          std::cerr << "\rkinergy sweep: " << done << " / " << total << " points" << std::flush;
+        };
+      auto flush = [&](bool all) {
+        if (csv_out && (all || cbuf.size() > (1u << 16))) *csv_out << cbuf, cbuf.clear();
+        if (json_out && (all || jbuf.size() > (1u << 16))) *json_out << jbuf, jbuf.clear();
+      };
+      kinergy::batch::Sweep::Summary sum = kinergy::batch::sweep_rows(
+          def, ranges, options, kept.parameters, kept.results, [&](const kinergy::batch::Sweep::Row& row) {
+            if (first) {
+              if (csv_out) cbuf = kinergy::batch::csv_header(kept.parameters, kept.results);
+              if (json_out) jbuf = kinergy::batch::json_header(kept.parameters, kept.results);
+            }
+            if (csv_out) kinergy::batch::csv_row(row, cbuf);
+            if (json_out) kinergy::batch::json_row(row, first, jbuf);
+            if (!sweep_plot.empty()) plotted.add(row);
+            first = false;
+            flush(false);
+          });
+      if (json_out) jbuf += kinergy::batch::json_footer(sum);
+      flush(true);
+      if (csv_out) csv_out->flush();
+      if (json_out) json_out->flush();
+      if ((csv_out && !*csv_out) || (json_out && !*json_out)) throw kinergy::InputError("cannot write the sweep", "check the disk and the files' directory");
+      if (terminal) std::cerr << "\r\33[K";
+      if (!sweep_plot.empty()) {
+        plotted.rows().parameters = kept.parameters;
+        plotted.rows().results = kept.results;
+        kinergy::batch::plot(plotted.rows(), def.title, sweep_plot);
+      }
+      std::cerr << "kinergy sweep: " << sum.points << " points, " << sum.failed << " without a solution; " << sum.closed
+                << " by closed form, " << sum.solved << " solved at the point";
+      if (!sum.note.empty()) std::cerr << " (" << sum.note << ")";
+      if (sum.confirmed > 0)
+        std::cerr << "; the closed forms checked against " << sum.confirmed << " sample points solved in full"
+                  << (options.confirm ? " and confirmed" : "") << ", largest relative difference " << std::setprecision(2) << sum.difference;
+      std::cerr << "\n";
       return 0;
     });
   }

@@ -4,6 +4,7 @@
 
 #include "common.hpp"
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/trace.hpp"
 
 namespace kinergy::effects {
 
@@ -92,8 +93,8 @@ public:
       bool assumed = an.from == s ? e1 : e2;
       auto value = [&](const ex& e) -> std::optional<GiNaC::numeric> {
         try {
-          ex v = e.subs(values).evalf();
-          if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return GiNaC::ex_to<GiNaC::numeric>(v);
+          // (the stretch's sign a choice reads: noted for a sweep, numeric/trace.hpp)
+          return numerics::noted(e, values);
         } catch (const std::exception&) {
         }
         return std::nullopt;

@@ -12,6 +12,7 @@
 
 #include "common.hpp"
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/trace.hpp"
 
 namespace kinergy::effects {
 
@@ -82,6 +83,8 @@ public:
     ex scale = sqrt(pow(x, 2) + pow(y, 2) + pow(x0, 2) + pow(y0, 2) + pow(R, 2) + pow(offset, 2));
     auto s = numerics::evaluate(scale, at, 30);
     GiNaC::numeric dv = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v));
+    // the choice reads the sign of s·10⁻⁹ − |d| (noted for a sweep: numeric/trace.hpp)
+    if (s) numerics::note(scale * GiNaC::numeric(1, 1000000000) - abs(d), *s * GiNaC::numeric(1, 1000000000) - dv);
     if (!s || dv <= *s * GiNaC::numeric(1, 1000000000)) return "";
     return numerics::format(dv, 6) + " m";
   }
@@ -95,6 +98,10 @@ public:
   void check_everywhere(const Model& m) const {
     if (!m.constraints.empty()) return;
     for (GiNaC::exmap& at : random_positions(m, m.numeric_environment(), 4242)) {
+      // (a sweep's trace takes the sample's coordinates as the numbers they are here)
+      GiNaC::exmap probe{{m.t, at[m.t]}};
+      for (auto& c : m.coords) probe[c.q] = at[c.q];
+      const numerics::TraceForms traced(probe);
       std::string off = off_track(m, at);
       if (off.empty()) continue;
       std::string where;
@@ -114,6 +121,10 @@ public:
       at[c.q] = it->second;
     }
     at[m.t] = values.count(m.states[state].t) ? values.at(m.states[state].t) : ex(0);
+    // (the coordinates are this state's: a sweep's trace follows them to their forms)
+    GiNaC::exmap here{{m.t, values.count(m.states[state].t) ? ex(m.states[state].t) : ex(0)}};
+    for (auto& c : m.coords) here[c.q] = m.states[state].sym.at(c.name).first;
+    const numerics::TraceForms traced(here);
     std::string off = off_track(m, at);
     if (!off.empty())
       throw SceneError(pos, "track '" + name + "': " + p.text + " is " + off + " off " + shape + " at state '" +

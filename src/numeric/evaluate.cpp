@@ -10,6 +10,7 @@
 #include "kinergy/common/interrupt.hpp"
 #include "kinergy/numeric/digits.hpp"
 #include "kinergy/numeric/tape.hpp"
+#include "kinergy/numeric/trace.hpp"
 
 namespace kinergy::numerics {
 
@@ -38,8 +39,10 @@ static long covering_digits(const ex& v, long digits) {
 std::optional<GiNaC::numeric> evaluate(const ex& e, const exmap& values, int digits) {
   const DigitsScope precision(digits);
   std::optional<GiNaC::numeric> out;
+  bool free = false;
   try {
     ex s = e.subs(values);
+    free = tracing() && holds_symbol(s);
     long need = covering_digits(s, digits);
     if (need == 0) throw std::domain_error("an angle too large for the working precision");
     precision.set(need);
@@ -48,6 +51,9 @@ std::optional<GiNaC::numeric> evaluate(const ex& e, const exmap& values, int dig
   } catch (const std::exception&) {
     out.reset();  // division by zero, domain errors: no number
   }
+  // a choice may read this value: noted for a sweep (numeric/trace.hpp); a form with symbols left
+  // has no number at any parameter values, so nothing is chosen by it
+  if (tracing() && !free) note(e, out);
   return out;
 }
 

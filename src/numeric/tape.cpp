@@ -285,11 +285,48 @@ void Tape::batch(const double* x, std::size_t n, double* out) const {
 // by u|r̂| for correctly rounded +, −, ×, ÷, √ and by 2u|r̂| for the library functions (glibc's
 // sin, cos, exp, log, pow are within one ulp).
 Bounded Tape::bounded(const double* x, const double* dx) const {
+  bound_run(x, dx, false);
+  if (out_ < 0) return {0, 0};
+  return {reg_[static_cast<std::size_t>(out_)], err_[static_cast<std::size_t>(out_)]};
+}
+
+void Tape::enclose(const double* mid, const double* radius, Enclosed* out) const {
+  bound_run(mid, radius, true);
+  for (std::size_t k = 0; k < outs_.size(); ++k) {
+    const auto r = static_cast<std::size_t>(outs_[k]);
+    out[k] = {reg_[r], err_[r], undefined_[r] != 0};
+  }
+}
+
+// May an operand within a ± e_a (b ± e_b) leave instruction `in` undefined?
+bool Tape::outside_domain(const Ins& in, double a, double b, double ea, double eb) {
+  switch (in.op) {
+    case Op::Div: return !(std::fabs(b) > eb);
+    case Op::Sqrt: return !(a - ea >= 0);
+    case Op::Rsqrt:
+    case Op::Log:
+    case Op::Pow: return !(a - ea > 0);
+    case Op::Powi: return in.c < 0 && !(std::fabs(a) > ea);
+    case Op::Asin:
+    case Op::Acos: return !(std::fabs(a) + ea <= 1);
+    // |cos| is 1-Lipschitz: a pole p within [a ± e_a] gives |cos a| = |cos a − cos p| ≤ e_a
+    case Op::Tan: return !(std::fabs(std::cos(a)) > ea);
+    case Op::Atan2: return !(std::hypot(a, b) > ea + eb);
+    default: return false;
+  }
+}
+
+// Every register's value and bound (bounded() above). With `domains`, undefined_[i] also says
+// whether some operands within the bounds leave instruction i (or one it takes) undefined: a
+// division by an interval that holds 0, √ or log of one that reaches below 0, asin of one past ±1,
+// tan of one that holds a pole.
+void Tape::bound_run(const double* x, const double* dx, bool domains) const {
   elementary_only();
   constexpr double u = 0x1p-53;
   constexpr double inf = std::numeric_limits<double>::infinity();
   double* r = reg_.data();
   double* E = err_.data();
+  if (domains) undefined_.assign(code_.size(), 0);
   for (std::size_t i = 0; i < code_.size(); ++i) {
     const Ins& in = code_[i];
     const bool leaf = in.op == Op::Input || in.op == Op::Const;
@@ -297,6 +334,9 @@ Bounded Tape::bounded(const double* x, const double* dx) const {
     const double ea = !leaf && in.a >= 0 ? E[in.a] : 0, eb = in.b >= 0 ? E[in.b] : 0;
     const double A = std::fabs(a), B = std::fabs(b);
     double v = 0, e = 0;
+    if (domains && !leaf)
+      undefined_[i] = (in.a >= 0 && undefined_[static_cast<std::size_t>(in.a)]) || (in.b >= 0 && undefined_[static_cast<std::size_t>(in.b)]) ||
+                      outside_domain(in, a, b, ea, eb);
     switch (in.op) {
       case Op::Const: v = in.c; e = const_err_[static_cast<std::size_t>(in.a)]; break;
       case Op::Input: v = x[in.a]; e = dx ? dx[in.a] : 0; break;
@@ -358,7 +398,8 @@ Bounded Tape::bounded(const double* x, const double* dx) const {
       case Op::Atan2: {
         v = std::atan2(a, b);
         const double rho = std::hypot(a, b) - ea - eb;
-        e = rho > 0 ? (ea + eb) / rho + 2 * u * std::fabs(v) : 4;
+        // (near the origin: any two angles in [−π, π] are at most 2π apart)
+        e = rho > 0 ? std::min((ea + eb) / rho + 2 * u * std::fabs(v), 6.2831853071795872) : 6.2831853071795872;
         break;
       }
       // e^(a+δ) − e^a = e^a (e^δ − 1)
@@ -387,9 +428,8 @@ Bounded Tape::bounded(const double* x, const double* dx) const {
     }
     r[i] = v;
     E[i] = std::isnan(v) ? inf : e;
+    if (domains && std::isnan(v)) undefined_[i] = 1;
   }
-  if (out_ < 0) return {0, 0};
-  return {r[out_], E[out_]};
 }
 
 namespace {

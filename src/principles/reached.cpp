@@ -9,6 +9,7 @@
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/tape.hpp"
+#include "kinergy/numeric/trace.hpp"
 #include "kinergy/principles/principles.hpp"
 
 namespace kinergy::principles {
@@ -33,6 +34,26 @@ bool only_coordinates(const Model& m, const ex& e) {
   return is_a<numeric>(z);
 }
 
+/// Points the path is sampled at, ends excluded: q₁ + (q₂ − q₁) i/N, 0 < i < N.
+constexpr int kSamples = 256;
+
+/// For a sweep (numeric/trace.hpp): with one coordinate and no constraint, the check below passes
+/// wherever K(q) = T₁ + V₁ + U₁→q − V(q) ≥ 0 for q over its samples (the forms of the states put in).
+void note_way(const Model& m, const model::Analysis& a, const EnergyBalance& bal, bool unconstrained) {
+  if (m.coords.size() != 1 || !unconstrained) {
+    numerics::note_untraced("the kinetic energy along a way that constraints bend");
+    return;
+  }
+  const auto &S1 = m.states[a.from], &S2 = m.states[a.to];
+  const ex q = m.coords[0].q, s1 = S1.sym.at(m.coords[0].name).first, s2 = S2.sym.at(m.coords[0].name).first;
+  try {
+    // (the samples run from the first step past q₁ to the last before q₂)
+    numerics::note_path((bal.equation.lhs - bal.at_to.V).subs(s2 == q), q, s1 + (s2 - s1) / kSamples, s1 + (s2 - s1) * (kSamples - 1) / kSamples);
+  } catch (const std::exception&) {
+    numerics::note_untraced("the kinetic energy along the way");
+  }
+}
+
 }  // namespace
 
 void check_reached(const Model& m, const model::Analysis& a, const EnergyBalance& bal, const exmap& values) {
@@ -41,6 +62,7 @@ void check_reached(const Model& m, const model::Analysis& a, const EnergyBalance
   const std::size_t n = m.coords.size();
   if (n == 0 || cs.size() + 1 != n) return;
   const auto &S1 = m.states[a.from], &S2 = m.states[a.to];
+  if (numerics::tracing()) note_way(m, a, bal, cs.empty());
   auto at = [&](const ex& e) -> std::optional<double> {
     try {
       ex v = e.subs(values).subs(values).evalf();
@@ -96,7 +118,7 @@ void check_reached(const Model& m, const model::Analysis& a, const EnergyBalance
   std::vector<double> out(outs.size()), q = q1;
   // sample the path: s from q1[p] to q2[p]; the other coordinates by Newton's method on the
   // constraints from the previous point (continuation)
-  const int N = 256;
+  const int N = kSamples;
   double prev = q1[p];
   for (int i = 1; i < N; ++i) {
     const double s = q1[p] + (q2[p] - q1[p]) * i / N;

@@ -11,6 +11,7 @@
 #include "kinergy/numeric/digits.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/roots.hpp"
+#include "kinergy/numeric/trace.hpp"
 
 namespace kinergy::solve {
 
@@ -482,6 +483,8 @@ private:
 
   // No closed form: find the sign changes of the residual around a reference and refine.
   void numeric_roots(const State& st, const Equation& q, const symbol& u) {
+    // where a scan finds roots is no sign of a form a sweep could follow
+    numerics::note_untraced("a numeric root of " + model::text(u) + " (found by a scan)");
     ex r = q.residual();
     double ref = 0;
     if (auto it = p_.reference.find(u); it != p_.reference.end())

@@ -4,10 +4,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
+#include <sstream>
 
 #include "../support/helpers.hpp"
 #include "kinergy/batch/sweep.hpp"
 #include "kinergy/common/error.hpp"
+#include "kinergy/units/units.hpp"
 
 namespace {
 
@@ -40,9 +43,9 @@ TEST_CASE("sweep: every point of the grid solved, the last range fastest, a poin
     }
   }
   const std::string table = kinergy::batch::csv(s);
-  CHECK(table.rfind("\"l (m)\",\"theta2 (deg)\",\"omega2 (rad/s)\",\"error\"\n0.5,0,,\"no solution has 'omega2' with the root asked for\"\n0.5,45,", 0) == 0);
+  CHECK(table.rfind("\"l (m)\",\"theta2 (deg)\",\"omega2 (rad/s)\",\"how\",\"error\"\n0.5,0,,\"solved\",\"no solution has 'omega2' with the root asked for\"\n0.5,45,", 0) == 0);
   const std::string j = kinergy::batch::json(s);
-  CHECK(j.find("{\"at\": [0.5, 0], \"values\": [null], \"error\": \"no solution has 'omega2' with the root asked for\"}") != std::string::npos);
+  CHECK(j.find("{\"at\": [0.5, 0], \"values\": [null], \"how\": \"solved\", \"error\": \"no solution has 'omega2' with the root asked for\"}") != std::string::npos);
 }
 
 TEST_CASE("sweep: a range is refused with what is wrong", "[batch][sweep][errors]") {
@@ -79,7 +82,7 @@ TEST_CASE("kinergy sweep: CSV on standard output, JSON and a plot to files", "[b
   int st = 0;
   std::string out = kt::run_cli("sweep derivations/energy/sliding_rod.yaml --set l=1..2:3", st);
   CHECK(st == 0);
-  CHECK(out.find("\"l (m)\",\"omega2 (rad/s)\",\"error\"\n1,") != std::string::npos);
+  CHECK(out.find("\"l (m)\",\"omega2 (rad/s)\",\"how\",\"error\"\n1,") != std::string::npos);
   CHECK(out.find("kinergy sweep: 3 points, 0 without a solution") != std::string::npos);
   out = kt::run_cli("sweep derivations/energy/sliding_rod.yaml --set l=1..2:3 --json " + (dir / "s.json").string() + " --plot " +
                         (dir / "s.svg").string(),
@@ -88,10 +91,117 @@ TEST_CASE("kinergy sweep: CSV on standard output, JSON and a plot to files", "[b
   CHECK(st == 0);
   CHECK(kt::read_file(dir / "s.json").rfind("{\"parameters\": [\"l (m)\"]", 0) == 0);
   CHECK(kt::read_file(dir / "s.svg").find("<svg") != std::string::npos);
+  // over 12 values of the second parameter: a map with contours, not 20 curves
+  out = kt::run_cli("sweep derivations/energy/sliding_rod.yaml --set l=1..2:30 --set theta2=30..270:20 --csv " + (dir / "m.csv").string() +
+                        " --plot " + (dir / "m.svg").string(),
+                    st);
+  INFO(out);
+  CHECK(st == 0);
+  CHECK(out.find("kinergy sweep: 600 points, ") != std::string::npos);
+  const std::string map = kt::read_file(dir / "m.svg");
+  CHECK(map.find("<svg") != std::string::npos);
+  CHECK(map.find("omega2 (rad/s) (blank: no solution)") != std::string::npos);
+  CHECK(map.find("theta2 (deg) = ") == std::string::npos);
   out = kt::run_cli("sweep derivations/energy/sliding_rod.yaml --set l=1..2:3 --plot " + (dir / "s.gif").string(), st);
   CHECK(st != 0);
   CHECK(out.find("the plot '" + (dir / "s.gif").string() + "' is neither .svg nor .png") != std::string::npos);
   out = kt::run_cli("sweep derivations/energy/sliding_rod.yaml --set zz=1..2:3", st);
   CHECK(st != 0);
   CHECK(out.find("the scene has no parameter 'zz'") != std::string::npos);
+}
+
+namespace {
+
+/// The same sweep solved at every point: the rows a carried closed form must equal.
+void same_rows(const kinergy::batch::Sweep& fast, const kinergy::batch::Sweep& slow) {
+  REQUIRE(fast.rows.size() == slow.rows.size());
+  for (std::size_t k = 0; k < fast.rows.size(); ++k) {
+    const auto &a = fast.rows[k], &b = slow.rows[k];
+    INFO("row " << k << ": " << a.how << " / " << a.error << " | " << b.error);
+    REQUIRE(a.at == b.at);
+    CHECK(a.error.empty() == b.error.empty());
+    for (std::size_t r = 0; r < a.values.size(); ++r) {
+      CHECK(std::isnan(a.values[r]) == std::isnan(b.values[r]));
+      if (!std::isnan(b.values[r])) CHECK(std::fabs(a.values[r] - b.values[r]) <= 1e-12 * std::fabs(b.values[r]));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("sweep: the closed form carried wherever every choice falls the same way, and past where the motion reaches, why",
+          "[batch][sweep]") {
+  const auto def = kinergy::scene::load_file(kRod);
+  // theta2 past 180°: sin θ2 < 0, the rod cannot get there from rest (ω² < 0)
+  const std::vector<kinergy::batch::Range> ranges{kinergy::batch::parse_range("l=0.5..2:25", def),
+                                                  kinergy::batch::parse_range("theta2=30..270:25", def)};
+  const auto fast = kinergy::batch::sweep(def, ranges);
+  kinergy::batch::SweepOptions each;
+  each.per_point = true;
+  const auto slow = kinergy::batch::sweep(def, ranges, each);
+  same_rows(fast, slow);
+  std::size_t closed = 0, past = 0;
+  for (const auto& row : fast.rows) {
+    const double l = row.at[0], deg = row.at[1];
+    INFO(l << " m, " << deg << " deg: " << row.error);
+    closed += row.how == "closed form" ? 1 : 0;
+    if (deg < 180) {
+      // by hand: ω2 = √(3 g sin θ2 / l)
+      CHECK(row.error.empty());
+      CHECK(std::fabs(row.values[0] - omega(l, deg)) <= 1e-12 * omega(l, deg));
+    } else if (deg == 180) {
+      // at rest there (ω2 = 0): no positive ω2, each such point solved (a choice reads a zero)
+      CHECK(row.error == "no solution has 'omega2' with the root asked for");
+      CHECK(row.how == "solved");
+    } else {
+      ++past;
+      CHECK(std::isnan(row.values[0]));
+      CHECK(row.error.find("no real solution for theta_dot@2") != std::string::npos);
+      if (row.how != "solved") CHECK(row.error.rfind("as solved at l = ", 0) == 0);
+    }
+  }
+  CHECK(past == 25 * 9);
+  // every row below 180° is carried; past it, the first is solved and its failure carried on
+  CHECK(closed == 25 * 15);
+  CHECK(fast.summary.solved == 25 + 1);
+  CHECK(fast.summary.confirmed == 8);
+  CHECK(fast.summary.difference <= 1e-12);
+  CHECK(fast.summary.note.empty());
+  CHECK(slow.summary.solved == slow.rows.size());
+}
+
+TEST_CASE("sweep: every derivation over a grid of two of its parameters, the closed forms carried equal solves at each point",
+          "[batch][sweep][slow]") {
+  std::size_t rows = 0, closed = 0, scenes = 0;
+  for (const auto& path : kt::scene_files("derivations")) {
+    const auto def = kinergy::scene::load_file(path);
+    std::vector<kinergy::batch::Range> ranges;
+    for (const auto& p : def.parameters) {
+      if (ranges.size() == 2) break;
+      kinergy::units::Quantity q;
+      try {
+        q = kinergy::units::parse_quantity(p.value.s);
+      } catch (const kinergy::InputError&) {
+        continue;
+      }
+      if (!q.has_number || q.number.is_zero()) continue;
+      const double v = q.number.to_double(), a = 0.8 * v, b = 1.2 * v;
+      std::ostringstream text;
+      text << std::setprecision(17) << p.name << "=" << std::min(a, b) << ".." << std::max(a, b) << ":" << (ranges.empty() ? 3 : 2);
+      ranges.push_back(kinergy::batch::parse_range(text.str(), def));
+    }
+    if (ranges.empty()) continue;
+    INFO(path);
+    kinergy::batch::SweepOptions quick, each;
+    quick.samples = 2;
+    each.per_point = true;
+    const auto fast = kinergy::batch::sweep(def, ranges, quick);
+    same_rows(fast, kinergy::batch::sweep(def, ranges, each));
+    ++scenes;
+    rows += fast.rows.size();
+    for (const auto& row : fast.rows) closed += row.how == "closed form" ? 1 : 0;
+  }
+  CHECK(scenes >= 70);
+  // (so that the test cannot pass with nothing carried: most scenes' closed forms hold around their values)
+  CHECK(closed * 2 >= rows);
 }

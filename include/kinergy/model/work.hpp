@@ -49,14 +49,20 @@ public:
   /// Numeric value of a state-bound expression, if everything in it is known.
   std::optional<GiNaC::numeric> value(const ex& e) const;
   const GiNaC::exmap& values() const { return known_; }
-  /// Record a value found by an earlier analysis.
-  void set(const ex& sym, const GiNaC::numeric& v) { known_[sym] = v; }
+  /// Record a value found by an earlier analysis, and its form in the parameters.
+  void set(const ex& sym, const GiNaC::numeric& v, const ex& form) {
+    known_[sym] = v;
+    forms_[sym] = form;
+  }
+  /// A value that is the same for any parameter values (its form is the number).
+  void set(const ex& sym, const GiNaC::numeric& v) { set(sym, v, v); }
   /// A force that switches (abs, max, min) on the way to a state whose position is unknown is
   /// taken past every switching point on that side but this many of the farthest (the scene
   /// is solved again with one more while the taken case has no solution).
   int fewer_switches = 0;
 private:
   GiNaC::exmap known_;
+  GiNaC::exmap forms_;  ///< what is known as forms in the parameters (noted by a sweep's trace)
   GiNaC::exmap env_;  ///< parameter values
 };
 

@@ -25,6 +25,14 @@ struct Bounded {
   double bound = 0;
 };
 
+/// An output over a box of inputs (Tape::enclose): every exact value of the form in the box
+/// lies in [value − bound, value + bound], unless `maybe_undefined`.
+struct Enclosed {
+  double value = 0;
+  double bound = 0;
+  bool maybe_undefined = false;
+};
+
 /// Thrown by Tape::precise when the working precision cannot cover an argument: a trigonometric
 /// function of x needs the digits of x's integer part besides the digits asked (sin(1e80 rad) at 45
 /// digits knows nothing of x mod 2π). `digits`: the working precision that would.
@@ -63,6 +71,12 @@ public:
   /// Value with a running error bound (Wilkinson's running error analysis, carried through
   /// every instruction): dx[i] bounds the error of input i (0 for an exact input).
   Bounded bounded(const double* x, const double* dx) const;
+
+  /// Every output over a box of inputs: each exact input within radius[i] of mid[i]. out[k]
+  /// holds output k's value at mid and a bound on its distance from the exact output at any
+  /// point of the box (the running error analysis of bounded(), whose bounds hold for any size
+  /// of the inputs' errors), and whether the form may be undefined somewhere in the box.
+  void enclose(const double* mid, const double* radius, Enclosed* out) const;
 
   /// Value in CLN with floats of `digits` decimal digits. With `exact_constants`, the tape's
   /// rational constants stay rationals, and rational inputs with them stay exact through +, −,
@@ -109,9 +123,12 @@ private:
   std::vector<std::uint32_t> work_;  ///< the instructions that compute (not constants, not inputs)
   std::vector<std::pair<std::uint32_t, std::uint32_t>> inputs_at_;  ///< (register, input index)
   void run(const double* x) const;  ///< every register at x (double)
+  void bound_run(const double* x, const double* dx, bool domains) const;  ///< bounded(), enclose()
+  static bool outside_domain(const Ins& in, double a, double b, double ea, double eb);
   std::string source(const std::string& name, bool vector, const std::string& epilogue = "") const;
   mutable std::vector<double> reg_;
   mutable std::vector<double> err_;
+  mutable std::vector<char> undefined_;  ///< enclose(): the register may be undefined in the box
   mutable std::vector<double> batch_reg_;
   friend class TapeBuilder;
   friend struct detail::BallRun;

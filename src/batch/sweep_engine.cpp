@@ -1,0 +1,527 @@
+// A sweep at the speed of the closed form: solve once, carry the solution wherever its choices
+// are shown to fall the same way, solve again only where they may not.
+//
+// A solve chooses by signs: which root is positive, which way a coordinate moves, whether a
+// state is reached, whether friction holds. Each choice's value is recorded with its form in the
+// parameters (numeric/trace.hpp). Over a box of grid points, interval arithmetic on those forms
+// (numerics::Tape::enclose) shows every sign the same as where the scene was solved: the same
+// choices are made at every point of the box, so the same closed forms hold there. The values
+// are then the closed forms in doubles, each with its running error bound.
+#include "kinergy/batch/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "kinergy/app/app.hpp"
+#include "kinergy/common/error.hpp"
+#include "kinergy/common/interrupt.hpp"
+#include "kinergy/confirm/confirm.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/tape.hpp"
+#include "kinergy/numeric/trace.hpp"
+#include "kinergy/problem.hpp"
+#include "kinergy/units/units.hpp"
+
+namespace kinergy::batch {
+
+using namespace GiNaC;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// A value from a closed form is taken when its double's error bound is within this of it (the
+/// per-point solve rounds to 15 digits: the two then agree to 1e-12).
+constexpr double kRelBound = 1e-13;
+constexpr std::uint8_t kOpen = 255;  ///< a grid point no region is shown to hold at (yet)
+constexpr std::size_t kMaxRegions = 32;
+
+/// The grid: COUNT values of each range, the last varying fastest.
+struct Grid {
+  const std::vector<Range>& ranges;
+  double value(std::size_t i, std::size_t j) const {
+    const Range& r = ranges[i];
+    return r.lo + (r.hi - r.lo) * static_cast<double>(j) / static_cast<double>(r.count - 1);
+  }
+  std::size_t dims() const { return ranges.size(); }
+  std::size_t count(std::size_t i) const { return static_cast<std::size_t>(ranges[i].count); }
+};
+
+/// A box of grid indices, lo[i] ≤ j ≤ hi[i].
+struct Box {
+  std::vector<std::size_t> lo, hi;
+};
+
+/// The swept values' symbols (one input of every compiled form each), and how a form recorded by
+/// a solve becomes a form in them: each symbol by its name, a swept parameter as its factor to SI
+/// times its input, another parameter as its value.
+struct Inputs {
+  std::vector<symbol> x;
+  std::map<std::string, ex> by_name;
+
+  /// e in the inputs, or nothing when it holds a symbol that is neither (a state's place whose
+  /// form was not followed).
+  std::optional<ex> map(const ex& e) const {
+    exmap sub;
+    bool lost = false;
+    collect(e, sub, lost);
+    if (lost) return std::nullopt;
+    try {
+      return e.subs(sub);
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }
+
+private:
+  void collect(const ex& e, exmap& sub, bool& lost) const {
+    if (is_a<symbol>(e)) {
+      auto it = by_name.find(ex_to<symbol>(e).get_name());
+      if (it == by_name.end()) lost = true;
+      else sub[e] = it->second;
+      return;
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i), sub, lost);
+  }
+};
+
+/// Does e hold one of the inputs?
+bool holds_input(const ex& e, const Inputs& in) {
+  return std::any_of(in.x.begin(), in.x.end(), [&](const symbol& s) { return e.has(s); });
+}
+
+/// What one solve (at one grid point) found, and what makes it hold at others.
+struct Region {
+  std::vector<double> at;
+  bool ok = false;
+  std::string error;     ///< !ok: why the scene has no solution there
+  std::string unusable;  ///< why it holds only at `at` ("": it is carried to any box its choices hold in)
+  std::optional<numerics::Tape> notes;  ///< every sign its choices read, in the inputs
+  std::vector<int> signs;
+  struct Path {
+    numerics::Tape K;     ///< K(q, inputs) ≥ 0 along the way
+    numerics::Tape ends;  ///< q1, q2 (inputs)
+  };
+  std::vector<Path> paths;
+  std::vector<numerics::Tape> results;  ///< each result in its display unit (ok and usable)
+};
+
+/// Compile what a traced solve read, and its results, in the inputs.
+void carry(Region& r, const numerics::Trace& t, const Solution* s, const Inputs& in) {
+  if (!t.untraced.empty()) {
+    r.unusable = "a choice depends on " + t.untraced;
+    return;
+  }
+  std::set<std::pair<ex, int>, bool (*)(const std::pair<ex, int>&, const std::pair<ex, int>&)> seen(
+      [](const std::pair<ex, int>& a, const std::pair<ex, int>& b) {
+        if (a.second != b.second) return a.second < b.second;
+        return ex_is_less()(a.first, b.first);
+      });
+  std::vector<ex> forms;
+  for (const numerics::Note& n : t.notes) {
+    auto f = in.map(n.e);
+    if (!f) {
+      r.unusable = "a choice reads a value whose form in the parameters is not followed";
+      return;
+    }
+    if (!holds_input(*f, in)) continue;  // the same at every point
+    if (!seen.insert({*f, n.sign}).second) continue;
+    if (n.sign == 0 || n.sign == numerics::Note::kUndefined) {
+      // a zero (or an undefined value) is shown nowhere by intervals: unless the form is zero
+      // itself, the solution holds at its own point only
+      ex z;
+      try {
+        z = normal(*f);
+      } catch (const std::exception&) {
+        z = *f;
+      }
+      if (n.sign == 0 && z.is_zero()) continue;
+      r.unusable = "a choice reads a value that is zero (or undefined) there";
+      return;
+    }
+    forms.push_back(*f);
+    r.signs.push_back(n.sign);
+  }
+  std::vector<ex> xs(in.x.begin(), in.x.end());
+  try {
+    if (!forms.empty()) r.notes = numerics::Tape::compile(forms, xs);
+    for (const numerics::PathNote& p : t.paths) {
+      // (the coordinate is not a parameter: an input of K's own)
+      const symbol q("q_path");
+      auto q1 = in.map(p.q1), q2 = in.map(p.q2);
+      if (!q1 || !q2) throw std::invalid_argument("ends");
+      Inputs with_q = in;
+      with_q.by_name["q_path"] = q;
+      auto K = with_q.map(p.K.subs(p.q == q));
+      if (!K) throw std::invalid_argument("K");
+      std::vector<ex> kin{q};
+      kin.insert(kin.end(), xs.begin(), xs.end());
+      r.paths.push_back({numerics::Tape::compile(*K, kin), numerics::Tape::compile(std::vector<ex>{*q1, *q2}, xs)});
+    }
+    if (s) {
+      for (const Result& res : s->results) {
+        auto f = in.map(res.closed / res.unit_factor);
+        if (!res.closed_form || !f) {
+          r.unusable = "'" + res.name + "' has no closed form (a number found numerically)";
+          return;
+        }
+        r.results.push_back(numerics::Tape::compile(*f, xs));
+      }
+    }
+  } catch (const std::exception&) {
+    r.unusable = "a form the compiled doubles do not take";
+    r.paths.clear();
+    r.results.clear();
+  }
+  if (!r.ok && !r.paths.empty()) r.unusable = "where a state is not reached is not shown by intervals";
+}
+
+/// Do region r's choices fall the same way at every point of the box whose swept values lie
+/// within radius of mid?
+bool holds(const Region& r, const std::vector<double>& mid, const std::vector<double>& rad) {
+  if (!r.unusable.empty()) return false;
+  if (r.notes) {
+    std::vector<numerics::Enclosed> out(r.signs.size());
+    r.notes->enclose(mid.data(), rad.data(), out.data());
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const auto& e = out[k];
+      if (e.maybe_undefined || !std::isfinite(e.value) || !std::isfinite(e.bound)) return false;
+      if (r.signs[k] > 0 ? !(e.value - e.bound > 0) : !(e.value + e.bound < 0)) return false;
+    }
+  }
+  // the kinetic energy ≥ 0 along every way: q over the ends' hull, in 16 pieces
+  for (const Region::Path& p : r.paths) {
+    numerics::Enclosed ends[2];
+    p.ends.enclose(mid.data(), rad.data(), ends);
+    if (ends[0].maybe_undefined || ends[1].maybe_undefined) return false;
+    const double lo = std::min(ends[0].value - ends[0].bound, ends[1].value - ends[1].bound);
+    const double hi = std::max(ends[0].value + ends[0].bound, ends[1].value + ends[1].bound);
+    if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
+    std::vector<double> m(mid.size() + 1), w(rad.size() + 1);
+    std::copy(mid.begin(), mid.end(), m.begin() + 1);
+    std::copy(rad.begin(), rad.end(), w.begin() + 1);
+    // pieces of the hull, halved where K's enclosure does not stay ≥ 0 (at most 256 of them)
+    std::vector<std::pair<double, double>> pieces{{lo, hi}};
+    for (int tried = 0; !pieces.empty(); ++tried) {
+      if (tried == 256) return false;
+      auto [a, b] = pieces.back();
+      pieces.pop_back();
+      m[0] = (a + b) / 2;
+      w[0] = (b - a) / 2 * (1 + 1e-12) + 1e-300;
+      numerics::Enclosed K;
+      p.K.enclose(m.data(), w.data(), &K);
+      if (K.maybe_undefined) return false;
+      if (K.value - K.bound >= 0) continue;
+      if (!(b - a > 1e-9 * (std::fabs(a) + std::fabs(b)))) return false;
+      pieces.push_back({m[0], b});
+      pieces.push_back({a, m[0]});
+    }
+  }
+  return true;
+}
+
+/// The box's centre and radius in swept values (the radius covers the grid values' doubles).
+void centre(const Grid& g, const Box& b, std::vector<double>& mid, std::vector<double>& rad) {
+  for (std::size_t i = 0; i < g.dims(); ++i) {
+    const double a = g.value(i, b.lo[i]), c = g.value(i, b.hi[i]);
+    mid[i] = (a + c) / 2;
+    rad[i] = std::fabs(c - a) / 2 + 4 * std::numeric_limits<double>::epsilon() * std::max(std::fabs(a), std::fabs(c)) + 1e-300;
+  }
+}
+
+class Engine {
+public:
+  Engine(const scene::SceneDef& def, const std::vector<Range>& ranges, const SweepOptions& options, const Solution& base)
+      : def_(def), grid_{ranges}, options_(options) {
+    for (std::size_t i = 0; i < ranges.size(); ++i) in_.x.push_back(symbol("x" + std::to_string(i)));
+    // a swept parameter is its input times its unit's factor to SI; another, its value
+    for (auto& p : base.model.params)
+      if (p.value) in_.by_name[p.name] = *p.value;
+    for (std::size_t i = 0; i < ranges.size(); ++i) {
+      const units::Quantity q = units::parse_quantity(app::parameter(def, ranges[i].name, "sweep").value.s);
+      in_.by_name[ranges[i].name] = q.unit.factor * in_.x[i];
+    }
+    for (auto& res : base.results) names_.push_back(res.name);
+  }
+
+  Sweep::Summary run(const std::function<void(const Sweep::Row&)>& emit);
+
+  /// The first region: the scene solved at its own values, traced.
+  void start(const numerics::Trace& t, const Solution& base) {
+    Region r;
+    r.ok = true;
+    for (std::size_t i = 0; i < grid_.dims(); ++i) {
+      const units::Quantity q = units::parse_quantity(app::parameter(def_, grid_.ranges[i].name, "sweep").value.s);
+      r.at.push_back(q.number.to_double());
+    }
+    carry(r, t, &base, in_);
+    if (!r.unusable.empty()) sum_.note = "every point solved: " + r.unusable;
+    regions_.push_back(std::move(r));
+  }
+
+private:
+  const scene::SceneDef& def_;
+  Grid grid_;
+  const SweepOptions& options_;
+  Inputs in_;
+  std::vector<std::string> names_;
+  std::vector<Region> regions_;
+  Sweep::Summary sum_;
+
+  scene::SceneDef at_point(const std::vector<double>& values) const {
+    scene::SceneDef at = def_;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      std::ostringstream v;
+      v << std::setprecision(17) << values[i];
+      app::set_parameter(at, grid_.ranges[i].name, v.str() + (grid_.ranges[i].unit.empty() ? "" : " " + grid_.ranges[i].unit));
+    }
+    return at;
+  }
+
+  /// The scene solved at one point: its row, and (traced) a region to carry.
+  Sweep::Row solve_at(const std::vector<double>& values, bool trace, bool confirm_it = false) {
+    Sweep::Row row{values, std::vector<double>(names_.size(), kNaN), "", "solved"};
+    numerics::Trace t;
+    std::optional<Solution> s;
+    try {
+      const scene::SceneDef at = at_point(values);
+      {
+        std::optional<numerics::Tracing> on;
+        if (trace) on.emplace(t);
+        s = solve_scene(at);
+      }
+      if (confirm_it) confirm(*s);
+      for (std::size_t k = 0; k < names_.size(); ++k)
+        for (auto& res : s->results)
+          if (res.name == names_[k] && res.si)
+            if (auto v = res.evaluate(s->model.numeric_environment(), 15, true)) row.values[k] = v->v.to_double();
+    } catch (const SceneError& e) {
+      if (confirm_it && s) throw;  // the confirmation itself disagreed
+      row.error = e.problem();
+      s.reset();
+    }
+    if (trace && regions_.size() < kMaxRegions) {
+      Region r;
+      r.at = values;
+      r.ok = s.has_value();
+      r.error = row.error;
+      carry(r, t, s ? &*s : nullptr, in_);
+      regions_.push_back(std::move(r));
+    }
+    return row;
+  }
+
+  /// Classify the box: the first region shown to hold on all of it, else its halves; a single
+  /// point none holds at stays open.
+  void classify(const Box& b, std::vector<std::uint8_t>& id, const std::vector<std::size_t>& stride, std::size_t origin) {
+    poll_interrupt();
+    std::vector<double> mid(grid_.dims()), rad(grid_.dims());
+    centre(grid_, b, mid, rad);
+    for (std::size_t r = 0; r < regions_.size(); ++r)
+      if (holds(regions_[r], mid, rad)) {
+        fill(b, id, stride, origin, static_cast<std::uint8_t>(r));
+        return;
+      }
+    std::size_t widest = 0, span = 0;
+    for (std::size_t i = 0; i < grid_.dims(); ++i)
+      if (b.hi[i] - b.lo[i] > span) span = b.hi[i] - b.lo[i], widest = i;
+    if (span == 0) return;  // one point: open
+    Box a = b, c = b;
+    a.hi[widest] = b.lo[widest] + span / 2;
+    c.lo[widest] = a.hi[widest] + 1;
+    classify(a, id, stride, origin);
+    classify(c, id, stride, origin);
+  }
+
+  static void fill(const Box& b, std::vector<std::uint8_t>& id, const std::vector<std::size_t>& stride, std::size_t origin, std::uint8_t r) {
+    std::vector<std::size_t> j = b.lo;
+    for (;;) {
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < j.size(); ++i) k += j[i] * stride[i];
+      id[k - origin] = r;
+      std::size_t i = j.size();
+      while (i-- > 0) {
+        if (j[i] < b.hi[i]) {
+          ++j[i];
+          break;
+        }
+        j[i] = b.lo[i];
+      }
+      if (i == static_cast<std::size_t>(-1)) return;
+    }
+  }
+
+  /// Row of a point that region r holds at (a closed form's values, each to 1e-13), or nothing
+  /// when a double is not that accurate there.
+  std::optional<Sweep::Row> carried(const Region& r, const std::vector<double>& values) const {
+    Sweep::Row row{values, std::vector<double>(names_.size(), kNaN), "", "closed form"};
+    if (!r.ok) {
+      std::ostringstream at;
+      for (std::size_t i = 0; i < values.size(); ++i)
+        at << (i ? ", " : "") << grid_.ranges[i].name << " = " << std::setprecision(15) << r.at[i];
+      row.error = "as solved at " + at.str() + " (every choice falls the same way here): " + r.error;
+      row.how = "as solved at another point";
+      return row;
+    }
+    std::vector<double> dx(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) dx[i] = 0;
+    for (std::size_t k = 0; k < r.results.size(); ++k) {
+      const numerics::Bounded b = r.results[k].bounded(values.data(), dx.data());
+      if (!std::isfinite(b.value) || !(b.bound <= kRelBound * std::fabs(b.value))) return std::nullopt;
+      row.values[k] = b.value;
+    }
+    return row;
+  }
+
+  void confirm_sample(const std::vector<std::uint8_t>& id, std::size_t origin);
+  void open_point(const std::vector<double>& values, Sweep::Row& row);
+};
+
+/// An open point: a region found since that holds at it, else solved here (and carried on).
+void Engine::open_point(const std::vector<double>& values, Sweep::Row& row) {
+  std::vector<double> rad(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) rad[i] = 4 * std::numeric_limits<double>::epsilon() * std::fabs(values[i]) + 1e-300;
+  for (const Region& r : regions_)
+    if (holds(r, values, rad))
+      if (auto c = carried(r, values)) {
+        row = *c;
+        return;
+      }
+  row = solve_at(values, true);
+}
+
+/// A sample of the points the closed forms give, solved in full and confirmed a second way: each
+/// value the same to 1e-12, each point without a solution without one there too.
+void Engine::confirm_sample(const std::vector<std::uint8_t>& id, std::size_t origin) {
+  std::vector<std::size_t> carried_at;
+  for (std::size_t k = 0; k < id.size(); ++k)
+    if (id[k] != kOpen) carried_at.push_back(k);
+  if (carried_at.empty() || options_.samples <= 0) return;
+  const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(options_.samples), carried_at.size());
+  std::vector<std::size_t> idx(grid_.dims());
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::size_t k = carried_at[n == 1 ? 0 : s * (carried_at.size() - 1) / (n - 1)];
+    std::size_t rest = origin + k;
+    std::vector<double> values(grid_.dims());
+    for (std::size_t i = grid_.dims(); i-- > 0;) {
+      values[i] = grid_.value(i, rest % grid_.count(i));
+      rest /= grid_.count(i);
+    }
+    auto fast = carried(regions_[id[k]], values);
+    if (!fast) continue;  // (solved there anyway)
+    const Sweep::Row full = solve_at(values, false, options_.confirm);
+    std::ostringstream at;
+    for (std::size_t i = 0; i < values.size(); ++i) at << (i ? ", " : "") << grid_.ranges[i].name << " = " << std::setprecision(15) << values[i];
+    auto disagree = [&](const std::string& what) {
+      throw SceneError(SourcePos{def_.file, 1, 1}, "the sweep's closed form and a full solve disagree at " + at.str() + ": " + what,
+                       "sweep with --per-point (the scene solved at every point), and report this scene");
+    };
+    if (fast->error.empty() != full.error.empty())
+      disagree(fast->error.empty() ? "the closed form gives values, the solve says: " + full.error : "the solve gives values, the closed form says: " + fast->error);
+    for (std::size_t r = 0; r < names_.size(); ++r) {
+      const double a = fast->values[r], b = full.values[r];
+      if (std::isnan(a) && std::isnan(b)) continue;
+      const double d = std::fabs(a - b) / std::max(std::fabs(b), 1e-300);
+      if (!(d <= 1e-12)) {
+        std::ostringstream w;
+        w << std::setprecision(17) << names_[r] << " = " << a << " by the closed form, " << b << " by the solve";
+        disagree(w.str());
+      }
+      sum_.difference = std::max(sum_.difference, a == b ? 0.0 : d);
+    }
+    ++sum_.confirmed;
+  }
+}
+
+Sweep::Summary Engine::run(const std::function<void(const Sweep::Row&)>& emit) {
+  const std::size_t d = grid_.dims();
+  std::size_t total = 1;
+  for (std::size_t i = 0; i < d; ++i) total *= grid_.count(i);
+  sum_.points = total;
+  // slabs: the leading ranges fixed, the rest (at most 2^22 points) classified at once
+  std::size_t lead = 0, inner = total;
+  while (lead + 1 < d && inner > (std::size_t{1} << 22)) inner /= grid_.count(lead++);
+  std::vector<std::size_t> stride(d, 1);
+  for (std::size_t i = d - 1; i-- > 0;) stride[i] = stride[i + 1] * grid_.count(i + 1);
+  std::size_t done = 0;
+  std::vector<std::size_t> idx(d);
+  for (std::size_t origin = 0; origin < total; origin += inner) {
+    std::vector<std::uint8_t> id(inner, kOpen);
+    if (!options_.per_point) {
+      Box b;
+      std::size_t rest = origin;
+      for (std::size_t i = d; i-- > 0;) {
+        idx[i] = rest % grid_.count(i);
+        rest /= grid_.count(i);
+      }
+      b.lo = idx;
+      b.hi = idx;
+      for (std::size_t i = lead; i < d; ++i) b.lo[i] = 0, b.hi[i] = grid_.count(i) - 1;
+      classify(b, id, stride, origin);
+      if (origin == 0) confirm_sample(id, origin);
+    }
+    for (std::size_t k = 0; k < inner; ++k) {
+      if ((k & 1023) == 0) {
+        poll_interrupt();
+        if (options_.progress) options_.progress(done, total);
+      }
+      std::size_t rest = origin + k;
+      std::vector<double> values(d);
+      for (std::size_t i = d; i-- > 0;) {
+        values[i] = grid_.value(i, rest % grid_.count(i));
+        rest /= grid_.count(i);
+      }
+      Sweep::Row row;
+      std::optional<Sweep::Row> c;
+      if (id[k] != kOpen) c = carried(regions_[id[k]], values);
+      if (c) row = std::move(*c);
+      else if (options_.per_point) row = solve_at(values, false);
+      else open_point(values, row);
+      if (row.how == "solved") ++sum_.solved;
+      else ++sum_.closed;
+      if (!row.error.empty()) ++sum_.failed;
+      emit(row);
+      ++done;
+    }
+  }
+  if (options_.progress) options_.progress(done, total);
+  sum_.regions = regions_.size();
+  if (options_.per_point) sum_.note = "every point solved (--per-point)";
+  return sum_;
+}
+
+}  // namespace
+
+Sweep::Summary sweep_rows(const scene::SceneDef& def, const std::vector<Range>& ranges, const SweepOptions& options,
+                          std::vector<std::string>& parameters, std::vector<std::string>& results,
+                          const std::function<void(const Sweep::Row&)>& row) {
+  // the scene at its own values first (a bad scene is refused once, not at every point), its
+  // choices traced: the first solution carried
+  numerics::Trace t;
+  std::optional<Solution> solved;
+  {
+    const numerics::Tracing on(t);
+    solved = solve_scene(def);
+  }
+  const Solution& base = *solved;
+  parameters.clear();
+  results.clear();
+  for (auto& r : ranges) parameters.push_back(r.name + (r.unit.empty() ? "" : " (" + r.unit + ")"));
+  for (auto& res : base.results) results.push_back(res.name + (res.unit.empty() ? "" : " (" + res.unit + ")"));
+  Engine e(def, ranges, options, base);
+  if (!options.per_point) e.start(t, base);
+  return e.run(row);
+}
+
+Sweep sweep(const scene::SceneDef& def, const std::vector<Range>& ranges, const SweepOptions& options) {
+  Sweep out;
+  out.summary = sweep_rows(def, ranges, options, out.parameters, out.results, [&](const Sweep::Row& r) { out.rows.push_back(r); });
+  return out;
+}
+
+}  // namespace kinergy::batch
