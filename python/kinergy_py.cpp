@@ -26,6 +26,7 @@
 #include <sstream>
 
 #include "kinergy/app/app.hpp"
+#include "kinergy/batch/batch.hpp"
 #include "kinergy/common/error.hpp"
 #include "kinergy/common/interrupt.hpp"
 #include "kinergy/confirm/confirm.hpp"
@@ -785,4 +786,23 @@ PYBIND11_MODULE(_kinergy, m) {
       });
   m.def("load", &load, py::arg("path"), sig("load(path)", "a scene from a YAML file (a str or any os.PathLike)"));
   m.def("loads", &loads, py::arg("text"), py::arg("name") = "<string>", sig("loads(text, name='<string>')", "a scene from YAML text"));
+  // many requests, as `kinergy batch` reads them (one JSON object each): the results' lines, in
+  // order; variants of a scene share its solution where it holds (batch.hpp)
+  m.def(
+      "_batch",
+      [](const std::vector<std::string>& requests) {
+        std::string all;
+        for (auto& r : requests) all += r + "\n";
+        const std::string out = in_core([&] {
+          std::istringstream in(all);
+          std::ostringstream o;
+          kinergy::batch::run(in, o);
+          return o.str();
+        });
+        std::vector<std::string> lines;
+        std::istringstream split(out);
+        for (std::string l; std::getline(split, l);) lines.push_back(l);
+        return lines;
+      },
+      py::arg("requests"), sig("_batch(requests)", "each request's result line (JSON), in order"));
 }

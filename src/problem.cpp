@@ -191,7 +191,7 @@ struct Selector {
 std::string Value::note() const {
   switch (how) {
     case How::Exact: return "exact";
-    case How::Double: return "double, |error| <= " + numerics::format(numeric(bound), 2);
+    case How::Double: return "double, |error| <= " + numerics::format_double(bound, 2);
     case How::Precise:
       if (proven) return "proven: ball radius " + numerics::format(numerics::round_up2((hi - lo) / 2), 2) + ", " + std::to_string(working) + " digits";
       return "not proven: two working precisions agree, " + std::to_string(working) + " digits";

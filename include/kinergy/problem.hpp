@@ -71,9 +71,12 @@ struct Confirmed {
   int analysis = -1;
   /// How: by a simulation of the same scene, by the equations' residuals at the solution at 50
   /// digits, by the equations of motion at a state (kinetics), or not at all (`note` says why).
-  enum class By { None, Simulation, Residuals, EquationsOfMotion };
+  /// Shared: a batch request that differs from an earlier one only in parameter values, whose
+  /// solution (confirmed there) is shown to hold at these values (batch/carry.hpp).
+  enum class By { None, Simulation, Residuals, EquationsOfMotion, Shared };
   By by = By::None;
-  /// Its name in JSON and the Python module: "simulation", "residuals", "equations of motion", "".
+  /// Its name in JSON and the Python module: "simulation", "residuals", "equations of motion",
+  /// "shared solution", "".
   static std::string name(By b);
   double difference = 0;  ///< the largest relative difference found
   double tolerance = 0;   ///< what it was checked against

@@ -33,6 +33,21 @@ def bank(root):
     return items
 
 
+def solve_chunk(path, variants, start):
+    """Variants of one scene (a dict of parameter values each), in one kinergy.batch call: they
+    share the scene's solution where it holds. {result name: value as text} or {"error": message}
+    for each."""
+    results = kinergy.batch({"scene": path, "set": sets, "id": start + i} for i, sets in enumerate(variants))
+    return [{r["name"]: r["value"] for r in out["solution"]["results"]} if out["ok"] else {"error": out["error"]["message"]}
+            for out in results]
+
+
+def solve_variants(client, path, variants, chunk=10000):
+    """A bank of variants of one scene on the cluster, `chunk` variants a task, in order."""
+    futures = [client.submit(solve_chunk, path, variants[i:i + chunk], i, pure=False) for i in range(0, len(variants), chunk)]
+    return [r for part in client.gather(futures) for r in part]
+
+
 def solve_bank(client, items):
     futures = [client.submit(solve_one, path, sets, pure=False) for path, sets in items]
     return client.gather(futures)

@@ -11,6 +11,7 @@ A bad scene or request raises kinergy.SceneError (a ValueError) with file, line,
 and fix. Calls release the GIL while they compute; kinergy's core takes one call at a time, so
 parallel solving is by processes (multiprocessing, Dask: Scene and Solution pickle).
 """
+import json as _json
 import os as _os
 
 from ._kinergy import (  # noqa: F401
@@ -20,11 +21,12 @@ from ._kinergy import (  # noqa: F401
     Solution,
     Verdict,
     __version__,
+    _batch,
     load,
     loads,
 )
 
-__all__ = ["Result", "Scene", "SceneError", "Solution", "Verdict", "load", "loads", "derivations", "example", "__version__"]
+__all__ = ["Result", "Scene", "SceneError", "Solution", "Verdict", "load", "loads", "derivations", "example", "batch", "__version__"]
 
 # the classes are kinergy's (their module is the package's, for help(), repr and pickle)
 for _cls in (Result, Scene, Solution, Verdict):
@@ -59,3 +61,18 @@ def example(name: str) -> Scene:
                        for d, _, fs in _os.walk(derivations()) for f in fs if f.endswith(".yaml"))
         raise _error(f"there is no worked problem '{name}'", "name one of: " + ", ".join(found))
     return load(path)
+
+
+def batch(requests):
+    """Many requests in one call, each as `kinergy batch` reads a line: a dict such as
+    {"scene": "derivations/energy/sliding_rod.yaml", "set": {"l": "2 m"}, "id": 7} (or its JSON
+    text). Returns each result as `kinergy batch` writes it, as a dict, in order: "ok", and the
+    "solution" or the "error". Requests that differ only in the values "set" gives share the first
+    one's solution wherever every choice it made falls the same way (its closed forms evaluated
+    there; a sample solved in full must agree): a bank of variants runs at the speed of the closed
+    form. A failing request is a result with "ok": False; it never raises."""
+    lines = [r if isinstance(r, str) else _json.dumps(r) for r in requests]
+    for i, line in enumerate(lines):
+        if "\n" in line or not line.strip():
+            raise _error(f"request {i} is blank or spans lines", "give one JSON object a request")
+    return [_json.loads(out) for out in _batch(lines)]

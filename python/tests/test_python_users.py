@@ -237,3 +237,22 @@ def test_every_function_has_the_signature_its_stub_gives():
     # what an IDE shows
     assert str(inspect.signature(kinergy.Solution.simulate)) == "(self, until, samples=1000, start=None)"
     assert str(inspect.signature(kinergy.load)) == "(path)"
+
+
+# ------------------------------------------------------------------ issue 30: banks of variants
+def test_batch_shares_a_solution_between_variants_and_equals_solving_each():
+    path = os.path.join(kinergy.derivations(), "energy", "sliding_rod.yaml")
+    variants = [{"l": f"{0.6 + 0.02 * i:.2f} m", "theta2": f"{25 + 2 * i} deg"} for i in range(40)]
+    out = kinergy.batch([{"scene": path, "set": v, "id": i} for i, v in enumerate(variants)] + ['{"scene": "nope.yaml"}'])
+    assert [r["ok"] for r in out] == [True] * 40 + [False]
+    assert out[-1]["error"]["message"] == "the scene file does not exist"
+    shared = [r for r in out[:40] if r["solution"]["confirmed"][0]["by"] == "shared solution"]
+    assert len(shared) >= 38
+    for v, r in zip(variants, out):
+        scene = kinergy.load(path)
+        scene.set(**v)
+        alone = scene.solve()
+        assert r["id"] == variants.index(v)
+        assert abs(float(r["solution"]["results"][0]["value"]) - float(alone["omega2"])) <= 1e-12 * float(alone["omega2"])
+    with pytest.raises(kinergy.SceneError):
+        kinergy.batch(["{}\n{}"])

@@ -8,6 +8,7 @@
 // choices are made at every point of the box, so the same closed forms hold there. The values
 // are then the closed forms in doubles, each with its running error bound.
 #include "kinergy/batch/sweep.hpp"
+#include "kinergy/batch/carry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,9 +36,6 @@ using namespace GiNaC;
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-/// A value from a closed form is taken when its double's error bound is within this of it (the
-/// per-point solve rounds to 15 digits: the two then agree to 1e-12).
-constexpr double kRelBound = 1e-13;
 constexpr std::uint8_t kOpen = 255;  ///< a grid point no region is shown to hold at (yet)
 constexpr std::size_t kMaxRegions = 32;
 
@@ -56,174 +54,6 @@ struct Grid {
 struct Box {
   std::vector<std::size_t> lo, hi;
 };
-
-/// The swept values' symbols (one input of every compiled form each), and how a form recorded by
-/// a solve becomes a form in them: each symbol by its name, a swept parameter as its factor to SI
-/// times its input, another parameter as its value.
-struct Inputs {
-  std::vector<symbol> x;
-  std::map<std::string, ex> by_name;
-
-  /// e in the inputs, or nothing when it holds a symbol that is neither (a state's place whose
-  /// form was not followed).
-  std::optional<ex> map(const ex& e) const {
-    exmap sub;
-    bool lost = false;
-    collect(e, sub, lost);
-    if (lost) return std::nullopt;
-    try {
-      return e.subs(sub);
-    } catch (const std::exception&) {
-      return std::nullopt;
-    }
-  }
-
-private:
-  void collect(const ex& e, exmap& sub, bool& lost) const {
-    if (is_a<symbol>(e)) {
-      auto it = by_name.find(ex_to<symbol>(e).get_name());
-      if (it == by_name.end()) lost = true;
-      else sub[e] = it->second;
-      return;
-    }
-    for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i), sub, lost);
-  }
-};
-
-/// Does e hold one of the inputs?
-bool holds_input(const ex& e, const Inputs& in) {
-  return std::any_of(in.x.begin(), in.x.end(), [&](const symbol& s) { return e.has(s); });
-}
-
-/// What one solve (at one grid point) found, and what makes it hold at others.
-struct Region {
-  std::vector<double> at;
-  bool ok = false;
-  std::string error;     ///< !ok: why the scene has no solution there
-  std::string unusable;  ///< why it holds only at `at` ("": it is carried to any box its choices hold in)
-  std::optional<numerics::Tape> notes;  ///< every sign its choices read, in the inputs
-  std::vector<int> signs;
-  struct Path {
-    numerics::Tape K;     ///< K(q, inputs) ≥ 0 along the way
-    numerics::Tape ends;  ///< q1, q2 (inputs)
-  };
-  std::vector<Path> paths;
-  std::vector<numerics::Tape> results;  ///< each result in its display unit (ok and usable)
-};
-
-/// Compile what a traced solve read, and its results, in the inputs.
-void carry(Region& r, const numerics::Trace& t, const Solution* s, const Inputs& in) {
-  if (!t.untraced.empty()) {
-    r.unusable = "a choice depends on " + t.untraced;
-    return;
-  }
-  std::set<std::pair<ex, int>, bool (*)(const std::pair<ex, int>&, const std::pair<ex, int>&)> seen(
-      [](const std::pair<ex, int>& a, const std::pair<ex, int>& b) {
-        if (a.second != b.second) return a.second < b.second;
-        return ex_is_less()(a.first, b.first);
-      });
-  std::vector<ex> forms;
-  for (const numerics::Note& n : t.notes) {
-    auto f = in.map(n.e);
-    if (!f) {
-      r.unusable = "a choice reads a value whose form in the parameters is not followed";
-      return;
-    }
-    if (!holds_input(*f, in)) continue;  // the same at every point
-    if (!seen.insert({*f, n.sign}).second) continue;
-    if (n.sign == 0 || n.sign == numerics::Note::kUndefined) {
-      // a zero (or an undefined value) is shown nowhere by intervals: unless the form is zero
-      // itself, the solution holds at its own point only
-      ex z;
-      try {
-        z = normal(*f);
-      } catch (const std::exception&) {
-        z = *f;
-      }
-      if (n.sign == 0 && z.is_zero()) continue;
-      r.unusable = "a choice reads a value that is zero (or undefined) there";
-      return;
-    }
-    forms.push_back(*f);
-    r.signs.push_back(n.sign);
-  }
-  std::vector<ex> xs(in.x.begin(), in.x.end());
-  try {
-    if (!forms.empty()) r.notes = numerics::Tape::compile(forms, xs);
-    for (const numerics::PathNote& p : t.paths) {
-      // (the coordinate is not a parameter: an input of K's own)
-      const symbol q("q_path");
-      auto q1 = in.map(p.q1), q2 = in.map(p.q2);
-      if (!q1 || !q2) throw std::invalid_argument("ends");
-      Inputs with_q = in;
-      with_q.by_name["q_path"] = q;
-      auto K = with_q.map(p.K.subs(p.q == q));
-      if (!K) throw std::invalid_argument("K");
-      std::vector<ex> kin{q};
-      kin.insert(kin.end(), xs.begin(), xs.end());
-      r.paths.push_back({numerics::Tape::compile(*K, kin), numerics::Tape::compile(std::vector<ex>{*q1, *q2}, xs)});
-    }
-    if (s) {
-      for (const Result& res : s->results) {
-        auto f = in.map(res.closed / res.unit_factor);
-        if (!res.closed_form || !f) {
-          r.unusable = "'" + res.name + "' has no closed form (a number found numerically)";
-          return;
-        }
-        r.results.push_back(numerics::Tape::compile(*f, xs));
-      }
-    }
-  } catch (const std::exception&) {
-    r.unusable = "a form the compiled doubles do not take";
-    r.paths.clear();
-    r.results.clear();
-  }
-  if (!r.ok && !r.paths.empty()) r.unusable = "where a state is not reached is not shown by intervals";
-}
-
-/// Do region r's choices fall the same way at every point of the box whose swept values lie
-/// within radius of mid?
-bool holds(const Region& r, const std::vector<double>& mid, const std::vector<double>& rad) {
-  if (!r.unusable.empty()) return false;
-  if (r.notes) {
-    std::vector<numerics::Enclosed> out(r.signs.size());
-    r.notes->enclose(mid.data(), rad.data(), out.data());
-    for (std::size_t k = 0; k < out.size(); ++k) {
-      const auto& e = out[k];
-      if (e.maybe_undefined || !std::isfinite(e.value) || !std::isfinite(e.bound)) return false;
-      if (r.signs[k] > 0 ? !(e.value - e.bound > 0) : !(e.value + e.bound < 0)) return false;
-    }
-  }
-  // the kinetic energy ≥ 0 along every way: q over the ends' hull, in 16 pieces
-  for (const Region::Path& p : r.paths) {
-    numerics::Enclosed ends[2];
-    p.ends.enclose(mid.data(), rad.data(), ends);
-    if (ends[0].maybe_undefined || ends[1].maybe_undefined) return false;
-    const double lo = std::min(ends[0].value - ends[0].bound, ends[1].value - ends[1].bound);
-    const double hi = std::max(ends[0].value + ends[0].bound, ends[1].value + ends[1].bound);
-    if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
-    std::vector<double> m(mid.size() + 1), w(rad.size() + 1);
-    std::copy(mid.begin(), mid.end(), m.begin() + 1);
-    std::copy(rad.begin(), rad.end(), w.begin() + 1);
-    // pieces of the hull, halved where K's enclosure does not stay ≥ 0 (at most 256 of them)
-    std::vector<std::pair<double, double>> pieces{{lo, hi}};
-    for (int tried = 0; !pieces.empty(); ++tried) {
-      if (tried == 256) return false;
-      auto [a, b] = pieces.back();
-      pieces.pop_back();
-      m[0] = (a + b) / 2;
-      w[0] = (b - a) / 2 * (1 + 1e-12) + 1e-300;
-      numerics::Enclosed K;
-      p.K.enclose(m.data(), w.data(), &K);
-      if (K.maybe_undefined) return false;
-      if (K.value - K.bound >= 0) continue;
-      if (!(b - a > 1e-9 * (std::fabs(a) + std::fabs(b)))) return false;
-      pieces.push_back({m[0], b});
-      pieces.push_back({a, m[0]});
-    }
-  }
-  return true;
-}
 
 /// The box's centre and radius in swept values (the radius covers the grid values' doubles).
 void centre(const Grid& g, const Box& b, std::vector<double>& mid, std::vector<double>& rad) {
@@ -368,13 +198,12 @@ private:
       row.how = "as solved at another point";
       return row;
     }
-    std::vector<double> dx(values.size());
-    for (std::size_t i = 0; i < values.size(); ++i) dx[i] = 0;
-    for (std::size_t k = 0; k < r.results.size(); ++k) {
-      const numerics::Bounded b = r.results[k].bounded(values.data(), dx.data());
-      if (!std::isfinite(b.value) || !(b.bound <= kRelBound * std::fabs(b.value))) return std::nullopt;
-      row.values[k] = b.value;
-    }
+    // (a grid value's double is within half an ulp of the decimal a solve at the point reads)
+    std::vector<double> dx;
+    for (double v : values) dx.push_back(1.2e-16 * std::fabs(v));
+    auto v = values_at(r, values.data(), dx.data());
+    if (!v) return std::nullopt;
+    for (std::size_t k = 0; k < v->size(); ++k) row.values[k] = (*v)[k].value;
     return row;
   }
 

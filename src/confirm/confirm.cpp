@@ -63,6 +63,7 @@ std::string Confirmed::name(By b) {
     case By::Simulation: return "simulation";
     case By::Residuals: return "residuals";
     case By::EquationsOfMotion: return "equations of motion";
+    case By::Shared: return "shared solution";
     case By::None: break;
   }
   return "";

@@ -17,7 +17,10 @@ static std::optional<Value> value_of(const Solution& s, const Result& r, const O
 }
 
 static std::string value_text(const std::optional<Value>& v, int digits) {
-  return v ? numerics::format(v->v, digits) : std::string();
+  if (!v) return std::string();
+  // a double's text without CLN (the same text: numerics::format_double)
+  if (v->how == Value::How::Double && digits <= 17) return numerics::format_double(v->v.to_double(), digits);
+  return numerics::format(v->v, digits);
 }
 
 /// A confirmation's difference as the decade that bounds it ("1e-11"; "0" when exactly zero): the
@@ -42,6 +45,7 @@ static std::string confirmed_text(const Confirmed& c) {
   std::string t = c.by == By::Simulation          ? "by simulation, relative difference " + d
                   : c.by == By::Residuals         ? "by the equations' residuals at 50 digits, relative " + d
                   : c.by == By::EquationsOfMotion ? "by the equations of motion, relative difference " + d
+                  : c.by == By::Shared            ? "by a shared solution, confirmed where it was found"
                                         : "not confirmed";
   return t + (c.note.empty() ? "" : " (" + c.note + ")");
 }
@@ -93,17 +97,63 @@ std::string text(const std::vector<verify::Check>& checks, const std::string& fi
 static std::string quote(const std::string& s) { return json_quote(s); }
 
 std::string json(const Solution& s, const Options& o, const std::vector<verify::Check>* checks) {
+  std::vector<std::optional<Value>> values;
+  for (const Result& r : s.results) values.push_back(value_of(s, r, o));
+  return json(s, o, values, s.confirmed, checks);
+}
+
+namespace {
+/// Where a JSON template (json_template) takes each result's value and its evaluation's note.
+constexpr char kMark = '\x01';
+}  // namespace
+
+/// The JSON of json() below; with `marks`, kMark in place of each value and each evaluation.
+static std::string write_json(const Solution& s, const Options& o, const std::vector<std::optional<Value>>& values,
+                              const std::vector<Confirmed>& confirmed, const std::vector<verify::Check>* checks, bool marks);
+
+std::string json(const Solution& s, const Options& o, const std::vector<std::optional<Value>>& values,
+                 const std::vector<Confirmed>& confirmed, const std::vector<verify::Check>* checks) {
+  return write_json(s, o, values, confirmed, checks, false);
+}
+
+JsonTemplate json_template(const Solution& s, const Options& o, const std::vector<Confirmed>& confirmed) {
+  std::vector<std::optional<Value>> values(s.results.size(), Value{});
+  const std::string all = write_json(s, o, values, confirmed, nullptr, true);
+  JsonTemplate t;
+  std::size_t from = 0;
+  for (std::size_t at = all.find(kMark); at != std::string::npos; at = all.find(kMark, from)) {
+    t.pieces.push_back(all.substr(from, at - from));
+    from = at + 1;
+  }
+  t.pieces.push_back(all.substr(from));
+  t.digits = o.digits;
+  return t;
+}
+
+std::string fill(const JsonTemplate& t, const std::vector<Value>& values) {
+  std::string out = t.pieces[0];
+  for (std::size_t i = 0; i < values.size() && 2 * i + 2 < t.pieces.size(); ++i) {
+    out += value_text(values[i], t.digits);
+    out += t.pieces[2 * i + 1];
+    out += values[i].note();
+    out += t.pieces[2 * i + 2];
+  }
+  return out;
+}
+
+static std::string write_json(const Solution& s, const Options& o, const std::vector<std::optional<Value>>& values,
+                              const std::vector<Confirmed>& confirmed, const std::vector<verify::Check>* checks, bool marks) {
   std::ostringstream os;
   os << "{\"file\": " << quote(s.model.file) << ", \"title\": " << quote(s.model.title) << ", \"results\": [";
   for (std::size_t i = 0; i < s.results.size(); ++i) {
     const Result& r = s.results[i];
-    auto val = value_of(s, r, o);
+    const std::optional<Value>& val = values[i];
     std::string v = value_text(val, o.digits);
     os << (i ? ", " : "") << "{\"name\": " << quote(r.name) << ", \"closed_form\": "
        << (r.closed_form ? quote(plain(r.closed)) : std::string("null"))
-       << ", \"value\": " << (v.empty() ? std::string("null") : quote(v)) << ", \"unit\": " << quote(r.unit)
+       << ", \"value\": " << (marks ? "\"" + std::string(1, kMark) + "\"" : v.empty() ? std::string("null") : quote(v)) << ", \"unit\": " << quote(r.unit)
        << ", \"dimension\": " << quote(r.dim.str())
-       << ", \"evaluation\": " << (val ? quote(val->note()) : std::string("null"));
+       << ", \"evaluation\": " << (marks ? "\"" + std::string(1, kMark) + "\"" : val ? quote(val->note()) : std::string("null"));
     // with --digits, the enclosure: the exact value lies within radius of midpoint
     if (val && o.guaranteed) {
       auto [mid, rad] = val->ball(o.digits);
@@ -119,10 +169,10 @@ std::string json(const Solution& s, const Options& o, const std::vector<verify::
          << quote(s.valid_where[i].assumed) << "}";
     os << "]";
   }
-  if (!s.confirmed.empty()) {
+  if (!confirmed.empty()) {
     os << ", \"confirmed\": [";
-    for (std::size_t i = 0; i < s.confirmed.size(); ++i) {
-      const Confirmed& c = s.confirmed[i];
+    for (std::size_t i = 0; i < confirmed.size(); ++i) {
+      const Confirmed& c = confirmed[i];
       os << (i ? ", " : "") << "{\"analysis\": " << quote(analysis_name(s, c.analysis)) << ", \"by\": "
          << (c.by == Confirmed::By::None ? std::string("null") : quote(Confirmed::name(c.by))) << ", \"within\": "
          << (c.by == Confirmed::By::None ? std::string("null") : quote(decade(c.difference)))

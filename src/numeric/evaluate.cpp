@@ -1,5 +1,7 @@
 #include "kinergy/numeric/evaluate.hpp"
 
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -134,12 +136,11 @@ GiNaC::numeric round_sig(const GiNaC::numeric& v, int n) {
   return d.neg ? -r : r;
 }
 
-std::string format(const GiNaC::numeric& v, int n) {
-  Decimal d = decompose(v, n);
-  if (d.digits == "0") return "0";
-  std::string s = d.digits;
+namespace {
+
+/// Decimal digits s (value = 0.s × 10^e, trailing zeros dropped) laid out as format() writes them.
+std::string layout(bool neg, std::string s, long e) {
   while (s.size() > 1 && s.back() == '0') s.pop_back();  // trailing zeros carry no information here
-  long e = d.exp10;  // value = 0.s × 10^e
   std::string out;
   if (e > -5 && e <= 16) {
     if (e <= 0) out = "0." + std::string(static_cast<std::size_t>(-e), '0') + s;
@@ -148,8 +149,55 @@ std::string format(const GiNaC::numeric& v, int n) {
   } else {
     out = s.substr(0, 1) + (s.size() > 1 ? "." + s.substr(1) : "") + "e" + std::to_string(e - 1);
   }
-  return (d.neg ? "-" : "") + out;
+  return (neg ? "-" : "") + out;
 }
+
+/// d's first n significant digits, correctly rounded as the library rounds (ties to even), and its
+/// decimal exponent: d = D.DDD… × 10^x.
+std::pair<std::string, long> sci(double d, int n, char* buf, std::size_t size) {
+  const auto r = std::to_chars(buf, buf + size, d, std::chars_format::scientific, n - 1);
+  const std::string t(buf, r.ptr);
+  const std::size_t ep = t.find('e');
+  std::string digits;
+  for (std::size_t i = 0; i < ep; ++i)
+    if (std::isdigit(static_cast<unsigned char>(t[i]))) digits += t[i];
+  return {digits, std::stol(t.substr(ep + 1))};
+}
+
+}  // namespace
+
+std::string format_double(double d, int n) {
+  if (d == 0) return "0";
+  const bool neg = d < 0;
+  const double a = std::fabs(d);
+  char buf[1100];
+  auto [digits, x] = sci(a, n, buf, sizeof buf);
+  // a tie (the exact value's digits past the n-th are 5 then zeros) rounds away from zero here,
+  // to even in the library: every digit of a double's exact value (at most 767) shows which
+  auto [all, xa] = sci(a, n + 2, buf, sizeof buf);
+  if (all[static_cast<std::size_t>(n)] == '5' && all.find_first_not_of('0', static_cast<std::size_t>(n) + 1) == std::string::npos) {
+    auto [exact, xe] = sci(a, 780, buf, sizeof buf);
+    const bool tie = exact[static_cast<std::size_t>(n)] == '5' && exact.find_first_not_of('0', static_cast<std::size_t>(n) + 1) == std::string::npos;
+    if (tie && xe == xa) {
+      // round the n digits up (9.99… → 10.0…)
+      std::string up = exact.substr(0, static_cast<std::size_t>(n));
+      int i = n - 1;
+      while (i >= 0 && up[static_cast<std::size_t>(i)] == '9') up[static_cast<std::size_t>(i--)] = '0';
+      if (i >= 0) ++up[static_cast<std::size_t>(i)];
+      else up = "1" + up.substr(0, up.size() - 1), ++xe;
+      digits = up;
+      x = xe;
+    }
+  }
+  return layout(neg, digits, x + 1);
+}
+
+std::string format(const GiNaC::numeric& v, int n) {
+  Decimal d = decompose(v, n);
+  if (d.digits == "0") return "0";
+  return layout(d.neg, d.digits, d.exp10);
+}
+
 
 namespace {
 

@@ -7,6 +7,7 @@
 #include <regex>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "../support/helpers.hpp"
@@ -125,4 +126,58 @@ TEST_CASE("batch: each request confirmed a second way unless it says \"confirm\"
   const std::string off = kinergy::batch::run_line("{\"scene\": \"" + kRod + "\", \"confirm\": false}", 1);
   CHECK(off.find("\"ok\": true") != std::string::npos);
   CHECK(off.find("\"confirmed\"") == std::string::npos);
+}
+
+TEST_CASE("batch: variants of a scene share its solution where every choice falls the same way, and equal full solves",
+          "[batch][variants]") {
+  // variants of the rod: lengths, angles (past 180° the rod does not get there), other units, a
+  // negative length (another sign: solved in full), the plain form and the full reader's
+  std::vector<std::string> requests;
+  for (int i = 0; i < 60; ++i) {
+    std::ostringstream r;
+    const double l = 0.5 + 0.025 * i, deg = 20 + 3.5 * i;
+    r << std::setprecision(12) << "{\"id\": " << i << ", \"scene\": \"" << kRod << "\", \"set\": {\"l\": \"" << l << " m\", \"theta2\": \"" << deg
+      << " deg\"}}";
+    requests.push_back(r.str());
+  }
+  requests.push_back("{\"id\": \"cm\", \"scene\": \"" + kRod + "\", \"set\": {\"l\": \"150 cm\", \"theta2\": \"45 deg\"}}");
+  requests.push_back("{\"id\": \"rad\", \"scene\": \"" + kRod + "\", \"set\": {\"theta2\": \"1 rad\", \"l\": \"1.5 m\"}}");
+  requests.push_back("{\"scene\": \"" + kRod + "\", \"set\": {\"l\": \"-1 m\", \"theta2\": \"45 deg\"}, \"id\": 61}");
+  requests.push_back("{\"scene\": \"" + kRod + "\", \"set\": {\"l\": \"2*1 m\", \"theta2\": \"45 deg\"}}");
+  requests.push_back("{\"scene\": \"" + kRod + "\",   \"set\": {\"l\": 2, \"theta2\": \"45 deg\"}}");
+  std::string all;
+  for (auto& r : requests) all += r + "\n";
+  std::istringstream in(all);
+  std::ostringstream out;
+  kinergy::batch::run(in, out);
+  std::istringstream lines(out.str());
+  std::string line;
+  std::size_t k = 0, shared = 0;
+  const std::regex value("\"value\": \"([-0-9.e]+)\"");
+  while (std::getline(lines, line)) {
+    REQUIRE(k < requests.size());
+    INFO(requests[k] << "\n" << line);
+    // the same request alone: solved in full
+    std::string alone = kinergy::batch::run_line(requests[k], k + 1);
+    CHECK((line.find("\"ok\": true") != std::string::npos) == (alone.find("\"ok\": true") != std::string::npos));
+    if (line.find("\"by\": \"shared solution\"") != std::string::npos) {
+      ++shared;
+      std::smatch a, b;
+      REQUIRE(std::regex_search(line, a, value));
+      REQUIRE(std::regex_search(alone, b, value));
+      CHECK(std::fabs(std::stod(a[1]) - std::stod(b[1])) <= 1e-12 * std::fabs(std::stod(b[1])));
+      // everything else as the full solve writes it, but the evaluation's bound and the confirmation
+      const std::regex varying("\"value\": \"[^\"]*\"|\"evaluation\": \"[^\"]*\"|, \"confirmed\": .*");
+      CHECK(std::regex_replace(line, varying, "") == std::regex_replace(alone, varying, ""));
+    } else {
+      CHECK(line == alone);
+    }
+    ++k;
+  }
+  CHECK(k == requests.size());
+  // shared: every variant below 180° but the first (solved) and the one taken for the sample
+  std::size_t below = 0;
+  for (int i = 0; i < 60; ++i) below += 20 + 3.5 * i < 180 ? 1 : 0;
+  CHECK(shared >= below - 2 + 2);
+  CHECK(out.str().find("\"id\": \"cm\", \"ok\": true") != std::string::npos);
 }

@@ -2,7 +2,12 @@
 // far from 1, and 50-digit values of constants known from elsewhere.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <iomanip>
+#include <random>
+
 #include "../support/helpers.hpp"
+#include "kinergy/numeric/tape.hpp"
 
 using namespace GiNaC;
 using kinergy::numerics::evaluate;
@@ -146,4 +151,27 @@ TEST_CASE("format and round_sig to one significant digit", "[numeric][format]") 
       10);
   INFO("round_sig(1.7e-300, 1): " << res.message);
   CHECK(res.status == kt::ChildResult::Status::Ok);
+}
+
+TEST_CASE("format_double: the same text as format of the double's exact value, ties away from zero", "[numeric][format]") {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> mant(1, 10);
+  std::uniform_int_distribution<int> ex(-30, 30);
+  for (int i = 0; i < 20000; ++i) {
+    const double d = (i % 2 ? -1 : 1) * mant(rng) * std::pow(10.0, ex(rng));
+    for (int n : {1, 2, 6, 15, 17}) {
+      INFO(std::setprecision(17) << d << " to " << n);
+      CHECK(kinergy::numerics::format_double(d, n) == kinergy::numerics::format(kinergy::numerics::exact(d), n));
+    }
+  }
+  // exact ties: format rounds half away from zero (0.125 → 0.13), the library to even (0.12)
+  for (double d : {0.125, 2.5, -2.5, 0.375, 1e22, 9.5, 99.5, 0.0625, 1234.5}) {
+    for (int n : {1, 2, 3, 4}) {
+      INFO(d << " to " << n);
+      CHECK(kinergy::numerics::format_double(d, n) == kinergy::numerics::format(kinergy::numerics::exact(d), n));
+    }
+  }
+  CHECK(kinergy::numerics::format_double(0.125, 2) == "0.13");
+  CHECK(kinergy::numerics::format_double(9.5, 1) == "10");
+  CHECK(kinergy::numerics::format_double(0, 15) == "0");
 }

@@ -27,5 +27,20 @@ std::string text(const std::vector<verify::Check>& checks, const std::string& fi
 
 /// {"title", "results": [{name, closed_form, closed, value, unit}], "checks": […]}.
 std::string json(const Solution& s, const Options& o, const std::vector<verify::Check>* checks = nullptr);
+/// The same with each result's value given (one a result, in order) and the confirmations given:
+/// a solution carried to other parameter values (batch/carry.hpp) writes its own.
+std::string json(const Solution& s, const Options& o, const std::vector<std::optional<Value>>& values,
+                 const std::vector<Confirmed>& confirmed, const std::vector<verify::Check>* checks = nullptr);
+
+/// That JSON cut where each result's value and evaluation go (pieces: before value 1, between
+/// value 1 and its evaluation, …, after the last): written once for a solution whose values
+/// change from request to request (a batch's shared solution), then filled.
+struct JsonTemplate {
+  std::vector<std::string> pieces;
+  int digits = 15;
+};
+JsonTemplate json_template(const Solution& s, const Options& o, const std::vector<Confirmed>& confirmed);
+/// The template with each result's value (the same text as json() with these values).
+std::string fill(const JsonTemplate& t, const std::vector<Value>& values);
 
 }  // namespace kinergy::emit

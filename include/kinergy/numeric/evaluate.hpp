@@ -49,6 +49,9 @@ bool is_integral(const GiNaC::ex& e);
 
 /// v rounded to n significant digits, as text: "3.50178525897863", "-0.00125", "1.5e-12".
 std::string format(const GiNaC::numeric& v, int n);
+/// The same text as format(exact(d), n) for a finite double d (1 ≤ n ≤ 17), without CLN: its
+/// digits correctly rounded by the C++ library, a tie rounded away from zero as format does.
+std::string format_double(double d, int n);
 
 /// v rounded to n significant digits (exact decimal).
 GiNaC::numeric round_sig(const GiNaC::numeric& v, int n);
