@@ -66,8 +66,8 @@ struct Selector {
     if (r.kind == K::Interval) {
       auto lo = numerics::evaluate(r.lo, env, 30), hi = numerics::evaluate(r.hi, env, 30);
       // (the choice reads the signs of v − lo and hi − v: noted for a sweep)
-      if (lo) numerics::note(form - r.lo, v - *lo);
-      if (hi) numerics::note(r.hi - form, *hi - v);
+      if (lo && numerics::tracing()) numerics::note(form - r.lo, v - *lo);
+      if (hi && numerics::tracing()) numerics::note(r.hi - form, *hi - v);
       return lo && hi && *lo <= v && v <= *hi;
     }
     return true;
@@ -105,12 +105,15 @@ struct Selector {
         auto sgn = [](const std::optional<numeric>& x, const ex& form) {
           if (!x) return 0;
           const numeric tol = numerics::tenth(20);
-          numerics::note(form - tol, *x - tol);
-          numerics::note(form + tol, *x + tol);
+          if (numerics::tracing()) {
+            numerics::note(form - tol, *x - tol);
+            numerics::note(form + tol, *x + tol);
+          }
           double v = x->to_double();
           return v > 1e-20 ? 1 : (v < -1e-20 ? -1 : 0);
         };
         auto form = [&](const ex& s) {
+          if (!numerics::tracing()) return s;  // (the forms only a sweep's trace reads)
           try {
             return s.subs(g).subs(b.sol);
           } catch (const std::exception&) {
@@ -132,7 +135,7 @@ struct Selector {
       for (auto& f : m.finds) {
         if (f.root.kind == model::RootSpec::Kind::None) continue;
         auto v = find_value(f, b);
-        if (v && !meets(f.root, *v, find_form(f, b))) good = false;
+        if (v && !meets(f.root, *v, numerics::tracing() ? find_form(f, b) : ex())) good = false;
       }
       if (good) ok.push_back(b);
     }
@@ -162,7 +165,7 @@ struct Selector {
         for (std::size_t i = 1; i < ok.size(); ++i) {
           auto vi = find_value(f, ok[i]);
           bool same = v0 && vi && abs(*v0 - *vi) <= abs(*v0) * numeric(1, 1000000000) + numeric(1, 100000000);
-          if (v0 && vi) {
+          if (v0 && vi && numerics::tracing()) {
             const ex f0 = find_form(f, ok[0]);
             numerics::note(abs(f0) * numeric(1, 1000000000) + numeric(1, 100000000) - abs(f0 - find_form(f, ok[i])),
                            abs(*v0) * numeric(1, 1000000000) + numeric(1, 100000000) - abs(*v0 - *vi));
@@ -452,7 +455,7 @@ private:
       try {
         solve::Branch b = Selector{m, env, given}.pick(solve(sol_.equations));
         for (auto& [k, v] : b.sol)
-          if (auto x = numerics::evaluate(v, env, 30)) know_->set(k, *x, v.subs(given));
+          if (auto x = numerics::evaluate(v, env, 30)) know_->set(k, *x, numerics::tracing() ? v.subs(given) : ex(*x));
       } catch (const SceneError&) {
         // decided later, with every equation
       }
@@ -585,7 +588,7 @@ private:
         for (auto& f : m.finds) {
           if (f.root.kind == model::RootSpec::Kind::None) continue;
           auto v = sel.find_value(f, b);
-          meets = meets && (!v || sel.meets(f.root, *v, sel.find_form(f, b)));
+          meets = meets && (!v || sel.meets(f.root, *v, numerics::tracing() ? sel.find_form(f, b) : ex()));
         }
         if (meets)
           throw SceneError(why.pos(), "the root asked for gives a solution the motion does not reach: " + why.problem(), why.fix());
@@ -642,7 +645,7 @@ private:
   /// split where the end lies; an average force of an isolated set; a parameter without a value).
   void check_reached(const solve::Branch& b) const {
     const exmap values = numbers_of(b);
-    const exmap forms = forms_of(b);
+    const exmap forms = numerics::tracing() ? forms_of(b) : exmap();
     const numerics::TraceForms traced(forms);
     auto value = [&](const ex& e) -> std::optional<numeric> {
       ex x = e.subs(values);
@@ -662,7 +665,7 @@ private:
           const ex x2 = part ? ex(S2.sym.at(c.name).second) : ex(S2.sym.at(c.name).first);
           auto v1 = value(x1), v2 = value(x2);
           same = v1 && v2 && abs(*v2 - *v1) <= numerics::tenth(25) * (abs(*v1) + abs(*v2));
-          if (v1 && v2) numerics::note(numerics::tenth(25) * (abs(x1) + abs(x2)) - abs(x2 - x1), numerics::tenth(25) * (abs(*v1) + abs(*v2)) - abs(*v2 - *v1));
+          if (v1 && v2 && numerics::tracing()) numerics::note(numerics::tenth(25) * (abs(x1) + abs(x2)) - abs(x2 - x1), numerics::tenth(25) * (abs(*v1) + abs(*v2)) - abs(*v2 - *v1));
           solved = solved || (part == 0 && !given.count(x2));  // where it ends was solved for, not given
         }
       if (same && solved)
@@ -673,9 +676,9 @@ private:
       for (auto& c : m.coords) {
         auto q1 = value(S1.sym.at(c.name).first), q2 = value(S2.sym.at(c.name).first);
         auto v1 = value(S1.sym.at(c.name).second), v2 = value(S2.sym.at(c.name).second);
-        if (v1) numerics::note(S1.sym.at(c.name).second, *v1);
-        if (v2) numerics::note(S2.sym.at(c.name).second, *v2);
-        if (q1 && q2 && v1) numerics::note((S2.sym.at(c.name).first - S1.sym.at(c.name).first) * S1.sym.at(c.name).second, (*q2 - *q1) * *v1);
+        if (v1 && numerics::tracing()) numerics::note(S1.sym.at(c.name).second, *v1);
+        if (v2 && numerics::tracing()) numerics::note(S2.sym.at(c.name).second, *v2);
+        if (q1 && q2 && v1 && numerics::tracing()) numerics::note((S2.sym.at(c.name).first - S1.sym.at(c.name).first) * S1.sym.at(c.name).second, (*q2 - *q1) * *v1);
         if (!q1 || !q2 || !v1 || !v2 || !v2->is_zero() || v1->is_zero() || (*q2 - *q1) * *v1 >= 0) continue;
         const std::string unit = units::si_name(c.dim).empty() ? "rad" : units::si_name(c.dim);
         throw SceneError(a.pos, "state '" + S2.name + "' has " + c.name + " at rest on the other side of state '" + S1.name + "' than the motion goes: " +
@@ -750,7 +753,7 @@ private:
   /// What the effects declare holds at every solved state of branch b.
   void check_declared(const solve::Branch& b) const {
     const exmap values = numbers_of(b);
-    const exmap forms = forms_of(b);
+    const exmap forms = numerics::tracing() ? forms_of(b) : exmap();
     const numerics::TraceForms traced(forms);
     for (auto& e : m.effects)
       for (std::size_t s = 0; s < m.states.size(); ++s) e.check(m, static_cast<int>(s), values);

@@ -2,8 +2,12 @@
 #include "kinergy/batch/carry.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <set>
+
+#include "kinergy/numeric/roots.hpp"
 
 namespace kinergy::batch {
 
@@ -157,6 +161,38 @@ std::optional<std::vector<numerics::Bounded>> values_at(const Region& r, const d
     const numerics::Bounded b = t.bounded(x, dx);
     if (!std::isfinite(b.value) || !(b.bound <= kRelBound * std::fabs(b.value))) return std::nullopt;
     out.push_back(b);
+  }
+  return out;
+}
+
+numeric decimal_of(double d) {
+  // the shortest decimal that reads back as d: D × 10^E
+  char buf[40];
+  const auto r = std::to_chars(buf, buf + sizeof buf, d, std::chars_format::scientific);
+  const std::string t(buf, r.ptr);
+  const std::size_t e = t.find('e');
+  std::string digits;
+  for (std::size_t i = 0; i < e; ++i)
+    if (std::isdigit(static_cast<unsigned char>(t[i]))) digits += t[i];
+  const long exp10 = std::stol(t.substr(e + 1)) - static_cast<long>(digits.size()) + 1;
+  const numeric mantissa(digits.c_str());
+  return (t[0] == '-' ? -mantissa : mantissa) * pow(numeric(10), numeric(exp10));
+}
+
+std::optional<std::vector<double>> precise_values_at(const Region& r, const std::vector<double>& x) {
+  std::vector<cln::cl_R> in;
+  for (double v : x) in.push_back(cln::the<cln::cl_R>(decimal_of(v).to_cl_N()));
+  std::vector<double> out;
+  try {
+    for (const numerics::Tape& t : r.results) {
+      auto a = t.precise(in, 30), b = t.precise(in, 45);
+      if (!a || !b) return std::nullopt;
+      const numeric na(*a), nb(*b);
+      if (!(abs(na - nb) <= abs(nb) * numerics::tenth(20))) return std::nullopt;
+      out.push_back(nb.to_double());
+    }
+  } catch (const numerics::NeedsPrecision&) {
+    return std::nullopt;
   }
   return out;
 }

@@ -11,6 +11,7 @@
 #include "kinergy/batch/carry.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -105,10 +106,11 @@ private:
 
   scene::SceneDef at_point(const std::vector<double>& values) const {
     scene::SceneDef at = def_;
+    // (each value as the shortest decimal that reads back as its double: 179.99, not 179.99000000000001)
     for (std::size_t i = 0; i < values.size(); ++i) {
-      std::ostringstream v;
-      v << std::setprecision(17) << values[i];
-      app::set_parameter(at, grid_.ranges[i].name, v.str() + (grid_.ranges[i].unit.empty() ? "" : " " + grid_.ranges[i].unit));
+      char buf[40];
+      const auto r = std::to_chars(buf, buf + sizeof buf, values[i]);
+      app::set_parameter(at, grid_.ranges[i].name, std::string(buf, r.ptr) + (grid_.ranges[i].unit.empty() ? "" : " " + grid_.ranges[i].unit));
     }
     return at;
   }
@@ -198,12 +200,18 @@ private:
       row.how = "as solved at another point";
       return row;
     }
-    // (a grid value's double is within half an ulp of the decimal a solve at the point reads)
+    // (a grid value's double is within half an ulp of the shortest decimal a solve at the point reads)
     std::vector<double> dx;
     for (double v : values) dx.push_back(1.2e-16 * std::fabs(v));
-    auto v = values_at(r, values.data(), dx.data());
-    if (!v) return std::nullopt;
-    for (std::size_t k = 0; k < v->size(); ++k) row.values[k] = (*v)[k].value;
+    if (auto v = values_at(r, values.data(), dx.data())) {
+      for (std::size_t k = 0; k < v->size(); ++k) row.values[k] = (*v)[k].value;
+      return row;
+    }
+    // a double not accurate enough there (a result that cancels): the same closed forms in CLN
+    auto p = precise_values_at(r, values);
+    if (!p) return std::nullopt;
+    row.values = *p;
+    row.how = "closed form (CLN)";
     return row;
   }
 

@@ -84,7 +84,7 @@ public:
     auto s = numerics::evaluate(scale, at, 30);
     GiNaC::numeric dv = GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(v));
     // the choice reads the sign of s·10⁻⁹ − |d| (noted for a sweep: numeric/trace.hpp)
-    if (s) numerics::note(scale * GiNaC::numeric(1, 1000000000) - abs(d), *s * GiNaC::numeric(1, 1000000000) - dv);
+    if (s && numerics::tracing()) numerics::note(scale * GiNaC::numeric(1, 1000000000) - abs(d), *s * GiNaC::numeric(1, 1000000000) - dv);
     if (!s || dv <= *s * GiNaC::numeric(1, 1000000000)) return "";
     return numerics::format(dv, 6) + " m";
   }
@@ -99,8 +99,11 @@ public:
     if (!m.constraints.empty()) return;
     for (GiNaC::exmap& at : random_positions(m, m.numeric_environment(), 4242)) {
       // (a sweep's trace takes the sample's coordinates as the numbers they are here)
-      GiNaC::exmap probe{{m.t, at[m.t]}};
-      for (auto& c : m.coords) probe[c.q] = at[c.q];
+      GiNaC::exmap probe;
+      if (numerics::tracing()) {
+        probe[m.t] = at[m.t];
+        for (auto& c : m.coords) probe[c.q] = at[c.q];
+      }
       const numerics::TraceForms traced(probe);
       std::string off = off_track(m, at);
       if (off.empty()) continue;
@@ -122,8 +125,11 @@ public:
     }
     at[m.t] = values.count(m.states[state].t) ? values.at(m.states[state].t) : ex(0);
     // (the coordinates are this state's: a sweep's trace follows them to their forms)
-    GiNaC::exmap here{{m.t, values.count(m.states[state].t) ? ex(m.states[state].t) : ex(0)}};
-    for (auto& c : m.coords) here[c.q] = m.states[state].sym.at(c.name).first;
+    GiNaC::exmap here;
+    if (numerics::tracing()) {
+      here[m.t] = values.count(m.states[state].t) ? ex(m.states[state].t) : ex(0);
+      for (auto& c : m.coords) here[c.q] = m.states[state].sym.at(c.name).first;
+    }
     const numerics::TraceForms traced(here);
     std::string off = off_track(m, at);
     if (!off.empty())

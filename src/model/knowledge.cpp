@@ -15,14 +15,14 @@ Knowledge::Knowledge(const Model& m) : env_(m.numeric_environment()) {
     ex v = e.subs(known_).subs(env).evalf();
     std::optional<numeric> out;
     if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) out = ex_to<numeric>(v);
-    if (is_a<numeric>(v)) numerics::note(form, out);
+    if (is_a<numeric>(v) && numerics::tracing()) numerics::note(form, out);
     return out;
   };
   for (auto& s : m.states)
     for (auto& [sym, val] : s.given)
-      if (auto v = num(val, val.subs(forms_))) {
+      if (auto v = num(val, numerics::tracing() ? val.subs(forms_) : ex())) {
         known_[sym] = *v;
-        forms_[sym] = val.subs(forms_);
+        if (numerics::tracing()) forms_[sym] = val.subs(forms_);
       }
   // what constraints give at each state from the given values (one unknown, linear)
   for (int pass = 0; pass < 4; ++pass)
@@ -43,15 +43,17 @@ Knowledge::Knowledge(const Model& m) : env_(m.numeric_environment()) {
           if (a.has(unknown[0]) || a.is_zero()) continue;
           // its form: the same linear equation in the forms of what is known
           ex form;
-          try {
-            const ex rf = bound.subs(forms_);
-            form = -rf.subs(unknown[0] == 0) / rf.diff(ex_to<symbol>(unknown[0]));
-          } catch (const std::exception&) {
-            form = unknown[0];  // (a form the reader cannot follow: it holds a state symbol)
+          if (numerics::tracing()) {
+            try {
+              const ex rf = bound.subs(forms_);
+              form = -rf.subs(unknown[0] == 0) / rf.diff(ex_to<symbol>(unknown[0]));
+            } catch (const std::exception&) {
+              form = unknown[0];  // (a form the reader cannot follow: it holds a state symbol)
+            }
           }
           if (auto v = num(-r.subs(unknown[0] == 0) / a, form)) {
             known_[unknown[0]] = *v;
-            forms_[unknown[0]] = form;
+            if (numerics::tracing()) forms_[unknown[0]] = form;
           }
         }
 }

@@ -197,7 +197,7 @@ ex Model::spring_length(const ex& d2) const {
           continue;  // undefined at this state: let another state decide
         }
         // (the sign chosen by is noted for a sweep: numeric/trace.hpp)
-        if (is_a<numeric>(v))
+        if (is_a<numeric>(v) && numerics::tracing())
           numerics::note(bind(p, static_cast<int>(s)).subs(states[s].given),
                          ex_to<numeric>(v).is_real() ? std::optional<numeric>(ex_to<numeric>(v)) : std::nullopt);
         if (is_a<numeric>(v) && ex_to<numeric>(v).is_real() && !ex_to<numeric>(v).is_zero())
@@ -269,7 +269,7 @@ int Model::fixed_sign(const ex& e) const {
     if (p.value) vals[p.sym] = *p.value;
   try {
     ex v = e.subs(vals).evalf();
-    if (is_a<numeric>(v)) numerics::note(e, ex_to<numeric>(v).is_real() ? std::optional<numeric>(ex_to<numeric>(v)) : std::nullopt);
+    if (is_a<numeric>(v) && numerics::tracing()) numerics::note(e, ex_to<numeric>(v).is_real() ? std::optional<numeric>(ex_to<numeric>(v)) : std::nullopt);
     if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real() || ex_to<numeric>(v).is_zero()) return 0;
     return ex_to<numeric>(v).is_positive() ? 1 : -1;
   } catch (const std::exception&) {

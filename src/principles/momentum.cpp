@@ -40,8 +40,10 @@ bool vanishes(const Model& m, const ex& e) {
     at[m.t] = numeric(u(rng) + 2);
     // (a sweep's trace takes the probe's coordinates as the numbers they are here)
     exmap probe;
-    for (auto& c : m.coords) probe[c.q] = at[c.q], probe[c.qd] = at[c.qd];
-    probe[m.t] = at[m.t];
+    if (numerics::tracing()) {
+      for (auto& c : m.coords) probe[c.q] = at[c.q], probe[c.qd] = at[c.qd];
+      probe[m.t] = at[m.t];
+    }
     const numerics::TraceForms traced(probe);
     // zero against the size of its own terms, never against an absolute 1e-12
     if (!numerics::negligible(x, at).value_or(false)) return false;

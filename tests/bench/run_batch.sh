@@ -55,15 +55,5 @@ Measured $(date -u +%Y-%m-%d) on $(nproc) cores ($(uname -m)), by \`bash tests/b
 <!-- /bench:batch -->
 TABLE
 )
-python3 - "$table" <<'PY'
-import re, sys
-p = "docs/batch.md"
-s = open(p).read()
-table = sys.argv[1]
-if "<!-- bench:batch -->" in s:
-    s = re.sub(r"<!-- bench:batch -->.*?<!-- /bench:batch -->", lambda m: table, s, flags=re.S)
-else:
-    s = s.replace("## Not done yet", "## Throughput (benchmark)\n\n" + table + "\n\n## Not done yet")
-open(p, "w").write(s)
-PY
+python3 tests/bench/put_table.py docs/batch.md batch "## Not met" "$table"
 echo "$table"

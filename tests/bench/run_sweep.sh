@@ -56,15 +56,5 @@ Measured $(date -u +%Y-%m-%d) on $(nproc) cores ($(uname -m)), by \`bash tests/b
 <!-- /bench:sweep -->
 TABLE
 )
-python3 - "$table" <<'PY'
-import re, sys
-p = "docs/batch.md"
-s = open(p).read()
-table = sys.argv[1]
-if "<!-- bench:sweep -->" in s:
-    s = re.sub(r"<!-- bench:sweep -->.*?<!-- /bench:sweep -->", lambda m: table, s, flags=re.S)
-else:
-    s = s.replace("## Over several processes or machines", "### Benchmark\n\n" + table + "\n\n## Over several processes or machines")
-open(p, "w").write(s)
-PY
+python3 tests/bench/put_table.py docs/batch.md sweep "## Over several processes or machines" "$table"
 echo "$table"

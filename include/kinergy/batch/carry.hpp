@@ -57,4 +57,13 @@ bool holds(const Region& r, const std::vector<double>& mid, const std::vector<do
 /// bounds the error of input i); nothing when a bound is not within kRelBound of its value.
 std::optional<std::vector<numerics::Bounded>> values_at(const Region& r, const double* x, const double* dx);
 
+/// The shortest decimal that reads back as d, exactly (the value a grid point's text gives).
+GiNaC::numeric decimal_of(double d);
+
+/// The same in CLN, where a double's bound is too wide (a result that cancels there): each result
+/// at 30 and at 45 digits from the inputs' shortest decimals (decimal_of: as a solve at that point
+/// reads them), the two agreeing to 1e-20 relative; the double nearest. Nothing when they do not
+/// agree, or a result is undefined there.
+std::optional<std::vector<double>> precise_values_at(const Region& r, const std::vector<double>& x);
+
 }  // namespace kinergy::batch
