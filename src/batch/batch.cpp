@@ -191,6 +191,7 @@ private:
 };
 
 using SharedSolutions = std::map<std::string, std::unique_ptr<Shared>>;
+constexpr std::size_t kMostShared = 256;
 
 /// A request of the plain form a bank of variants writes, read without a JSON library:
 /// {"id": N or "…", "scene": "…", "set": {"name": "value", …}, "confirm": true|false}, strings
@@ -411,7 +412,8 @@ Outcome run_request(const std::string& request, std::size_t number, SharedSoluti
       earlier->compare(s);
       return {true, *carried};
     }
-    if (variant && !earlier) {
+    // (at most kMostShared scenes' solutions kept: a bank of many scenes holds no more)
+    if (variant && !earlier && shared->size() < kMostShared) {
       std::vector<std::string> names;
       for (auto& [name, v] : values) names.push_back(name);
       (*shared)[key] = std::make_unique<Shared>(s, trace, names, number);

@@ -11,6 +11,7 @@
 #include "kinergy/model/inertia.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/trace.hpp"
 
 #include "context.hpp"
 
@@ -196,6 +197,9 @@ private:
       bool pos = !q.unknown && (!q.has_number || q.number.is_positive());
       if (pos) par.sym = possymbol(p.name);
       else par.sym = realsymbol(p.name);
+      // the symbol's kind follows the value's sign (a positive symbol's simplifications hold only
+      // for positive values): a choice, noted for a sweep (numeric/trace.hpp)
+      if (q.has_number && numerics::tracing()) numerics::note(par.sym, q.number);
       m_.add_symbol(par.sym, par.dim);
       m_.names_[p.name] = par.sym;
       m_.params.push_back(par);

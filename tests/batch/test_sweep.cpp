@@ -205,3 +205,19 @@ TEST_CASE("sweep: every derivation over a grid of two of its parameters, the clo
   // (so that the test cannot pass with nothing carried: most scenes' closed forms hold around their values)
   CHECK(closed * 2 >= rows);
 }
+
+TEST_CASE("sweep: through zero, a solution found at a positive value is not carried to negative ones", "[batch][sweep]") {
+  // theta2 is a positive symbol where the scene gives 30°: its simplifications hold for θ2 > 0
+  // only, so the sign of θ2 is one of the choices; below 0 the rod does not get there from rest
+  const auto def = kinergy::scene::load_file(kRod);
+  const std::vector<kinergy::batch::Range> ranges{kinergy::batch::parse_range("theta2=-60..60:13", def)};
+  const auto fast = kinergy::batch::sweep(def, ranges);
+  kinergy::batch::SweepOptions each;
+  each.per_point = true;
+  same_rows(fast, kinergy::batch::sweep(def, ranges, each));
+  for (const auto& row : fast.rows) {
+    INFO(row.at[0] << " deg: " << row.how << " " << row.error);
+    if (row.at[0] > 0) CHECK(row.how == "closed form");
+    else CHECK(row.how != "closed form");
+  }
+}
