@@ -49,6 +49,22 @@ struct Grid {
   }
   std::size_t dims() const { return ranges.size(); }
   std::size_t count(std::size_t i) const { return static_cast<std::size_t>(ranges[i].count); }
+  /// Point k's index along each range.
+  std::vector<std::size_t> indices(std::size_t k) const {
+    std::vector<std::size_t> j(dims());
+    for (std::size_t i = dims(); i-- > 0;) {
+      j[i] = k % count(i);
+      k /= count(i);
+    }
+    return j;
+  }
+  /// Point k's values.
+  std::vector<double> point(std::size_t k) const {
+    const std::vector<std::size_t> j = indices(k);
+    std::vector<double> v(dims());
+    for (std::size_t i = 0; i < dims(); ++i) v[i] = value(i, j[i]);
+    return v;
+  }
 };
 
 /// A box of grid indices, lo[i] ≤ j ≤ hi[i].
@@ -240,15 +256,9 @@ void Engine::confirm_sample(const std::vector<std::uint8_t>& id, std::size_t ori
     if (id[k] != kOpen) carried_at.push_back(k);
   if (carried_at.empty() || options_.samples <= 0) return;
   const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(options_.samples), carried_at.size());
-  std::vector<std::size_t> idx(grid_.dims());
   for (std::size_t s = 0; s < n; ++s) {
     const std::size_t k = carried_at[n == 1 ? 0 : s * (carried_at.size() - 1) / (n - 1)];
-    std::size_t rest = origin + k;
-    std::vector<double> values(grid_.dims());
-    for (std::size_t i = grid_.dims(); i-- > 0;) {
-      values[i] = grid_.value(i, rest % grid_.count(i));
-      rest /= grid_.count(i);
-    }
+    const std::vector<double> values = grid_.point(origin + k);
     auto fast = carried(regions_[id[k]], values);
     if (!fast) continue;  // (solved there anyway)
     const Sweep::Row full = solve_at(values, false, options_.confirm);
@@ -286,18 +296,11 @@ Sweep::Summary Engine::run(const std::function<void(const Sweep::Row&)>& emit) {
   std::vector<std::size_t> stride(d, 1);
   for (std::size_t i = d - 1; i-- > 0;) stride[i] = stride[i + 1] * grid_.count(i + 1);
   std::size_t done = 0;
-  std::vector<std::size_t> idx(d);
   for (std::size_t origin = 0; origin < total; origin += inner) {
     std::vector<std::uint8_t> id(inner, kOpen);
     if (!options_.per_point) {
       Box b;
-      std::size_t rest = origin;
-      for (std::size_t i = d; i-- > 0;) {
-        idx[i] = rest % grid_.count(i);
-        rest /= grid_.count(i);
-      }
-      b.lo = idx;
-      b.hi = idx;
+      b.lo = b.hi = grid_.indices(origin);
       for (std::size_t i = lead; i < d; ++i) b.lo[i] = 0, b.hi[i] = grid_.count(i) - 1;
       classify(b, id, stride, origin);
       if (origin == 0) confirm_sample(id, origin);
@@ -307,12 +310,7 @@ Sweep::Summary Engine::run(const std::function<void(const Sweep::Row&)>& emit) {
         poll_interrupt();
         if (options_.progress) options_.progress(done, total);
       }
-      std::size_t rest = origin + k;
-      std::vector<double> values(d);
-      for (std::size_t i = d; i-- > 0;) {
-        values[i] = grid_.value(i, rest % grid_.count(i));
-        rest /= grid_.count(i);
-      }
+      const std::vector<double> values = grid_.point(origin + k);
       Sweep::Row row;
       std::optional<Sweep::Row> c;
       if (id[k] != kOpen) c = carried(regions_[id[k]], values);
