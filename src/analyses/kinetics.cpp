@@ -9,7 +9,7 @@ namespace kinergy::analyses {
 namespace {
 
 using GiNaC::ex;
-using Row = principles::KineticsBalance::Row;
+using BalanceRow = principles::KineticsBalance::Row;
 
 /// Its section: the unknowns, the equations read off each body's free-body diagram and along each
 /// coordinate, those solved and those checked to follow.
@@ -35,25 +35,25 @@ void section(emit::Sections& w, int k, const model::Analysis& a, const principle
   }
   intro.push_back(W("."));
   w.para(intro);
-  auto group = [&](Row::Kind kind, int body) {
-    std::vector<Row> rows;
+  auto group = [&](BalanceRow::Kind kind, int body) {
+    std::vector<BalanceRow> rows;
     for (auto& r : kb.rows)
       if (r.used && r.kind == kind && r.body == body) rows.push_back(r);
     return rows;
   };
   std::vector<emit::Row> shown;
-  for (auto kind : {Row::Kind::Motion, Row::Kind::Constraint})
+  for (auto kind : {BalanceRow::Kind::Motion, BalanceRow::Kind::Constraint})
     for (auto& r : group(kind, -1)) shown.push_back(w.equation(tags, r.equation));
   if (!shown.empty()) {
     bool constraints = false;
-    for (auto& r : kb.rows) constraints = constraints || (r.used && r.kind == Row::Kind::Constraint);
+    for (auto& r : kb.rows) constraints = constraints || (r.used && r.kind == BalanceRow::Kind::Constraint);
     w.para({W(constraints ? "Along each coordinate, and each constraint's second rate c\u0308 = 0:" : "Along each coordinate:")});
     w.rows(shown);
   }
   for (const principles::BodyAcceleration& acc : kb.accelerations) {
     const int b = acc.body;
     shown.clear();
-    for (auto kind : {Row::Kind::ForceX, Row::Kind::ForceY, Row::Kind::Moment})
+    for (auto kind : {BalanceRow::Kind::ForceX, BalanceRow::Kind::ForceY, BalanceRow::Kind::Moment})
       for (auto& r : group(kind, b)) shown.push_back(w.equation(tags, r.equation));
     if (shown.empty()) continue;
     const std::string name = m.bodies[static_cast<std::size_t>(b)].name;

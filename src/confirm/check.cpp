@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "kinergy/model/simplify.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/tape.hpp"
 
 namespace kinergy::simulate {
@@ -16,13 +17,6 @@ using namespace GiNaC;
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(8);
-  os << v;
-  return os.str();
-}
 
 // What is known of a scene's states: the given values, the solved ones, the parameters.
 struct Known {
@@ -57,7 +51,7 @@ void aim(const model::Model& m, const Known& k, Leg& leg, double t1) {
     leg.start.t = t1;
     leg.stop.until = t2;
     leg.expect.t = t2;
-    leg.target = "t = " + num(t2) + " s";
+    leg.target = "t = " + numerics::g_text(t2, 8) + " s";
     if (!(t2 > t1)) leg.why_not = "state '" + S2.name + "' is not later than '" + m.states[static_cast<std::size_t>(leg.from)].name + "'";
   } else {
     // the end is where S2's given values are reached: a rate given as zero (a turning point,
@@ -95,7 +89,7 @@ void aim(const model::Model& m, const Known& k, Leg& leg, double t1) {
     double dq = std::fabs(leg.expect.q[i] - q1);
     // (a rate reached at a known place too: a flywheel braked to rest over 2500 rad takes 145 s)
     leg.stop.until = leg.start.t + (v > 0 && !std::isnan(dq) && dq > 0 ? std::max(10 * dq / v, 1.0) : 100.0);
-    leg.target = m.coords[i].name + (rate ? "_dot" : "") + " reaches " + num(q2);
+    leg.target = m.coords[i].name + (rate ? "_dot" : "") + " reaches " + numerics::g_text(q2, 8);
     leg.expect.t = kNaN;
   }
 }
@@ -158,7 +152,7 @@ std::vector<Leg> legs(const Solution& s) {
     for (std::size_t i = 0; i < m.coords.size(); ++i)
       for (double x : {leg.start.q[i], leg.expect.q[i]})
         if (leg.why_not.empty() && std::isfinite(x) && std::fabs(x) > 0x1p40)
-          leg.why_not = m.coords[i].name + " = " + num(x) + " is beyond what a simulation in doubles resolves";
+          leg.why_not = m.coords[i].name + " = " + numerics::g_text(x, 8) + " is beyond what a simulation in doubles resolves";
     if (leg.why_not.empty() && a.type->at_state())
       leg.why_not = "taken at one state, no motion to run (its accelerations are checked against the equations of motion there)";
     if (!leg.why_not.empty()) {
@@ -263,8 +257,8 @@ void limit_state(const Solution& s, const Leg& leg, Simulator& sim, const State&
   if (!below.stopped || !((end.q[pick] - below.end.q[pick]) * sign > 0)) return;
   c.ok = true;
   c.note = (c.note.empty() ? "" : c.note + "; ") + "a limit state, reached only asymptotically: started 1e-6 faster the motion passes " +
-           m.coords[pick].name + " = " + num(end.q[pick]) + ", 1e-6 slower it turns back at " + m.coords[pick].name + " = " +
-           num(below.end.q[pick]);
+           m.coords[pick].name + " = " + numerics::g_text(end.q[pick], 8) + ", 1e-6 slower it turns back at " + m.coords[pick].name + " = " +
+           numerics::g_text(below.end.q[pick], 8);
   c.worst = 0;
   c.worst_what.clear();
 }
@@ -317,7 +311,7 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
       Run again = fine.run(start, leg.stop);
       if (again.stopped) {
         c.run = std::move(again);
-        c.note = "in steps of at most " + num(short_steps.max_dt) + " s";
+        c.note = "in steps of at most " + numerics::g_text(short_steps.max_dt, 8) + " s";
         break;
       }
     }
@@ -336,13 +330,13 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
       for (std::size_t i = 0; i < m.coords.size(); ++i) {
         const double d = end.q[i] - start.q[i];
         start.qd[i] = std::isfinite(d) ? eps * d : 0;
-        if (start.qd[i] != 0) how += (how.empty() ? "" : ", ") + m.coords[i].name + "_dot = " + num(start.qd[i]);
+        if (start.qd[i] != 0) how += (how.empty() ? "" : ", ") + m.coords[i].name + "_dot = " + numerics::g_text(start.qd[i], 8);
       }
       c.note = "nudged: released at rest on an equilibrium, started with " + how + " toward state '" + m.states[static_cast<std::size_t>(leg.to)].name + "'";
       longer.until = leg.start.t + 10 * (leg.stop.until - leg.start.t);
     } else {
       longer.until = leg.start.t + 10 * (longer.until - leg.start.t);
-      c.note = (c.note.empty() ? "" : c.note + "; ") + "run for " + num(longer.until - leg.start.t) + " s";
+      c.note = (c.note.empty() ? "" : c.note + "; ") + "run for " + numerics::g_text(longer.until - leg.start.t, 8) + " s";
     }
     c.run = sim.run(start, longer);
   }
@@ -359,7 +353,7 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
       double err = std::fabs(sim_v - want) / scale;
       if (!(err <= c.worst) || std::isnan(err)) {
         c.worst = std::isnan(err) ? std::numeric_limits<double>::infinity() : err;
-        c.worst_what = what + ": simulated " + num(sim_v) + ", closed form " + num(want);
+        c.worst_what = what + ": simulated " + numerics::g_text(sim_v, 8) + ", closed form " + numerics::g_text(want, 8);
       }
     };
     compare(e.q[i], leg.expect.q[i], qs, m.coords[i].name + "@" + m.states[leg.to].name);
@@ -367,14 +361,14 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
   }
   if (!std::isnan(leg.expect.t) && std::fabs(e.t - leg.expect.t) > 1e-12 * std::max(1.0, std::fabs(leg.expect.t))) {
     c.worst = std::numeric_limits<double>::infinity();
-    c.worst_what = "the run ended at t = " + num(e.t) + " s, not at " + num(leg.expect.t);
+    c.worst_what = "the run ended at t = " + numerics::g_text(e.t, 8) + " s, not at " + numerics::g_text(leg.expect.t, 8);
   }
   bool any = false;
   for (std::size_t i = 0; i < m.coords.size(); ++i) any = any || !std::isnan(leg.expect.q[i]) || !std::isnan(leg.expect.qd[i]);
   if (leg.stop.when && !c.run.stopped) {
     c.worst = std::numeric_limits<double>::infinity();
     c.worst_what = "the simulation does not reach state '" + m.states[static_cast<std::size_t>(leg.to)].name + "' (" + leg.target +
-                   ") by t = " + num(c.run.end.t) + " s";
+                   ") by t = " + numerics::g_text(c.run.end.t, 8) + " s";
   }
   c.ok = any && c.worst <= tolerance;
   if (!any) c.worst_what = "no solved value at state '" + m.states[leg.to].name + "' to compare";
@@ -433,7 +427,7 @@ std::vector<draw::Motion> motions(const Solution& s, int samples) {
       leg.stop = Stop{};
       leg.stop.until = leg.start.t + std::min(L / v, 5.0);
       leg.stop.impulses = true;
-      leg.target = "t = " + num(leg.stop.until) + " s, after the impact";
+      leg.target = "t = " + numerics::g_text(leg.stop.until, 8) + " s, after the impact";
     }
     // a leg that ends at a time is sampled over it at once; one that ends where a value is
     // reached is run a first time to find where, then sampled at regular times

@@ -17,13 +17,6 @@ using namespace GiNaC;
 
 namespace {
 
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(3);
-  os << v;
-  return os.str();
-}
-
 /// The largest relative residual of the scene's equations at the chosen solution, at 50 digits:
 /// |lhs − rhs| / (|lhs| + |rhs|); its equation's label in `which`. Equations whose value cannot be
 /// had there (a parameter without a value) are left out; nothing when none is left.
@@ -124,7 +117,7 @@ KineticsCheck check_kinetics(const Solution& s, int ai) {
     if (rel > kConfirmResidual) {
       c.ok = false;
       c.worst = rel;
-      c.what = "the " + r.equation.label + " does not hold at the solution (off by " + num(rel) + " of its size)";
+      c.what = "the " + r.equation.label + " does not hold at the solution (off by " + numerics::g_text(rel, 3) + " of its size)";
     }
   }
   return c;
@@ -178,8 +171,8 @@ void confirm(Solution& s) {
       }
       if (k && !k->ok)
         throw SceneError(a.pos, "the kinetics at state '" + m.states[static_cast<std::size_t>(a.from)].name +
-                                    "' is not confirmed by the equations of motion there: " + k->what + " (relative difference " + num(k->worst) +
-                                    ", more than " + num(kConfirmSimulation) + ")",
+                                    "' is not confirmed by the equations of motion there: " + k->what + " (relative difference " + numerics::g_text(k->worst, 3) +
+                                    ", more than " + numerics::g_text(kConfirmSimulation, 3) + ")",
                          "check the supports the scene declares against the coordinates; '--no-confirm' prints the closed form without this check");
       if (k) {
         c.by = Confirmed::By::EquationsOfMotion;
@@ -239,7 +232,7 @@ void confirm(Solution& s) {
             for (auto& name : im.contacts)
               if (struck.find("'" + name + "'") == std::string::npos) struck += (struck.empty() ? "" : ", ") + ("'" + name + "'");
         throw SceneError(a.pos, between + " is not confirmed by a simulation of the same scene: " + run->worst_what +
-                                    " (relative difference " + num(run->worst) + ", more than " + num(kConfirmSimulation) + ")" +
+                                    " (relative difference " + numerics::g_text(run->worst, 3) + ", more than " + numerics::g_text(kConfirmSimulation, 3) + ")" +
                                     (run->note.empty() ? "" : "; " + run->note) +
                                     (struck.empty() ? "" : "; on the way the simulation strikes at " + struck +
                                                                ", an impact this analysis does not have (split it there with an impact analysis)"),
@@ -252,7 +245,7 @@ void confirm(Solution& s) {
       if (!residual) residual = residuals(s, residual_of);
       if (*residual && **residual > kConfirmResidual)
         throw SceneError(a.pos, between + ": the equations do not hold at the solution found: the " + residual_of + " is off by " +
-                                    num(**residual) + " of its size at 50 digits",
+                                    numerics::g_text(**residual, 3) + " of its size at 50 digits",
                          "report the scene: the solution is not confirmed ('--no-confirm' prints it anyway)");
       if (*residual) {
         c.by = Confirmed::By::Residuals;

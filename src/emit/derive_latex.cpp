@@ -399,7 +399,7 @@ std::vector<std::string> row_lines(const Row& r, const Derivation& d, double lef
 
 namespace {
 
-void equations(std::ostringstream& os, const Block& b, const Derivation& d) {
+void latex_equations(std::ostringstream& os, const Block& b, const Derivation& d) {
   const double left = left_column(b, d);
   os << "\\begin{align}\n";
   for (std::size_t ri = 0; ri < b.rows.size(); ++ri) {
@@ -419,7 +419,7 @@ void equations(std::ostringstream& os, const Block& b, const Derivation& d) {
   os << "\\end{align}\n";
 }
 
-void table(std::ostringstream& os, const Block& b, const Derivation& d) {
+void latex_table(std::ostringstream& os, const Block& b, const Derivation& d) {
   os << "\\begin{center}\n\\begin{tabular}{" << std::string(b.header.size(), 'l') << "}\n\\toprule\n";
   for (std::size_t i = 0; i < b.header.size(); ++i) os << (i ? " & " : "") << tex_text(b.header[i]);
   os << " \\\\\n\\midrule\n";
@@ -466,11 +466,11 @@ std::string latex(const Derivation& d) {
         os << "\n" << spans_tex(b.spans, d) << "\n";
         break;
       case Block::Kind::Equations:
-        equations(os, b, d);
+        latex_equations(os, b, d);
         break;
       case Block::Kind::Table:
         os << "\n";
-        table(os, b, d);
+        latex_table(os, b, d);
         break;
       case Block::Kind::Figure:
         // drawn in place (not floated), the caption under it

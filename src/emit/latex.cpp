@@ -396,10 +396,9 @@ std::vector<std::string> tex_terms(const std::string& s) {
 
 namespace {
 
-enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
-
 using detail::Factor;
 using detail::Factors;
+using enum detail::Prec;
 
 /// Parentheses that grow with what they hold.
 std::string paren(const std::string& s) {

@@ -11,7 +11,7 @@ namespace kinergy::emit {
 namespace {
 
 // the characters of TeX's commands kinergy writes
-const std::map<std::string, std::string> kGreek{
+const std::map<std::string, std::string> kGreekEntity{
     {"alpha", "α"},   {"beta", "β"},   {"gamma", "γ"},   {"delta", "δ"},  {"epsilon", "ϵ"}, {"varepsilon", "ε"}, {"zeta", "ζ"},
     {"eta", "η"},     {"theta", "θ"},  {"vartheta", "ϑ"}, {"iota", "ι"},   {"kappa", "κ"},   {"lambda", "λ"},     {"mu", "μ"},
     {"nu", "ν"},      {"xi", "ξ"},     {"pi", "π"},      {"varpi", "ϖ"},  {"rho", "ρ"},     {"varrho", "ϱ"},     {"sigma", "σ"},
@@ -205,7 +205,7 @@ private:
       function_ = true;
       return "<mi>" + c + "</mi>";
     }
-    if (auto it = kGreek.find(c); it != kGreek.end()) return "<mi>" + it->second + "</mi>";
+    if (auto it = kGreekEntity.find(c); it != kGreekEntity.end()) return "<mi>" + it->second + "</mi>";
     if (c == "int" || c == "sum") return "<mo largeop=\"true\">" + kOperators.at(c) + "</mo>";
     if (auto it = kOperators.find(c); it != kOperators.end()) return mo(it->second);
     if (auto it = kSpaces.find(c); it != kSpaces.end()) return "<mspace width=\"" + it->second + "\"/>";

@@ -29,7 +29,7 @@ ex factor_any_uncached(const ex& e) {
   ex out = 1;
   for (auto& x : factors_of(f)) {
     if (is_a<add>(x)) out *= x.expand();
-    else if (is_a<power>(x) && is_a<add>(x.op(0))) out *= pow(x.op(0).expand(), x.op(1));
+    else if (is_a<GiNaC::power>(x) && is_a<add>(x.op(0))) out *= pow(x.op(0).expand(), x.op(1));
     else out *= x;
   }
   exmap back;
@@ -131,7 +131,7 @@ struct reduce_power : public map_function {
   bool cos_to_sin;
   explicit reduce_power(bool c) : cos_to_sin(c) {}
   ex operator()(const ex& e) override {
-    if (is_a<power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_pos_integer()) {
+    if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_pos_integer()) {
       const ex& b = e.op(0);
       long n = ex_to<numeric>(e.op(1)).to_long();
       bool match = cos_to_sin ? is_ex_the_function(b, cos) : is_ex_the_function(b, sin);
@@ -189,7 +189,7 @@ struct unroot : public map_function {
   explicit unroot(SignOf s = nullptr) : sign(std::move(s)) {}
   ex operator()(const ex& e) override {
     ex m = e.map(*this);
-    if (!is_a<power>(m) || !is_a<numeric>(m.op(1))) return m;
+    if (!is_a<GiNaC::power>(m) || !is_a<numeric>(m.op(1))) return m;
     numeric k = ex_to<numeric>(m.op(1));
     if (k.denom() != 2) return m;
     ex b = m.op(0);
@@ -204,12 +204,12 @@ struct unroot : public map_function {
     }
     ex out = 1, in = 1;
     for (auto& x : factors_of(f)) {
-      if (is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_integer() &&
+      if (is_a<GiNaC::power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_integer() &&
           x.op(0).info(info_flags::positive)) {
         long p = ex_to<numeric>(x.op(1)).to_long();
         out *= pow(x.op(0), p / 2);
         in *= pow(x.op(0), p % 2);
-      } else if (int s = 0; sign && is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_even() &&
+      } else if (int s = 0; sign && is_a<GiNaC::power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_even() &&
                             (s = sign(x.op(0))) != 0) {
         // (p^(2k))^(1/2) = |p|^k = (σp)^k
         out *= pow(s * x.op(0), ex_to<numeric>(x.op(1)).to_long() / 2);
@@ -236,7 +236,7 @@ struct merge_roots : public map_function {
     int positive = 0, others = 0;
     for (std::size_t i = 0; i < m.nops(); ++i) {
       const ex& f = m.op(i);
-      bool half = is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).denom() == 2;
+      bool half = is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).denom() == 2;
       if (half && f.op(0).info(info_flags::positive)) {
         inside *= pow(f.op(0), f.op(1) * 2);  // b^k = (b^(2k))^(1/2), b > 0
         ++positive;
@@ -291,7 +291,7 @@ ex collect_simplify(const ex& e, const lst& rates) {
     for (const ex& f : factors) {
       bool is_rate = false;
       for (const auto& r : rates)
-        if (f.is_equal(r) || (is_a<power>(f) && f.op(0).is_equal(r))) is_rate = true;
+        if (f.is_equal(r) || (is_a<GiNaC::power>(f) && f.op(0).is_equal(r))) is_rate = true;
       (is_rate ? mono : coef) *= f;
     }
     by_mono[mono] += coef;
@@ -342,7 +342,7 @@ ex linearize_trig(const ex& e) {
   for (const ex& f : factors_of(x)) {
     if (is_sin_or_cos(f)) {
       trig.push_back(f);
-    } else if (is_a<power>(f) && is_sin_or_cos(f.op(0)) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_pos_integer() &&
+    } else if (is_a<GiNaC::power>(f) && is_sin_or_cos(f.op(0)) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_pos_integer() &&
                ex_to<numeric>(f.op(1)).to_long() <= 16) {
       for (long i = 0; i < ex_to<numeric>(f.op(1)).to_long(); ++i) trig.push_back(f.op(0));
     } else {
@@ -360,7 +360,7 @@ std::size_t trig_factors(const ex& t) {
   std::size_t n = 0;
   for (const ex& f : factors_of(t)) {
     if (is_sin_or_cos(f)) ++n;
-    else if (is_a<power>(f) && is_sin_or_cos(f.op(0)) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_pos_integer())
+    else if (is_a<GiNaC::power>(f) && is_sin_or_cos(f.op(0)) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_pos_integer())
       n += static_cast<std::size_t>(ex_to<numeric>(f.op(1)).to_long());
   }
   return n;
@@ -437,7 +437,7 @@ std::optional<ex> elementary_antiderivative(const ex& f, const symbol& s) {
     if (!x.is_equal(f) && is_a<add>(x)) return antiderivative(x, s);
     return std::nullopt;
   }
-  if (is_a<power>(f)) {
+  if (is_a<GiNaC::power>(f)) {
     const ex& b = f.op(0);
     const ex& n = f.op(1);
     if (n.has(s)) return std::nullopt;
@@ -512,7 +512,7 @@ std::optional<ex> rational_antiderivative(const ex& f, const symbol& s) {
   for (const ex& x : factors_of(Qf)) {
     ex b = x;
     int k = 1;
-    if (is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_pos_integer()) {
+    if (is_a<GiNaC::power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_pos_integer()) {
       b = x.op(0);
       k = static_cast<int>(ex_to<numeric>(x.op(1)).to_long());
     }
@@ -555,7 +555,7 @@ std::optional<ex> rational_antiderivative(const ex& f, const symbol& s) {
   if (!is_a<lst>(sol) || sol.nops() != unknowns.nops()) return std::nullopt;
   for (auto& [num, den] : terms) {
     ex N = num.subs(ex_to<lst>(sol)), base = den, j = 1;
-    if (is_a<power>(den)) {
+    if (is_a<GiNaC::power>(den)) {
       base = den.op(0);
       j = den.op(1);
     }

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -165,6 +166,12 @@ std::pair<std::string, long> sci(double d, int n, char* buf, std::size_t size) {
 }
 
 }  // namespace
+
+std::string g_text(double d, int n) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", n, d);
+  return buf;
+}
 
 std::string format_double(double d, int n) {
   if (d == 0) return "0";

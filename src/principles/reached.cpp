@@ -19,7 +19,7 @@ using model::Model;
 
 namespace {
 
-std::string num(double v) { return numerics::format(numerics::exact(v), 6); }
+std::string shown(double v) { return numerics::format(numerics::exact(v), 6); }
 
 bool only_coordinates(const Model& m, const ex& e) {
   exmap zero;
@@ -151,10 +151,10 @@ void check_reached(const Model& m, const model::Analysis& a, const EnergyBalance
     // negative against the size of the energies involved (no absolute floor)
     if (k < -1e-9 * sc) {
       const std::string name = m.coords[p].name, unit = units::si_name(m.coords[p].dim).empty() ? "rad" : units::si_name(m.coords[p].dim);
-      throw SceneError(a.pos, "state '" + S2.name + "' is not reached from state '" + S1.name + "': on the way, at " + name + " = " + num(s) + " " +
-                                  unit + ", the kinetic energy would be " + num(k) + " (SI units), negative, so the motion turns back " +
-                                  (i == 1 ? "at once (from " + name + "@" + S1.name + " = " + num(q1[p]) + " " + unit + " it goes the other way)"
-                                          : "between " + name + " = " + num(prev) + " and " + num(s) + " " + unit),
+      throw SceneError(a.pos, "state '" + S2.name + "' is not reached from state '" + S1.name + "': on the way, at " + name + " = " + shown(s) + " " +
+                                  unit + ", the kinetic energy would be " + shown(k) + " (SI units), negative, so the motion turns back " +
+                                  (i == 1 ? "at once (from " + name + "@" + S1.name + " = " + shown(q1[p]) + " " + unit + " it goes the other way)"
+                                          : "between " + name + " = " + shown(prev) + " and " + shown(s) + " " + unit),
                        "check the states: the motion from state '" + S1.name + "' cannot get to state '" + S2.name +
                            "' (a root on the side the motion goes, more energy at the start, or the state it does reach)");
     }

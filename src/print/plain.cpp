@@ -16,10 +16,9 @@ namespace {
 
 using detail::Factor;
 using detail::Factors;
+using enum detail::Prec;
 using detail::classify;
 using detail::flip_sum;
-
-enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
 
 std::string print(const ex& e, int ctx);
 

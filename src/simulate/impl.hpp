@@ -23,13 +23,6 @@ using Mat = Eigen::MatrixXd;
 
 namespace detail {
 
-inline std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
 /// A multi-output tape, run as machine code when it can be compiled.
 struct Kernel {
   numerics::Tape tape;
@@ -498,13 +491,13 @@ struct Simulator::Impl {
     for (std::size_t i = 0; i < n; ++i) {
       const double d = M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
       if (!eq.M(i, i).is_zero() && std::fabs(d) < 1e-250)
-        throw SimulationError("the equations of motion cannot be formed in doubles at t = " + num(t) + " s: the mass matrix entry M[" +
+        throw SimulationError("the equations of motion cannot be formed in doubles at t = " + numerics::g_text(t, 6) + " s: the mass matrix entry M[" +
                                   m.coords[i].name + "," + m.coords[i].name + "]" +
-                                  (d == 0 ? " underflows to 0" : " is " + num(d) + " in SI units, at the edge of what a double holds"),
+                                  (d == 0 ? " underflows to 0" : " is " + numerics::g_text(d, 6) + " in SI units, at the edge of what a double holds"),
                               "simulate the scene at a larger scale: its masses and lengths are too small for doubles",
                               m.coords[i].pos);
     }
-    throw SimulationError("the equations of motion are singular at t = " + num(t) + " s" +
+    throw SimulationError("the equations of motion are singular at t = " + numerics::g_text(t, 6) + " s" +
                               (why.empty() ? ": M(q) is not positive definite (a coordinate that moves no mass?)" : ": " + why),
                           "give every coordinate a body with mass or inertia, or remove the redundant constraint");
   }
@@ -633,7 +626,7 @@ struct Simulator::Impl {
         who = " (" + F.singular + ")";
         at = m.effects[F.effect].pos;
       }
-    throw SimulationError("the acceleration is not a number at t = " + num(t) + " s" + who,
+    throw SimulationError("the acceleration is not a number at t = " + numerics::g_text(t, 6) + " s" + who,
                           who.empty() ? "check the parameters and the start state: an effect or a body's motion is undefined there"
                                       : "start the motion where every effect is defined (a power drive needs the body turning)",
                           at);

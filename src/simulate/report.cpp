@@ -12,16 +12,11 @@
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/common/process.hpp"
+#include "kinergy/numeric/evaluate.hpp"
 
 namespace kinergy::simulate {
 
 namespace {
-
-std::string num(double v, int digits = 10) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
 
 std::string unit_of(const model::Coordinate& c, bool rate) {
   std::string u = units::si_name(c.dim);
@@ -34,10 +29,10 @@ std::string unit_of(const model::Coordinate& c, bool rate) {
 std::string text(const model::Model& m, const Run& r) {
   std::ostringstream os;
   const Sample& e = r.end;
-  os << "end at t = " << num(e.t) << " s" << (r.stopped ? " (the stop condition)" : "") << ":\n";
+  os << "end at t = " << numerics::g_text(e.t, 10) << " s" << (r.stopped ? " (the stop condition)" : "") << ":\n";
   for (std::size_t i = 0; i < m.coords.size(); ++i)
-    os << "  " << m.coords[i].name << " = " << num(e.q[i]) << " " << unit_of(m.coords[i], false) << "   "
-       << m.coords[i].name << "_dot = " << num(e.qd[i]) << " " << unit_of(m.coords[i], true) << "\n";
+    os << "  " << m.coords[i].name << " = " << numerics::g_text(e.q[i], 10) << " " << unit_of(m.coords[i], false) << "   "
+       << m.coords[i].name << "_dot = " << numerics::g_text(e.qd[i], 10) << " " << unit_of(m.coords[i], true) << "\n";
   if (!r.impacts.empty()) {
     os << "impacts: " << r.impacts.size() << "\n";
     std::size_t shown = 0;
@@ -46,20 +41,20 @@ std::string text(const model::Model& m, const Run& r) {
         if (shown == 13) os << "  ...\n";
         continue;
       }
-      os << "  t = " << num(im.t) << " s:";
+      os << "  t = " << numerics::g_text(im.t, 10) << " s:";
       for (std::size_t j = 0; j < im.contacts.size(); ++j)
-        os << " " << im.contacts[j] << " v_n " << num(im.vn_before[j], 8) << " -> " << num(im.vn_after[j], 8)
-           << " m/s, impulse " << num(im.impulse[j], 8) << " N*s;";
-      os << " energy lost " << num(im.loss, 10) << " J" << (im.comes_to_rest ? " (comes to rest)" : "") << "\n";
+        os << " " << im.contacts[j] << " v_n " << numerics::g_text(im.vn_before[j], 8) << " -> " << numerics::g_text(im.vn_after[j], 8)
+           << " m/s, impulse " << numerics::g_text(im.impulse[j], 8) << " N*s;";
+      os << " energy lost " << numerics::g_text(im.loss, 10) << " J" << (im.comes_to_rest ? " (comes to rest)" : "") << "\n";
     }
   }
   for (auto& l : r.log) os << "  " << l << "\n";
   os << "energy audit:\n";
-  os << "  E0 = T + V = " << num(r.E0) << " J,  E1 = " << num(r.E1) << " J\n";
-  for (auto& [name, U] : r.work) os << "  work of " << name << ": " << num(U) << " J\n";
-  if (!r.impacts.empty()) os << "  lost in impacts: " << num(r.impact_loss) << " J\n";
+  os << "  E0 = T + V = " << numerics::g_text(r.E0, 10) << " J,  E1 = " << numerics::g_text(r.E1, 10) << " J\n";
+  for (auto& [name, U] : r.work) os << "  work of " << name << ": " << numerics::g_text(U, 10) << " J\n";
+  if (!r.impacts.empty()) os << "  lost in impacts: " << numerics::g_text(r.impact_loss, 10) << " J\n";
   os << "  " << (r.conservative ? "drift |E1 - E0|" : "balance |E1 - E0 - sum U + losses|") << " / "
-     << num(r.energy_scale, 6) << " J = " << num(std::fabs(r.drift), 3) << "\n";
+     << numerics::g_text(r.energy_scale, 6) << " J = " << numerics::g_text(std::fabs(r.drift), 3) << "\n";
   return os.str();
 }
 
@@ -70,10 +65,10 @@ std::string csv(const model::Model& m, const Run& r) {
   for (auto& c : m.coords) os << "," << c.name << "_dot";
   os << ",T,V,E\n";
   for (auto& s : r.samples) {
-    os << num(s.t, 17);
-    for (double v : s.q) os << "," << num(v, 17);
-    for (double v : s.qd) os << "," << num(v, 17);
-    os << "," << num(s.T, 17) << "," << num(s.V, 17) << "," << num(s.T + s.V, 17) << "\n";
+    os << numerics::g_text(s.t, 17);
+    for (double v : s.q) os << "," << numerics::g_text(v, 17);
+    for (double v : s.qd) os << "," << numerics::g_text(v, 17);
+    os << "," << numerics::g_text(s.T, 17) << "," << numerics::g_text(s.V, 17) << "," << numerics::g_text(s.T + s.V, 17) << "\n";
   }
   return os.str();
 }

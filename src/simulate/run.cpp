@@ -164,9 +164,9 @@ public:
                             "give a position and a rate for every coordinate");
     t_ = s0.t;
     if (!std::isfinite(stop_.until))
-      throw SimulationError("the run has no end (until = " + num(stop_.until) + " s)", "give --until a finite time in s");
+      throw SimulationError("the run has no end (until = " + numerics::g_text(stop_.until, 6) + " s)", "give --until a finite time in s");
     span_ = stop_.until - t_;
-    if (!(span_ >= 0)) throw SimulationError("the run ends before it starts (until = " + num(stop_.until) + " s)", "give --until a time after the start");
+    if (!(span_ >= 0)) throw SimulationError("the run ends before it starts (until = " + numerics::g_text(stop_.until, 6) + " s)", "give --until a time after the start");
     p_.rest_time = std::max(p_.o.tol, 1e-13) * span_;
     y_.assign(2 * n + p_.nw, 0.0);
     std::copy(s0.q.begin(), s0.q.end(), y_.begin());
@@ -179,9 +179,9 @@ public:
     // tell apart: t + dt == t) is refused before it starts
     if (!stepper_->adaptive() && span_ > 0 &&
         (!(span_ / fixed_dt_ <= static_cast<double>(p_.o.max_steps)) || stop_.until + fixed_dt_ == stop_.until))
-      throw SimulationError("a fixed step of " + num(fixed_dt_) + " s would take " + num(span_ / fixed_dt_) + " steps to reach t = " +
-                                num(stop_.until) + " s, more than the " + std::to_string(p_.o.max_steps) + " a run may take",
-                            "give a larger --step (at least " + num(span_ / static_cast<double>(p_.o.max_steps)) + " s)");
+      throw SimulationError("a fixed step of " + numerics::g_text(fixed_dt_, 6) + " s would take " + numerics::g_text(span_ / fixed_dt_, 6) + " steps to reach t = " +
+                                numerics::g_text(stop_.until, 6) + " s, more than the " + std::to_string(p_.o.max_steps) + " a run may take",
+                            "give a larger --step (at least " + numerics::g_text(span_ / static_cast<double>(p_.o.max_steps), 6) + " s)");
 
     p_.eval_aux(t_, y_.data());
     run_.E0 = p_.T() + p_.V();  // before what happens at the start (impulses, impacts)
@@ -198,7 +198,7 @@ public:
     t0_ = t_;
     next_k_ = 1;
     if (sampling() && span_ / p_.o.sample_dt > 1e7)
-      throw SimulationError("sampling every " + num(p_.o.sample_dt) + " s over " + num(span_) + " s makes more than 10^7 samples",
+      throw SimulationError("sampling every " + numerics::g_text(p_.o.sample_dt, 6) + " s over " + numerics::g_text(span_, 6) + " s makes more than 10^7 samples",
                             "sample less often (a larger --dt, fewer --samples)");
     if (span_ > 0) integrate();
     finish();
@@ -227,7 +227,7 @@ private:
 
   std::string contact_name(std::size_t k) const { return p_.m.effects[p_.eq.contacts[k].effect].name; }
   std::string friction_name(std::size_t k) const { return p_.m.effects[p_.eq.friction[k].effect].name; }
-  void note(const std::string& s) { run_.log.push_back("t = " + num(t_) + " s: " + s); }
+  void note(const std::string& s) { run_.log.push_back("t = " + numerics::g_text(t_, 6) + " s: " + s); }
 
   // ---------------------------------------------------------------- the start
   void start() {
@@ -256,7 +256,7 @@ private:
       double gap = p_.aux[p_.a_gap + k], vn = p_.rate_v(p_.o_cont[k].first);
       double tol = gap_tol();
       if (gap < -tol)
-        throw SimulationError("contact '" + contact_name(k) + "' is penetrated at the start (gap " + num(gap) + " m)",
+        throw SimulationError("contact '" + contact_name(k) + "' is penetrated at the start (gap " + numerics::g_text(gap, 6) + " m)",
                               "start with the parties apart or touching", p_.m.effects[p_.eq.contacts[k].effect].pos);
       if (gap <= tol) {
         if (vn < 0) strike.push_back(k);
@@ -297,7 +297,7 @@ private:
     while (t_ < stop_.until) {
       poll_interrupt();  // Ctrl-C from Python (common/interrupt.hpp)
       if (run_.steps >= p_.o.max_steps)
-        throw SimulationError("the run took more than " + std::to_string(p_.o.max_steps) + " steps and stopped at t = " + num(t_) + " s",
+        throw SimulationError("the run took more than " + std::to_string(p_.o.max_steps) + " steps and stopped at t = " + numerics::g_text(t_, 6) + " s",
                               "loosen --tol, shorten --until, or raise the step limit");
       double remaining = stop_.until - t_;
       const double capped = p_.o.max_dt > 0 ? std::min(dt, p_.o.max_dt) : dt;
@@ -315,13 +315,13 @@ private:
         ++run_.rejected;
         dt = hh;
         if (dt < 1e-14 * std::max(std::fabs(t_), span_))
-          throw SimulationError("the step size fell to " + num(dt) + " s at t = " + num(t_) + " s: the motion is too stiff or singular there",
+          throw SimulationError("the step size fell to " + numerics::g_text(dt, 6) + " s at t = " + numerics::g_text(t_, 6) + " s: the motion is too stiff or singular there",
                                 "loosen --tol, or look for an effect that grows without bound");
         continue;
       }
       if (last && stepper_->adaptive()) t = stop_.until;
       if (stepper_->adaptive()) dt = hh;
-      if (!finite(y)) check_finite(y, "the state at t = " + num(t) + " s");
+      if (!finite(y)) check_finite(y, "the state at t = " + numerics::g_text(t, 6) + " s");
       if (watch) ev1 = events(t, y);
       // the first event inside the step, located to the tolerance
       int which = -1;
@@ -455,11 +455,11 @@ private:
     double F = 0, N = 0;
     p_.limit_margin(k, &F, &N);
     if (N <= 0 && l.side)
-      throw SlipError("'" + l.effect + "' loses its contact at t = " + num(t_) + " s: the surface of '" + l.normal + "' would have to pull on the body (" +
-                          num(N) + " N as it presses), and holding it rolling takes a friction force of " + num(F) + " N",
+      throw SlipError("'" + l.effect + "' loses its contact at t = " + numerics::g_text(t_, 6) + " s: the surface of '" + l.normal + "' would have to pull on the body (" +
+                          numerics::g_text(N, 6) + " N as it presses), and holding it rolling takes a friction force of " + numerics::g_text(F, 6) + " N",
                       "the body leaves the surface there; the simulation does not go on with it free of it", l.pos);
-    throw SlipError("'" + l.effect + "' slips at t = " + num(t_) + " s: holding it takes a friction force of " + num(F) + " N, " + num(F / N) +
-                        " times the normal force of '" + l.normal + "' (" + num(N) + " N), and mu_s = " + num(l.mu) +
+    throw SlipError("'" + l.effect + "' slips at t = " + numerics::g_text(t_, 6) + " s: holding it takes a friction force of " + numerics::g_text(F, 6) + " N, " + numerics::g_text(F / N, 6) +
+                        " times the normal force of '" + l.normal + "' (" + numerics::g_text(N, 6) + " N), and mu_s = " + numerics::g_text(l.mu, 6) +
                         " allows no more (the simulation does not go on with it sliding)",
                     "give a larger mu_s, or model the sliding: kinetic friction (a friction effect) in place of the constraint from that state on",
                     l.pos);
@@ -635,7 +635,7 @@ private:
       double mag = std::hypot(F[0], F[1]);
       p_.fmode[k] = FrictionMode::Slide;
       p_.fdir[k] = {-F[0] / mag, -F[1] / mag};
-      note("friction '" + friction_name(k) + "' slips (the load exceeds " + num(p_.flimit[k]) + ")");
+      note("friction '" + friction_name(k) + "' slips (the load exceeds " + numerics::g_text(p_.flimit[k], 6) + ")");
     }
     return true;
   }
@@ -681,12 +681,12 @@ private:
     auto F = stick_force(k, std::vector<double>(p_.lambda.data(), p_.lambda.data() + p_.lambda.size()));
     double mag = std::hypot(F[0], F[1]);
     if (mag <= p_.flimit[k]) {
-      if (stopped) note("friction '" + friction_name(k) + "' sticks: the slip has stopped and " + num(mag) + " <= " + num(p_.flimit[k]) + " holds it");
+      if (stopped) note("friction '" + friction_name(k) + "' sticks: the slip has stopped and " + numerics::g_text(mag, 6) + " <= " + numerics::g_text(p_.flimit[k], 6) + " holds it");
       return;
     }
     p_.fmode[k] = FrictionMode::Slide;
     p_.fdir[k] = {-F[0] / mag, -F[1] / mag};
-    if (stopped) note("friction '" + friction_name(k) + "' reverses: the slip stopped, but holding it takes " + num(mag) + " > " + num(p_.flimit[k]));
+    if (stopped) note("friction '" + friction_name(k) + "' reverses: the slip stopped, but holding it takes " + numerics::g_text(mag, 6) + " > " + numerics::g_text(p_.flimit[k], 6));
   }
 
   // ---------------------------------------------------------------- impacts
@@ -822,8 +822,8 @@ private:
             run_.impact_loss += rest.loss;
             run_.impacts.push_back(rest);
             p_.cmode[k] = ContactMode::Rest;
-            note("contact '" + contact_name(k) + "' comes to rest (the next bounce would last " + num(flight) + " s and rise " +
-                 num(apex) + " m)");
+            note("contact '" + contact_name(k) + "' comes to rest (the next bounce would last " + numerics::g_text(flight, 6) + " s and rise " +
+                 numerics::g_text(apex, 6) + " m)");
           }
         }
       }

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <iomanip>
 #include <random>
 
@@ -174,4 +175,14 @@ TEST_CASE("format_double: the same text as format of the double's exact value, t
   CHECK(kinergy::numerics::format_double(0.125, 2) == "0.13");
   CHECK(kinergy::numerics::format_double(9.5, 1) == "10");
   CHECK(kinergy::numerics::format_double(0, 15) == "0");
+}
+
+TEST_CASE("g_text: a double to n significant digits as printf's %g writes it", "[numeric][format]") {
+  using kinergy::numerics::g_text;
+  CHECK(g_text(0.125, 3) == "0.125");
+  CHECK(g_text(1e-7, 6) == "1e-07");
+  CHECK(g_text(-2.0 / 3.0, 8) == "-0.66666667");
+  CHECK(g_text(123456789.0, 4) == "1.235e+08");
+  CHECK(g_text(10.0, 10) == "10");
+  CHECK(g_text(std::numeric_limits<double>::infinity(), 6) == "inf");
 }

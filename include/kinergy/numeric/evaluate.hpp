@@ -52,6 +52,9 @@ std::string format(const GiNaC::numeric& v, int n);
 /// The same text as format(exact(d), n) for a finite double d (1 ≤ n ≤ 17), without CLN: its
 /// digits correctly rounded by the C++ library, a tie rounded away from zero as format does.
 std::string format_double(double d, int n);
+/// d to n significant digits as printf's "%.*g" writes it: "0.125", "1e-07", "inf" (short
+/// numbers in messages and notes, where format's exact rounding is not asked for).
+std::string g_text(double d, int n);
 
 /// v rounded to n significant digits (exact decimal).
 GiNaC::numeric round_sig(const GiNaC::numeric& v, int n);

@@ -9,6 +9,10 @@
 
 namespace kinergy::emit::detail {
 
+/// How tightly the context of a printed form binds (both printers, plain text and TeX): a sum
+/// inside a product or a power is put in parentheses, a product inside a power.
+enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
+
 /// A base raised to a rational power, kept apart so that GiNaC does not re-normalise it.
 struct Factor {
   GiNaC::ex base;
