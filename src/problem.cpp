@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/roots.hpp"
+#include "kinergy/numeric/tape.hpp"
 #include "kinergy/numeric/ball.hpp"
 #include "kinergy/numeric/evaluator.hpp"
 #include "kinergy/numeric/trace.hpp"
@@ -285,6 +287,85 @@ bool Solution::drew_on(const principles::Equation& e) const {
 }
 
 namespace {
+
+/// The kinetic energy K(s, p) over a path s ∈ [lo, hi] on a grid of n intervals (or at one
+/// place, without a path), for the scan of a least (greatest) parameter value p. Each grid
+/// point's K is first enclosed in doubles with its inputs' rounding (K compiled to a tape of
+/// (p, s)); CLN at 45 digits (`at`) takes only the points the enclosures cannot settle, so the
+/// answers are the same as taking every point at 45 digits, at about a hundredth of the time.
+/// Without a tape (K holds a work integral, or a sweep traces the solve) every point is CLN's.
+class PathScan {
+public:
+  struct Low {
+    numeric K, s;
+    int i = 0;  ///< grid index (0 or n: an end)
+  };
+  using At = std::function<std::optional<numeric>(const numeric& s, const numeric& p)>;
+
+  PathScan(numeric lo, numeric hi, bool path, std::optional<numerics::Tape> tape, At at)
+      : lo_(std::move(lo)), hi_(std::move(hi)), path_(path), tape_(std::move(tape)), at_(std::move(at)) {}
+
+  /// The least K over the grid, at its first grid point (nothing where K is nowhere defined).
+  std::optional<Low> lowest(const numeric& p, int n) {
+    const std::vector<numeric>& grid = enclose_grid(p, n);
+    // a point whose enclosure lies wholly above another's is not the least
+    double upper = HUGE_VAL;
+    for (auto& e : box_)
+      if (!e.maybe_undefined) upper = std::min(upper, e.value + e.bound);
+    std::optional<Low> best;
+    for (std::size_t i = 0; i < box_.size(); ++i) {
+      if (!box_[i].maybe_undefined && box_[i].value - box_[i].bound > upper) continue;
+      if (auto v = at_(grid[i], p); v && (!best || *v < best->K)) best = Low{*v, grid[i], static_cast<int>(i)};
+    }
+    return best;
+  }
+
+  /// K ≥ 0 at every grid point where it is defined, and defined at one at least.
+  bool admissible(const numeric& p, int n) {
+    // where the enclosures tell K's sign at every point, they answer alone
+    enclose_grid(p, n);
+    bool positive = true;
+    for (auto& e : box_) {
+      if (!e.maybe_undefined && e.value + e.bound < 0) return false;
+      positive = positive && !e.maybe_undefined && e.value - e.bound > 0;
+    }
+    if (positive) return true;
+    auto l = lowest(p, n);
+    return l && !l->K.is_negative();
+  }
+
+private:
+  /// The grid's points for n (kept), and box_[i], K's enclosure at point i: each exact input
+  /// within a unit in the last place of its double (and the least subnormal) of it, so that the
+  /// exact K there lies in the enclosure, where it is defined.
+  const std::vector<numeric>& enclose_grid(const numeric& p, int n) {
+    const int last = path_ ? n : 0;
+    std::vector<numeric>& grid = grids_[n];
+    std::vector<double>& grid_d = grids_d_[n];
+    for (int i = static_cast<int>(grid.size()); i <= last; ++i) {
+      grid.push_back(lo_ + (hi_ - lo_) * numeric(i, n));
+      grid_d.push_back(grid.back().to_double());
+    }
+    box_.assign(last + 1, numerics::Enclosed{0, 0, true});
+    if (!tape_) return grid;
+    const double p_d = p.to_double();
+    for (int i = 0; i <= last; ++i) {
+      const double mid[2] = {p_d, grid_d[i]};
+      const double radius[2] = {std::abs(mid[0]) * 0x1p-52 + 0x1p-1074, std::abs(mid[1]) * 0x1p-52 + 0x1p-1074};
+      tape_->enclose(mid, radius, &box_[i]);
+      if (!std::isfinite(box_[i].value) || !std::isfinite(box_[i].bound)) box_[i].maybe_undefined = true;
+    }
+    return grid;
+  }
+
+  numeric lo_, hi_;
+  bool path_;
+  std::optional<numerics::Tape> tape_;
+  At at_;
+  std::vector<numerics::Enclosed> box_;
+  std::map<int, std::vector<numeric>> grids_;    ///< the path's n + 1 positions, for each n asked
+  std::map<int, std::vector<double>> grids_d_;   ///< the same as doubles
+};
 
 /// The steps of solving a scene: the unknowns, the equations of each analysis in order (what
 /// one determines is known to the next), the solver, the choice among its branches, the results.
@@ -983,6 +1064,20 @@ private:
     return note.str();
   }
 
+  /// K compiled to a tape of (p, along) for reach's scan, the other parameters at their values;
+  /// none where K holds what a double tape does not take (a work integral).
+  std::optional<numerics::Tape> tape_of(const ex& K, const model::Find::Reach& x) const {
+    std::vector<ex> inputs{x.p};
+    if (x.along) inputs.push_back(*x.along);
+    exmap values = env;  // (p and along are the tape's inputs, whatever values env has for them)
+    for (auto& in : inputs) values.erase(in);
+    try {
+      return numerics::Tape::compile(K.subs(values), inputs);
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }
+
   /// The least (greatest) value of f's parameter p for which its state S is reached: the
   /// kinetic energy K = T@S from the solution must be ≥ 0 at S, and — when a parameter `along`
   /// places S — at every position of the path, along ∈ [lo, hi]:
@@ -1014,22 +1109,11 @@ private:
       hi = *numerics::evaluate(x.hi, env, digits);
     }
     // the lowest kinetic energy over the path, on a grid of n intervals
-    struct Low {
-      numeric K, s;
-      int i = 0;  // grid index (0 or n: an end)
-    };
-    auto lowest = [&](const numeric& p, int n) -> std::optional<Low> {
-      std::optional<Low> best;
-      for (int i = 0; i <= (x.along ? n : 0); ++i) {
-        numeric s = lo + (hi - lo) * numeric(i, n);
-        if (auto v = K_at(K, s, p); v && (!best || *v < best->K)) best = Low{*v, s, i};
-      }
-      return best;
-    };
-    auto admissible = [&](const numeric& p, int n) {
-      auto l = lowest(p, n);
-      return l && !l->K.is_negative();
-    };
+    PathScan scan(lo, hi, x.along.has_value(), numerics::tracing() ? std::nullopt : tape_of(K, x),
+                  [&](const numeric& s, const numeric& p) { return K_at(K, s, p); });
+    using Low = PathScan::Low;
+    auto lowest = [&](const numeric& p, int n) { return scan.lowest(p, n); };
+    auto admissible = [&](const numeric& p, int n) { return scan.admissible(p, n); };
     // scan: the admissible p form [p*, ∞) for a least value, (0, p*] for a greatest
     const int k0 = -20, k1 = 40;
     std::optional<int> edge;  // first admissible k (least) / last admissible k (greatest)

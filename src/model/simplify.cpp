@@ -44,6 +44,9 @@ ex factor_any(const ex& e) {
   // each is kept, keyed by the form (its value depends on the form alone)
   static thread_local std::map<ex, ex, ex_is_less> kept;
   if (auto it = kept.find(e); it != kept.end()) return it->second;
+  // and a form is often factored again as its negative (a residual's two sides): factor(−e) =
+  // −factor(e)
+  if (auto it = kept.find(-e); it != kept.end()) return -it->second;
   ex f = factor_any_uncached(e);
   if (kept.size() > 2048) kept.clear();  // (bounded: a long batch keeps no old scene alive for long)
   kept.emplace(e, f);

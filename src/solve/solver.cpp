@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -116,6 +117,9 @@ private:
   std::vector<Branch> done_;
 
   std::vector<ex> products_;  ///< unknowns standing for a product of two (w = F t)
+  /// Residuals with unknowns found not to vanish identically: each step prunes every equation
+  /// again, and most are as they were (an unknown solved touches only the equations that hold it)
+  std::set<ex, GiNaC::ex_is_less> not_identities_;
 
   std::vector<ex> unknowns_in(const ex& e) const {
     std::vector<ex> u;
@@ -169,7 +173,10 @@ private:
       ex r = q.residual();
       if (!free_of_unknowns(r)) {
         // an equation that reduces to 0 = 0 once the solved unknowns are in says nothing more
-        if (model::ex_size(r) < 300 && normal(r).is_zero()) continue;
+        if (model::ex_size(r) < 300 && !not_identities_.count(r)) {
+          if (normal(r).is_zero()) continue;
+          not_identities_.insert(r);
+        }
         keep.push_back(q);
         continue;
       }
@@ -477,8 +484,10 @@ private:
   std::optional<numeric> refine(const ex& r, const symbol& u, const numeric& a, const numeric& b, const numeric& fa,
                                 const numeric& fb) const {
     const int digits = kWork + 10;
-    return numerics::bracketed_root([&](const numeric& x) { return residual_at(r, u, x, digits); }, a, b, fa, fb,
-                                    numerics::tenth(kWork), numerics::tenth(300), digits);
+    // first at 10 digits (a work integral by quadrature in doubles), then at the working digits
+    return numerics::staged_root([&](const numeric& x) { return residual_at(r, u, x, 10); },
+                                 [&](const numeric& x) { return residual_at(r, u, x, digits); }, a, b, fa, fb, numerics::tenth(kWork),
+                                 numerics::tenth(300), digits);
   }
 
   // No closed form: find the sign changes of the residual around a reference and refine.

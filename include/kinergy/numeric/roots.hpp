@@ -24,4 +24,13 @@ std::optional<GiNaC::numeric> bracketed_root(const Scalar& f, GiNaC::numeric a, 
                                              GiNaC::numeric fb, const GiNaC::numeric& rtol, const GiNaC::numeric& atol,
                                              int digits, int max_steps = 400);
 
+/// The same root, found in two stages where f is dear (a residual that holds a quadrature):
+/// first with `coarse` (f at a few digits) to about nine digits, then with f from a narrow
+/// bracket about that, whose ends are checked with f to bracket a root; where they do not (the
+/// coarse values too coarse there), with f from [a, b] as bracketed_root. Either way the root is
+/// f's, to rtol and atol: the coarse stage only saves f's steps.
+std::optional<GiNaC::numeric> staged_root(const Scalar& coarse, const Scalar& f, const GiNaC::numeric& a, const GiNaC::numeric& b,
+                                          const GiNaC::numeric& fa, const GiNaC::numeric& fb, const GiNaC::numeric& rtol,
+                                          const GiNaC::numeric& atol, int digits);
+
 }  // namespace kinergy::numerics
