@@ -47,6 +47,7 @@ std::optional<ex> Inputs::map(const ex& e) const {
 void carry(Region& r, const numerics::Trace& t, const Solution* s, const Inputs& in) {
   if (!t.untraced.empty()) {
     r.unusable = "a choice depends on " + t.untraced;
+    r.nowhere = true;
     return;
   }
   std::set<std::pair<ex, int>, bool (*)(const std::pair<ex, int>&, const std::pair<ex, int>&)> seen(
@@ -100,6 +101,7 @@ void carry(Region& r, const numerics::Trace& t, const Solution* s, const Inputs&
         auto f = in.map(res.closed / res.unit_factor);
         if (!res.closed_form || !f) {
           r.unusable = "'" + res.name + "' has no closed form (a number found numerically)";
+          r.nowhere = true;
           return;
         }
         r.results.push_back(numerics::Tape::compile(*f, xs));
@@ -107,6 +109,7 @@ void carry(Region& r, const numerics::Trace& t, const Solution* s, const Inputs&
     }
   } catch (const std::exception&) {
     r.unusable = "a form the compiled doubles do not take";
+    r.nowhere = true;
     r.paths.clear();
     r.results.clear();
   }

@@ -13,16 +13,20 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <iomanip>
 #include <limits>
 #include <map>
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "kinergy/app/app.hpp"
 #include "kinergy/common/error.hpp"
 #include "kinergy/common/interrupt.hpp"
+#include "kinergy/common/process.hpp"
 #include "kinergy/confirm/confirm.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/tape.hpp"
@@ -108,6 +112,7 @@ public:
     }
     carry(r, t, &base, in_);
     if (!r.unusable.empty()) sum_.note = "every point solved: " + r.unusable;
+    solve_each_ = r.nowhere;
     regions_.push_back(std::move(r));
   }
 
@@ -119,6 +124,7 @@ private:
   std::vector<std::string> names_;
   std::vector<Region> regions_;
   Sweep::Summary sum_;
+  bool solve_each_ = false;  ///< no solution is carried anywhere: every point solved, in parallel
 
   scene::SceneDef at_point(const std::vector<double>& values) const {
     scene::SceneDef at = def_;
@@ -233,7 +239,74 @@ private:
 
   void confirm_sample(const std::vector<std::uint8_t>& id, std::size_t origin);
   void open_point(const std::vector<double>& values, Sweep::Row& row);
+  void solve_each(std::size_t origin, std::size_t count, std::size_t& done, const std::function<void(const Sweep::Row&)>& emit);
+  void count(const Sweep::Row& row);
 };
+
+/// A row as bytes, for a worker process's pipe (the same machine reads it: doubles as they are).
+std::string encode(const Sweep::Row& r) {
+  std::string out;
+  auto put = [&](const void* p, std::size_t n) { out.append(static_cast<const char*>(p), n); };
+  auto put_string = [&](const std::string& t) {
+    const std::uint64_t n = t.size();
+    put(&n, sizeof n);
+    out += t;
+  };
+  const std::uint64_t n = r.values.size();
+  put(&n, sizeof n);
+  put(r.values.data(), n * sizeof(double));
+  put_string(r.error);
+  put_string(r.how);
+  return out;
+}
+
+Sweep::Row decode(const std::string& bytes, std::vector<double> params) {
+  Sweep::Row r;
+  r.at = std::move(params);
+  std::size_t at = 0;
+  auto get = [&](void* p, std::size_t n) {
+    if (at + n > bytes.size()) throw std::runtime_error("a worker process's row is cut short");
+    std::memcpy(p, bytes.data() + at, n);
+    at += n;
+  };
+  auto get_string = [&]() {
+    std::uint64_t n = 0;
+    get(&n, sizeof n);
+    std::string t(n, '\0');
+    get(t.data(), n);
+    return t;
+  };
+  std::uint64_t n = 0;
+  get(&n, sizeof n);
+  r.values.resize(n);
+  get(r.values.data(), n * sizeof(double));
+  r.error = get_string();
+  r.how = get_string();
+  return r;
+}
+
+/// The points origin … origin + count − 1, each solved (no solution carried between them), in
+/// options_.jobs processes: the rows the same, in the same order, as solved one after the other.
+void Engine::solve_each(std::size_t origin, std::size_t count, std::size_t& done, const std::function<void(const Sweep::Row&)>& emit) {
+  ordered_in_processes(
+      count, options_.jobs, [&](std::size_t k) { return encode(solve_at(grid_.point(origin + k), false)); },
+      [&](std::size_t k, const std::string& bytes) {
+        if ((done & 63) == 0) {
+          poll_interrupt();
+          if (options_.progress) options_.progress(done, sum_.points);
+        }
+        const Sweep::Row row = decode(bytes, grid_.point(origin + k));
+        this->count(row);
+        emit(row);
+        ++done;
+      });
+}
+
+void Engine::count(const Sweep::Row& row) {
+  if (row.how == "solved") ++sum_.solved;
+  else ++sum_.closed;
+  if (!row.error.empty()) ++sum_.failed;
+}
 
 /// An open point: a region found since that holds at it, else solved here (and carried on).
 void Engine::open_point(const std::vector<double>& values, Sweep::Row& row) {
@@ -297,6 +370,10 @@ Sweep::Summary Engine::run(const std::function<void(const Sweep::Row&)>& emit) {
   for (std::size_t i = d - 1; i-- > 0;) stride[i] = stride[i + 1] * grid_.count(i + 1);
   std::size_t done = 0;
   for (std::size_t origin = 0; origin < total; origin += inner) {
+    if (options_.per_point || solve_each_) {
+      solve_each(origin, inner, done, emit);
+      continue;
+    }
     std::vector<std::uint8_t> id(inner, kOpen);
     if (!options_.per_point) {
       Box b;
@@ -315,11 +392,8 @@ Sweep::Summary Engine::run(const std::function<void(const Sweep::Row&)>& emit) {
       std::optional<Sweep::Row> c;
       if (id[k] != kOpen) c = carried(regions_[id[k]], values);
       if (c) row = std::move(*c);
-      else if (options_.per_point) row = solve_at(values, false);
       else open_point(values, row);
-      if (row.how == "solved") ++sum_.solved;
-      else ++sum_.closed;
-      if (!row.error.empty()) ++sum_.failed;
+      count(row);
       emit(row);
       ++done;
     }

@@ -20,6 +20,7 @@
 #include "kinergy/batch/batch.hpp"
 #include "kinergy/batch/sweep.hpp"
 #include "kinergy/common/error.hpp"
+#include "kinergy/common/process.hpp"
 #include "kinergy/draw/animation.hpp"
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/derive.hpp"
@@ -320,6 +321,11 @@ struct SweepCommand {
     sweep->add_option("--samples", options.samples, "points solved in full and compared with the closed forms (default 8)")
         ->check(CLI::Range(0, 10000));
     sweep->add_flag("--no-confirm", no_confirm, "do not confirm the sample points' solutions a second way (by simulation)");
+    options.jobs = kinergy::available_cores();
+    sweep->add_option("--jobs", options.jobs,
+                      "processes that solve the points where no closed form is carried (--per-point, a numeric root); "
+                      "default: the cores this process may use")
+        ->check(CLI::Range(1, 1024));
   }
 
   int run() {

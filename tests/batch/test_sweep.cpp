@@ -221,3 +221,33 @@ TEST_CASE("sweep: through zero, a solution found at a positive value is not carr
     else CHECK(row.how != "closed form");
   }
 }
+
+TEST_CASE("sweep: points without a closed form solved in worker processes, the rows those of one process", "[batch][sweep]") {
+  // the wheel's angle is a numeric root (a work integral): every point is solved, here in two
+  // processes, and the CSV is the same bytes as solved in one
+  const auto wheel = kinergy::scene::load_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/wheel_cam_couple_angle.yaml");
+  const std::vector<kinergy::batch::Range> ranges{kinergy::batch::parse_range("m=15..25:3", wheel),
+                                                  kinergy::batch::parse_range("w2=5..6:2", wheel)};
+  kinergy::batch::SweepOptions one, two;
+  two.jobs = 2;
+  const auto a = kinergy::batch::sweep(wheel, ranges, one), b = kinergy::batch::sweep(wheel, ranges, two);
+  CHECK(kinergy::batch::csv(a) == kinergy::batch::csv(b));
+  CHECK(a.summary.solved == 6);
+  CHECK(b.summary.solved == 6);
+  CHECK(b.summary.note.find("every point solved: a choice depends on a numeric root") == 0);
+  // --per-point in two processes: the rod's hand values, and the rows of one process
+  const auto rod = kinergy::scene::load_file(kRod);
+  const std::vector<kinergy::batch::Range> grid{kinergy::batch::parse_range("l=0.5..2:4", rod), kinergy::batch::parse_range("theta2=30..90:5", rod)};
+  kinergy::batch::SweepOptions each;
+  each.per_point = true;
+  each.jobs = 2;
+  const auto p = kinergy::batch::sweep(rod, grid, each);
+  REQUIRE(p.rows.size() == 20);
+  for (const auto& row : p.rows) {
+    INFO(row.at[0] << " m, " << row.at[1] << " deg");
+    CHECK(row.how == "solved");
+    CHECK(std::fabs(row.values[0] - omega(row.at[0], row.at[1])) < 1e-12 * omega(row.at[0], row.at[1]));
+  }
+  each.jobs = 1;
+  CHECK(kinergy::batch::csv(kinergy::batch::sweep(rod, grid, each)) == kinergy::batch::csv(p));
+}

@@ -37,6 +37,9 @@ struct Region {
   bool ok = false;
   std::string error;     ///< !ok: why the scene has no solution there
   std::string unusable;  ///< why it holds only at `at` ("": it is carried to any box its choices hold in)
+  /// `unusable` for a reason that holds at every point (a numeric root, a scan, a form without a
+  /// closed form): no solve's solution is carried anywhere, and every point is solved
+  bool nowhere = false;
   std::optional<numerics::Tape> notes;  ///< every sign its choices read, in the inputs
   std::vector<int> signs;
   struct Path {

@@ -54,6 +54,9 @@ struct SweepOptions {
   /// with the closed form's values to 1e-12: a disagreement is an error showing both.
   int samples = 8;
   bool confirm = true;
+  /// Processes that solve points where no closed form is carried (--per-point, or a scene whose
+  /// solution is a numeric root): each solves every jobs-th point, the rows coming back in order.
+  int jobs = 1;
   /// Called now and then with (points done, points in all).
   std::function<void(std::size_t, std::size_t)> progress;
 };
