@@ -70,16 +70,14 @@ public:
   /// The solution found at batch line `line` with trace t, carried in the parameters `names`.
   Shared(Solution s, const numerics::Trace& t, std::vector<std::string> names, std::size_t line)
       : base_(std::move(s)), names_(std::move(names)), line_(line) {
-    for (std::size_t i = 0; i < names_.size(); ++i) in_.x.push_back(GiNaC::symbol("x" + std::to_string(i)));
-    for (auto& p : base_.model.params)
-      if (p.value) in_.by_name[p.name] = *p.value;
+    // (each set value is read in SI: its number times its unit's factor)
+    in_ = Inputs::of(base_.model, names_, std::vector<GiNaC::ex>(names_.size(), 1));
     for (std::size_t i = 0; i < names_.size(); ++i) {
       const model::Parameter* p = base_.model.parameter(names_[i]);
       if (!p || !p->value) {
         region_.unusable = "'" + names_[i] + "' is not a parameter with a value";
         return;
       }
-      in_.by_name[names_[i]] = in_.x[i];
       params_.push_back(p);
       positive_.push_back(numerics::to_double(*p->value) > 0);
     }

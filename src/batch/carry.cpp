@@ -44,6 +44,15 @@ std::optional<ex> Inputs::map(const ex& e) const {
   }
 }
 
+Inputs Inputs::of(const model::Model& m, const std::vector<std::string>& varying, const std::vector<ex>& factor) {
+  Inputs in;
+  for (std::size_t i = 0; i < varying.size(); ++i) in.x.push_back(symbol("x" + std::to_string(i)));
+  for (auto& p : m.params)
+    if (p.value) in.by_name[p.name] = *p.value;
+  for (std::size_t i = 0; i < varying.size(); ++i) in.by_name[varying[i]] = factor[i] * in.x[i];
+  return in;
+}
+
 void carry(Region& r, const numerics::Trace& t, const Solution* s, const Inputs& in) {
   if (!t.untraced.empty()) {
     r.unusable = "a choice depends on " + t.untraced;

@@ -89,14 +89,14 @@ class Engine {
 public:
   Engine(const scene::SceneDef& def, const std::vector<Range>& ranges, const SweepOptions& options, const Solution& base)
       : def_(def), grid_{ranges}, options_(options) {
-    for (std::size_t i = 0; i < ranges.size(); ++i) in_.x.push_back(symbol("x" + std::to_string(i)));
-    // a swept parameter is its input times its unit's factor to SI; another, its value
-    for (auto& p : base.model.params)
-      if (p.value) in_.by_name[p.name] = *p.value;
-    for (std::size_t i = 0; i < ranges.size(); ++i) {
-      const units::Quantity q = units::parse_quantity(app::parameter(def, ranges[i].name, "sweep").value.s);
-      in_.by_name[ranges[i].name] = q.unit.factor * in_.x[i];
+    // a swept parameter is its input (in the scene's unit) times its unit's factor to SI
+    std::vector<std::string> varying;
+    std::vector<ex> factor;
+    for (auto& r : ranges) {
+      varying.push_back(r.name);
+      factor.push_back(units::parse_quantity(app::parameter(def, r.name, "sweep").value.s).unit.factor);
     }
+    in_ = Inputs::of(base.model, varying, factor);
     for (auto& res : base.results) names_.push_back(res.name);
   }
 

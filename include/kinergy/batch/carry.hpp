@@ -29,6 +29,9 @@ struct Inputs {
   /// e in the inputs, or nothing when it holds a symbol that is neither (a state's place whose
   /// form was not followed).
   std::optional<GiNaC::ex> map(const GiNaC::ex& e) const;
+  /// The inputs of model m's parameters `varying`: input i is parameter varying[i] in the unit
+  /// whose factor to SI is factor[i]; every other parameter with a value is that value.
+  static Inputs of(const model::Model& m, const std::vector<std::string>& varying, const std::vector<GiNaC::ex>& factor);
 };
 
 /// What one solve (at one set of values) found, and what makes it hold at others.
