@@ -104,7 +104,9 @@ struct Diagram {
     for (auto& [effect, p] : shown) {
       if (!in_set(p.body)) continue;
       const double x = at1(p.arm_x), y = at1(p.arm_y);
-      const std::string word = "\\mathrm{" + tex_text(effect) + "}";
+      // an implied support ("N_disk", the principles' name) as a textbook writes it: N with the body's subscript
+      const bool support = effect.rfind("N_", 0) == 0;
+      const std::string word = support ? "N_{\\mathrm{" + tex_text(effect.substr(2)) + "}}" : "\\mathrm{" + tex_text(effect) + "}";
       if (p.unknown) {
         // an unknown impulse made of unknowns (R = Σ u ∂R/∂u): one arrow along each ∂R/∂u, named by u
         std::vector<symbol> us;

@@ -343,6 +343,90 @@ void integrate_positions(const Model& m, const Analysis& a, MomentumBalance::Com
   c.displacement = d;
 }
 
+/// The line a body's mass centre keeps to while the body turns freely (a disk rolling on an
+/// incline with its angle a coordinate of its own, a particle on a straight guide): every
+/// ∂r̄/∂q_i along one constant u, no coordinate that moves the centre turns the body, and one
+/// turns it alone (or the body is a particle). Its support is then a single force normal to u
+/// through the mass centre, the only load the coordinates leave unknown; nothing otherwise.
+std::optional<std::pair<ex, ex>> free_centre_line(const Model& m, int b) {
+  const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+  if (B.x.has(m.t) || B.y.has(m.t) || B.angle.has(m.t)) return std::nullopt;
+  std::optional<std::pair<ex, ex>> u;
+  bool turns_alone = B.inertia.is_zero();
+  for (auto& co : m.coords) {
+    const ex dx = model::trig_simplify(B.x.diff(co.q)), dy = model::trig_simplify(B.y.diff(co.q));
+    const bool turns = !vanishes(m, model::trig_simplify(B.angle.diff(co.q)));
+    if (vanishes(m, dx) && vanishes(m, dy)) {
+      turns_alone = turns_alone || turns;
+      continue;
+    }
+    if (turns) return std::nullopt;  // rolling written into the coordinates: a friction is implied too
+    if (!u) {
+      const ex len = sqrt(model::trig_simplify(dx * dx + dy * dy));
+      const ex ux = model::trig_simplify(dx / len), uy = model::trig_simplify(dy / len);
+      if (!motion_free(m, ux) || !motion_free(m, uy)) return std::nullopt;
+      u = {ux, uy};
+    }
+    if (!vanishes(m, cross(u->first, u->second, dx, dy))) return std::nullopt;
+  }
+  if (!u || !turns_alone) return std::nullopt;
+  return u;
+}
+
+/// Does body b interact with another body of a's set: a coordinate that moves both, or a load
+/// between them? Then a support's force on b is not found from the loads on b alone (the
+/// others' pull through the interaction is not among the set's impulses).
+bool coupled_in_set(const Model& m, const Analysis& a, int b) {
+  auto moves = [&](int x, const ex& q) {
+    const model::Body& B = m.bodies[static_cast<std::size_t>(x)];
+    return B.x.has(q) || B.y.has(q) || B.angle.has(q);
+  };
+  for (int o : a.bodies) {
+    if (o == b) continue;
+    for (auto& co : m.coords)
+      if (moves(b, co.q) && moves(o, co.q)) return true;
+  }
+  for (auto& e : m.effects)
+    for (const model::Load& l : e.loads(m))
+      if (l.partner && ((l.at.body == b && l.partner->body != b && in_set(a.bodies, l.partner->body)) ||
+                        (l.partner->body == b && l.at.body != b && in_set(a.bodies, l.at.body))))
+        return true;
+  return false;
+}
+
+/// The implied support of each body of the set whose centre keeps to a line while it turns
+/// freely (free_centre_line), for its impulse–momentum diagram: the equations along the line (or
+/// about a point on the normal through its centre) drop it, but the diagram shows every impulse
+/// on the set. The centre does not accelerate across its line, so N = −(ΣF·n) n at the mass centre,
+/// n normal to the line, from the known loads on the body; not shown where a load on it across
+/// the line is unknown (a declared support's reaction), where a support of it is already shown,
+/// or where it interacts with another body of the set (coupled_in_set).
+void show_line_supports(const Model& m, const Analysis& a, MomentumBalance& out) {
+  for (int b : a.bodies) {
+    if (coupled_in_set(m, a, b)) continue;
+    const std::string name = "N_" + m.bodies[static_cast<std::size_t>(b)].name;
+    if (std::any_of(out.shown.begin(), out.shown.end(), [&](const Shown& sh) { return sh.effect == name; })) continue;
+    const auto u = free_centre_line(m, b);
+    if (!u) continue;
+    const ex nx = -u->second, ny = u->first;
+    ex Fn = 0;
+    bool unknown = false;
+    for (auto& sh : out.shown) {
+      if (sh.push.body != b) continue;
+      if (sh.push.unknown) unknown = unknown || !vanishes(m, dot(sh.push.Rx, sh.push.Ry, nx, ny));
+      else Fn += dot(sh.push.Fx, sh.push.Fy, nx, ny);
+    }
+    if (unknown || vanishes(m, Fn)) continue;
+    Push n;
+    n.body = b;
+    n.Fx = model::trig_simplify(-Fn * nx);
+    n.Fy = model::trig_simplify(-Fn * ny);
+    n.arm_x = m.bodies[static_cast<std::size_t>(b)].x;
+    n.arm_y = m.bodies[static_cast<std::size_t>(b)].y;
+    out.shown.push_back({name, n});
+  }
+}
+
 }  // namespace
 
 MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
@@ -452,6 +536,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
       out.holds.insert(out.holds.end(), p.holds.begin(), p.holds.end());
       out.shown.push_back({e.name, p});
     }
+  show_line_supports(m, a, out);
   return out;
 }
 
@@ -619,6 +704,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       out.shown.push_back({e.name, p});
     }
   show_supports(m, guided, supported, out);
+  show_line_supports(m, a, out);
   out.components.push_back(c);
   return out;
 }

@@ -1308,3 +1308,27 @@ find:
   REQUIRE_THROWS_WITH(kt::solve_text(energy), Catch::Contains("the energy analysis from state '1' to '3' starts at state '1', where the given impulse 'hit' strikes") &&
                                                   Catch::Contains("add an impact analysis from '1'"));
 }
+
+TEST_CASE("impulse-momentum diagram: the support the coordinates imply under a body whose centre keeps to a line", "[momentum][diagram]") {
+  // the disk rolling down the incline (its centre along u = (cos β, −sin β), its angle a
+  // coordinate of its own): by hand, m ā·n = 0 across the line, so N = −(W·n) n = m g cos β n with
+  // n = (sin β, cos β), the incline's outward normal — in the diagram of both analyses
+  const auto s = kinergy::solve_scene(kinergy::scene::load_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/momentum/disk_rolls_incline_time.yaml"));
+  const double m = 8, g = 9.81, beta = 20 * 3.14159265358979323846 / 180;
+  const auto balances = s.balances_of<kinergy::principles::MomentumBalance>();
+  REQUIRE(balances.size() == 2);
+  const GiNaC::exmap env = s.model.numeric_environment();
+  for (const auto* b : balances) {
+    const auto n = std::find_if(b->shown.begin(), b->shown.end(), [](const auto& sh) { return sh.effect == "N_disk"; });
+    REQUIRE(n != b->shown.end());
+    const double Fx = GiNaC::ex_to<GiNaC::numeric>(n->push.Fx.subs(env).evalf()).to_double();
+    const double Fy = GiNaC::ex_to<GiNaC::numeric>(n->push.Fy.subs(env).evalf()).to_double();
+    CHECK(Fx == Approx(m * g * std::cos(beta) * std::sin(beta)).epsilon(1e-12));
+    CHECK(Fy == Approx(m * g * std::cos(beta) * std::cos(beta)).epsilon(1e-12));
+  }
+  // the collar on its guide holds the rod by a pin: the guide's force on it answers the rod's
+  // pull too, which no load on the collar alone gives: no support drawn from the collar's loads
+  const auto c = kinergy::solve_scene(kinergy::scene::load_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/momentum/collar_rod_pin_reaction.yaml"));
+  for (const auto* b : c.balances_of<kinergy::principles::MomentumBalance>())
+    for (const auto& sh : b->shown) CHECK(sh.effect != "N_collar");
+}
