@@ -171,7 +171,15 @@ bool crosses(const std::array<double, 4>& seg, const Layout::Box& b) {
   return true;
 }
 
-Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height, const Figure::Bounds* fixed) {
+Layout::Box sign_box(double x, double mid, std::size_t length) {
+  // (drawn centred at x on the baseline mid + 9: a "+" or "=" of 28 px is about 17 px wide, and
+  // stands from 19 px above the baseline to 1 below)
+  const double half = 0.35 * kSignFont * static_cast<double>(std::max<std::size_t>(length, 1)) / 2 + 2;
+  return {x - half, mid + 9 - 22, x + half, mid + 9 + 3};
+}
+
+Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height, const Figure::Bounds* fixed,
+               const std::vector<std::size_t>& after) {
   Layout L;
   const std::size_t n = panels.size();
   if (width <= 0) width = n <= 1 ? 640 : static_cast<int>(std::min<std::size_t>(1200, 400 * n));
@@ -233,10 +241,16 @@ Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels,
     L.between_x.push_back(left + w + kGap / 2);
     left += w + kGap;
   }
-  // labels on the page, kept off each other and on the page, and off the strokes of bodies and
-  // arrows where a place round the anchor allows: the first place free of all three, else the
-  // first free of labels and the page's edge
-  std::vector<Layout::Box> taken;
+  // the titles and the words between panels first: no label goes over them
+  for (std::size_t i = 0; i < n; ++i) {
+    if (tw[i] > 0) L.reserved.push_back({L.places[i].centre - (tw[i] - 12) / 2 - 2, L.title_y - 13, L.places[i].centre + (tw[i] - 12) / 2 + 2, L.title_y + 4});
+    if (i < after.size() && after[i] > 0 && i + 1 < n) L.reserved.push_back(sign_box(L.between_x[i], L.mid, after[i]));
+  }
+  // labels on the page, kept off each other, off those, and on the page, and off the strokes of
+  // bodies and arrows where a place round the anchor allows: the first place free of all, else
+  // the first free of labels, the reserved boxes and the page's edge, looking further out from
+  // the anchor (up to six rings of places) until one is
+  std::vector<Layout::Box> taken = L.reserved;
   for (std::size_t i = 0; i < n; ++i) {
     const auto& P = L.places[i];
     // the page segments of the panel's bodies and arrows
@@ -258,21 +272,26 @@ Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels,
                                                  {14, -20}, {-14 - bw, 30}, {14, 30}, {-14 - bw, -20}, {20, 6}, {-20 - bw, 6}};
       Layout::Box best{ax + 8, ay - 6 - bh, ax + 8 + bw, ay - 6};
       bool found = false, any = false;
-      for (auto& [dx, dy] : tries) {
-        Layout::Box b{ax + dx, ay + dy - bh + 3, ax + dx + bw, ay + dy + 3};
-        bool clash = b.x0 < 0 || b.x1 > L.width || b.y0 < 0 || b.y1 > L.height;
-        for (auto& t : taken) clash = clash || (b.x0 < t.x1 && t.x0 < b.x1 && b.y0 < t.y1 && t.y0 < b.y1);
-        if (clash) continue;
-        if (!any) best = b, any = true;
-        bool crossed = false;
-        for (auto& st : strokes) crossed = crossed || crosses(st, b);
-        if (!crossed) {
-          best = b;
-          found = true;
-          break;
+      for (int ring = 0; ring < 6 && !found && !(any && ring > 0); ++ring) {
+        // ring k: the places of ring 0 pushed out by k label heights (x by k times 12 px)
+        const double push = 15.0 * ring;
+        for (auto& [dx0, dy0] : tries) {
+          const double dx = dx0 + (dx0 < -bw / 2 - 1 ? -0.8 * push : dx0 > -bw / 2 + 1 ? 0.8 * push : 0);
+          const double dy = dy0 + (dy0 <= 6 ? -push : push);
+          Layout::Box b{ax + dx, ay + dy - bh + 3, ax + dx + bw, ay + dy + 3};
+          bool clash = b.x0 < 0 || b.x1 > L.width || b.y0 < 0 || b.y1 > L.height;
+          for (auto& t : taken) clash = clash || (b.x0 < t.x1 && t.x0 < b.x1 && b.y0 < t.y1 && t.y0 < b.y1);
+          if (clash) continue;
+          if (!any) best = b, any = true;
+          bool crossed = false;
+          for (auto& st : strokes) crossed = crossed || crosses(st, b);
+          if (!crossed) {
+            best = b;
+            found = true;
+            break;
+          }
         }
       }
-      (void)found;
       taken.push_back(best);
       L.labels.push_back({best, &l});
     }
@@ -367,10 +386,26 @@ extern const char* const kLabelFont = "font-family=\"DejaVu Sans, sans-serif\" f
 
 }  // namespace detail
 
-std::string Sheet::svg(int width, int max_height) const {
+detail::Layout Sheet::layout(int width, int max_height) const {
   std::vector<std::pair<const Figure*, std::size_t>> ps;
-  for (auto& p : panels_) ps.push_back({&p.figure, p.title.size()});
-  const Layout L = lay_out(ps, width, max_height);
+  std::vector<std::size_t> after;
+  for (auto& p : panels_) {
+    ps.push_back({&p.figure, p.title.size()});
+    after.push_back(p.after.size());
+  }
+  return lay_out(ps, width, max_height, nullptr, after);
+}
+
+std::vector<Sheet::TextBox> Sheet::text_boxes(int width, int max_height) const {
+  const Layout L = layout(width, max_height);
+  std::vector<TextBox> out;
+  for (auto& pl : L.labels) out.push_back({pl.box.x0, pl.box.y0, pl.box.x1, pl.box.y1, pl.label->text, true});
+  for (auto& r : L.reserved) out.push_back({r.x0, r.y0, r.x1, r.y1, "", false});
+  return out;
+}
+
+std::string Sheet::svg(int width, int max_height) const {
+  const Layout L = layout(width, max_height);
   std::ostringstream o;
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << L.width << "\" height=\"" << L.height << "\" viewBox=\"0 0 " << L.width
     << " " << L.height << "\">\n";
@@ -393,9 +428,7 @@ std::string Sheet::svg(int width, int max_height) const {
 }
 
 std::string Sheet::tikz(double width_cm, int width, int max_height) const {
-  std::vector<std::pair<const Figure*, std::size_t>> ps;
-  for (auto& p : panels_) ps.push_back({&p.figure, p.title.size()});
-  const Layout L = lay_out(ps, width, max_height);
+  const Layout L = layout(width, max_height);
   // page pixels → centimetres, y up: (k X, k (H − Y)); numbers to 1/1000 cm, the same text everywhere
   const double k = width_cm / L.page;
   auto c = [](double v) {

@@ -47,6 +47,8 @@ struct Layout {
   std::vector<Placed> labels;
   double mid = 0, title_y = 0;
   std::vector<double> between_x;  // where the words after panel i go
+  /// The boxes no label may take: each panel's title, and the words between panels ("+", "=").
+  std::vector<Box> reserved;
 };
 
 constexpr double kPad = 48, kGap = 120, kTitle = 26;
@@ -54,9 +56,14 @@ constexpr double kFont = 13, kCharWidth = 7.2;  // label font size and the width
 
 /// Lay out figures side by side (each with its title's length, 0: none) at one scale, at most
 /// `width` × `max_height` pixels; with `fixed`, every panel spans those world bounds (the frames
-/// of an animation share the box round the whole motion).
+/// of an animation share the box round the whole motion). `after[i]`: the length of the words
+/// after panel i (0: none), whose place no label takes.
 Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height,
-               const Figure::Bounds* fixed = nullptr);
+               const Figure::Bounds* fixed = nullptr, const std::vector<std::size_t>& after = {});
+
+/// The words between panels: font size and the page box of `length` characters at (x, mid).
+constexpr double kSignFont = 28;
+Layout::Box sign_box(double x, double mid, std::size_t length);
 
 /// An arrowhead at page point b, pointing from page point a (page pixels).
 std::vector<std::pair<double, double>> head_at(double xa, double ya, double xb, double yb);

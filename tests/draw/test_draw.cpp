@@ -331,3 +331,45 @@ TEST_CASE("every derivation drawn as SVG, PDF, PNG and TikZ, each state side by 
   }
   CHECK(drawn >= 60);
 }
+
+TEST_CASE("every figure of every derivation: no label over another, over a title or the + and = between panels, or off the page",
+          "[draw][derive][labels]") {
+  // laid out as the HTML page (svg()) and the LaTeX (tikz(): the widths derive_latex asks for) lay them out
+  int figures = 0, labels = 0;
+  std::vector<std::string> faults;
+  for (const auto& file : kt::scene_files("derivations")) {
+    const auto d = kinergy::emit::derive(kinergy::solve_file(file));
+    int k = 0;
+    for (const auto& b : d.blocks) {
+      if (!b.sheet) continue;
+      ++k;
+      ++figures;
+      const bool several = b.sheet->size() > 1;
+      for (auto [width, height] : {std::pair<int, int>{0, 1600}, {0, several ? 560 : 520}}) {
+        const auto boxes = b.sheet->text_boxes(width, height);
+        double page_w = 0, page_h = 0;
+        for (auto& x : boxes) page_w = std::max(page_w, x.x1), page_h = std::max(page_h, x.y1);
+        const std::string svg = b.sheet->svg(width, height);
+        std::smatch sz;
+        REQUIRE(std::regex_search(svg, sz, std::regex("width=\"([0-9]+)\" height=\"([0-9]+)\"")));
+        const double W = std::stod(sz[1]), H = std::stod(sz[2]);
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+          const auto& p = boxes[i];
+          if (!p.label) continue;
+          ++labels;
+          if (p.x0 < 0 || p.y0 < 0 || p.x1 > W || p.y1 > H) faults.push_back(file + " figure " + std::to_string(k) + ": '" + p.text + "' off the page");
+          for (std::size_t j = 0; j < boxes.size(); ++j) {
+            const auto& q = boxes[j];
+            if (j == i || (q.label && j < i)) continue;
+            if (p.x0 < q.x1 && q.x0 < p.x1 && p.y0 < q.y1 && q.y0 < p.y1)
+              faults.push_back(file + " figure " + std::to_string(k) + ": '" + p.text + "' over " + (q.label ? "'" + q.text + "'" : "a title or a sign"));
+          }
+        }
+      }
+    }
+  }
+  INFO(figures << " figures, " << labels << " labels");
+  for (auto& f : faults) UNSCOPED_INFO(f);
+  CHECK(faults.empty());
+  CHECK(figures >= 150);
+}

@@ -13,6 +13,10 @@ class Model;
 
 namespace kinergy::draw {
 
+namespace detail {
+struct Layout;
+}
+
 /// Numbers of expressions at one state: coordinates, rates, time and parameters substituted.
 struct At {
   GiNaC::exmap values;
@@ -102,7 +106,17 @@ public:
   std::size_t size() const { return panels_.size(); }
   const Figure& panel(std::size_t i) const { return panels_.at(i).figure; }
 
+  /// A box of words on the page as svg(width, max_height) lays it out (pixels, y down): a label
+  /// (its text), or a place no label may take (a panel's title, the words between panels).
+  struct TextBox {
+    double x0, y0, x1, y1;
+    std::string text;
+    bool label;
+  };
+  std::vector<TextBox> text_boxes(int width = 0, int max_height = 1600) const;
+
 private:
+  detail::Layout layout(int width, int max_height) const;
   struct Panel {
     Figure figure;
     std::string title, title_tex, after, after_tex;
