@@ -173,8 +173,8 @@ bool crosses(const std::array<double, 4>& seg, const Layout::Box& b) {
 
 Layout::Box sign_box(double x, double mid, std::size_t length) {
   // (drawn centred at x on the baseline mid + 9: a "+" or "=" of 28 px is about 17 px wide, and
-  // stands from 19 px above the baseline to 1 below)
-  const double half = 0.35 * kSignFont * static_cast<double>(std::max<std::size_t>(length, 1)) / 2 + 2;
+  // stands from 19 px above the baseline to 1 below; a few pixels of room kept round it)
+  const double half = 0.6 * kSignFont * static_cast<double>(std::max<std::size_t>(length, 1)) / 2 + 4;
   return {x - half, mid + 9 - 22, x + half, mid + 9 + 3};
 }
 
@@ -378,8 +378,29 @@ void svg_world(std::ostringstream& o, const Figure& f, const Layout::Place& P, d
   o << "</g>\n";
 }
 
+/// A label's text for SVG, a subscript as a textbook sets it: "m_cart v̄_cart" with "cart" lowered
+/// and smaller after each '_' (up to the next space or '_'), as the TeX labels have them.
+std::string svg_label_text(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (text[i] == '_' && i + 1 < text.size() && text[i + 1] != ' ') {
+      std::size_t j = i + 1;
+      while (j < text.size() && text[j] != ' ' && text[j] != '_') ++j;
+      out += "<tspan baseline-shift=\"sub\" font-size=\"10\">" + escape(text.substr(i + 1, j - i - 1)) + "</tspan>";
+      i = j;
+      continue;
+    }
+    std::size_t j = text.find('_', i + 1);
+    if (j == std::string::npos) j = text.size();
+    out += escape(text.substr(i, j - i));
+    i = j;
+  }
+  return out;
+}
+
 void svg_labels(std::ostringstream& o, const Layout& L) {
-  for (auto& pl : L.labels) o << "<text x=\"" << n(pl.box.x0 + 1) << "\" y=\"" << n(pl.box.y1 - 3) << "\">" << escape(pl.label->text) << "</text>\n";
+  for (auto& pl : L.labels)
+    o << "<text x=\"" << n(pl.box.x0 + 1) << "\" y=\"" << n(pl.box.y1 - 3) << "\">" << svg_label_text(pl.label->text) << "</text>\n";
 }
 
 extern const char* const kLabelFont = "font-family=\"DejaVu Sans, sans-serif\" font-size=\"13\" fill=\"#222222\"";

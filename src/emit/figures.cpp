@@ -53,11 +53,14 @@ struct Diagram {
     return p(v);
   }
 
-  // an arrow of the diagram's length from (x, y) along (dx, dy), labelled; false when it has no direction
-  bool arrow(draw::Figure& f, double x, double y, double dx, double dy, draw::Ink ink, const std::string& text, const std::string& tex) const {
+  // an arrow from (x, y) along (dx, dy), labelled, `length` long (the diagram's length when 0);
+  // false when it has no direction
+  bool arrow(draw::Figure& f, double x, double y, double dx, double dy, draw::Ink ink, const std::string& text, const std::string& tex,
+             double length = 0) const {
     const double d = std::hypot(dx, dy);
     if (!(d > 0) || !std::isfinite(d) || !std::isfinite(x) || !std::isfinite(y)) return false;
-    const double ex_ = x + len * dx / d, ey = y + len * dy / d;
+    if (!(length > 0)) length = len;
+    const double ex_ = x + length * dx / d, ey = y + length * dy / d;
     f.arrow(x, y, ex_, ey, ink);
     f.label(ex_, ey, text, tex);
     return true;
@@ -81,16 +84,42 @@ struct Diagram {
     }
   }
 
-  // momenta at a state: m v̄ at each mass centre, Ī ω round it
+  // |m v̄| of body b at a state (NaN where it has no value)
+  double momentum(const draw::At& at, int b) const {
+    const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+    return std::fabs(at(B.mass)) * std::hypot(at(m.rate(B.x)), at(m.rate(B.y)));
+  }
+
+  // the largest |m v̄| of the set at either state: the momentum arrows' lengths go by it
+  double largest_momentum() const {
+    double p = 0;
+    for (const draw::At* at : {&at1, &at2})
+      for (int b : bodies)
+        if (const double v = momentum(*at, b); std::isfinite(v)) p = std::max(p, v);
+    return p;
+  }
+
+  // momenta at a state: m v̄ at each mass centre, Ī ω round it. An arrow's length goes with the
+  // momentum's size: the largest in the diagram 1.4 times the impulses' length, a smaller one in
+  // proportion, down to a quarter of that (so that it still shows its direction); with several
+  // bodies each label carries its body's name (m_A v̄_A)
   draw::Figure momenta(const draw::At& at) const {
     draw::Figure f;
     f.set_glyph(g);
+    const double p_max = largest_momentum(), longest = 1.4 * len;
     for (int b : bodies) {
       draw::body(m, at, b, f, false);
       const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
       const double x = at(B.x), y = at(B.y);
-      arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, "m v\u0304", "m\\bar{v}");
-      if (at(B.inertia) > 0) turning(f, x, y, at(m.omega(b)), draw::Ink::Momentum, "I\u0304 \u03c9", "\\bar{I}\\omega");
+      const double p = momentum(at, b);
+      const double length = p_max > 0 && std::isfinite(p) ? longest * std::max(0.25, p / p_max) : len;
+      const bool named = bodies.size() > 1;
+      const std::string sub = B.name, sub_tex = "_{\\mathrm{" + tex_text(B.name) + "}}";
+      arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, named ? "m_" + sub + " v\u0304_" + sub : "m v\u0304",
+            named ? "m" + sub_tex + "\\bar{v}" + sub_tex : "m\\bar{v}", length);
+      if (at(B.inertia) > 0)
+        turning(f, x, y, at(m.omega(b)), draw::Ink::Momentum, named ? "I\u0304_" + sub + " \u03c9_" + sub : "I\u0304 \u03c9",
+                named ? "\\bar{I}" + sub_tex + "\\omega" + sub_tex : "\\bar{I}\\omega");
     }
     about_point(f, at);
     return f;

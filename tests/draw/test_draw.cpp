@@ -275,7 +275,7 @@ TEST_CASE("kinergy draw --figure N: a figure of the worked solution, as the LaTe
   CHECK(st == 0);
   CHECK(out.find("data-panel=\"2\"") != std::string::npos);
   CHECK(out.find(">momenta at before</text>") != std::string::npos);
-  CHECK(out.find(">J_hit</text>") != std::string::npos);
+  CHECK(out.find(">J<tspan baseline-shift=\"sub\" font-size=\"10\">hit</tspan></text>") != std::string::npos);
   out = kt::run_cli("draw " + scene + " --figure 4", st);
   CHECK(st != 0);
   CHECK(out.find("has 3 figures, not 4 \u2014 give --figure from 1 to 3") != std::string::npos);
