@@ -378,23 +378,35 @@ void svg_world(std::ostringstream& o, const Figure& f, const Layout::Place& P, d
   o << "</g>\n";
 }
 
-/// A label's text for SVG, a subscript as a textbook sets it: "m_cart v̄_cart" with "cart" lowered
-/// and smaller after each '_' (up to the next space or '_'), as the TeX labels have them.
-std::string svg_label_text(const std::string& text) {
-  std::string out;
+/// A label's text in parts, each plain or a subscript: what follows a '_' (up to the next space
+/// or '_') is a subscript, as a textbook sets "m_cart v̄_cart" or "W_A".
+std::vector<std::pair<std::string, bool>> label_parts(const std::string& text) {
+  std::vector<std::pair<std::string, bool>> out;
   for (std::size_t i = 0; i < text.size();) {
-    if (text[i] == '_' && i + 1 < text.size() && text[i + 1] != ' ') {
-      std::size_t j = i + 1;
+    const bool sub = text[i] == '_' && i + 1 < text.size() && text[i + 1] != ' ';
+    std::size_t j = i + 1;
+    if (sub)
       while (j < text.size() && text[j] != ' ' && text[j] != '_') ++j;
-      out += "<tspan baseline-shift=\"sub\" font-size=\"10\">" + escape(text.substr(i + 1, j - i - 1)) + "</tspan>";
-      i = j;
-      continue;
-    }
-    std::size_t j = text.find('_', i + 1);
-    if (j == std::string::npos) j = text.size();
-    out += escape(text.substr(i, j - i));
+    else
+      j = std::min(text.find('_', i + 1), text.size());
+    out.push_back({sub ? text.substr(i + 1, j - i - 1) : text.substr(i, j - i), sub});
     i = j;
   }
+  return out;
+}
+
+/// The label's text for SVG: a subscript lowered and smaller.
+std::string svg_label_text(const std::string& text) {
+  std::string out;
+  for (auto& [part, sub] : label_parts(text))
+    out += sub ? "<tspan baseline-shift=\"sub\" font-size=\"10\">" + escape(part) + "</tspan>" : escape(part);
+  return out;
+}
+
+/// The same for TeX's text mode: "W_cart" as W$_{\mathrm{cart}}$.
+std::string tex_label_text(const std::string& text) {
+  std::string out;
+  for (auto& [part, sub] : label_parts(text)) out += sub ? "$_{\\mathrm{" + tex_escape(part) + "}}$" : tex_escape(part);
   return out;
 }
 
@@ -526,7 +538,7 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
     }
   }
   for (auto& pl : L.labels) {
-    const std::string body = pl.label->tex.empty() ? tex_escape(pl.label->text) : "$" + pl.label->tex + "$";
+    const std::string body = pl.label->tex.empty() ? tex_label_text(pl.label->text) : "$" + pl.label->tex + "$";
     o << "\\node[anchor=base west,inner sep=0pt,font=" << font << "] at " << pt(pl.box.x0 + 1, pl.box.y1 - 3) << " {" << body << "};\n";
   }
   for (std::size_t pi = 0; pi < panels_.size(); ++pi) {

@@ -41,6 +41,7 @@ public:
     l.partner = b;
     l.size = mu * normal;
     l.direction = direction;
+    l.symbol = "F";  // a friction force
     return {l};
   }
 

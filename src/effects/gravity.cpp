@@ -15,7 +15,8 @@ public:
     for (auto& b : m.bodies) {
       const double x = at(b.x), y = at(b.y);
       f.arrow(x, y, x + dx * L, y + dy * L, Ink::Force);
-      f.label(x + dx * L, y + dy * L, "m g");
+      // W, with the body's name as a subscript where the scene has several (W_A)
+      f.label(x + dx * L, y + dy * L, m.bodies.size() > 1 ? "W_" + b.name : "W");
     }
   }
 
@@ -25,6 +26,7 @@ public:
     for (std::size_t b = 0; b < m.bodies.size(); ++b) {
       const ex W = m.bodies[b].mass * g;
       out.push_back(force_at(centre_of(m, static_cast<int>(b)), W * dir_x, W * dir_y));
+      out.back().symbol = "W";  // a weight
     }
     return out;
   }

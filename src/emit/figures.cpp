@@ -133,9 +133,16 @@ struct Diagram {
     for (auto& [effect, p] : shown) {
       if (!in_set(p.body)) continue;
       const double x = at1(p.arm_x), y = at1(p.arm_y);
-      // an implied support ("N_disk", the principles' name) as a textbook writes it: N with the body's subscript
+      // an implied support ("N_disk", the principles' name) as a textbook writes it: N with the body's
+      // subscript; a load with a symbol (W, F) by it, the body's name its subscript where the
+      // diagram has several bodies
       const bool support = effect.rfind("N_", 0) == 0;
-      const std::string word = support ? "N_{\\mathrm{" + tex_text(effect.substr(2)) + "}}" : "\\mathrm{" + tex_text(effect) + "}";
+      const bool named = bodies.size() > 1 && p.body >= 0;
+      const std::string body_name = p.body >= 0 ? m.bodies[static_cast<std::size_t>(p.body)].name : "";
+      const std::string word = support ? "N_{\\mathrm{" + tex_text(effect.substr(2)) + "}}"
+                               : !p.symbol.empty() ? p.symbol + (named ? "_{\\mathrm{" + tex_text(body_name) + "}}" : "")
+                                                   : "\\mathrm{" + tex_text(effect) + "}";
+      const std::string said = !p.symbol.empty() ? p.symbol + (named ? "_" + body_name : "") : effect;
       if (p.unknown) {
         // an unknown impulse made of unknowns (R = Σ u ∂R/∂u): one arrow along each ∂R/∂u, named by u
         std::vector<symbol> us;
@@ -167,14 +174,14 @@ struct Diagram {
           const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
           double Mv = at1(p.M);
           if (!(std::fabs(Mv) > 0)) Mv = at2(p.M);
-          turning(f, at1(B.x), at1(B.y), Mv, draw::Ink::Force, (p.M.has(m.t) ? "\u222b" + effect + " dt" : effect + " \u0394t"),
+          turning(f, at1(B.x), at1(B.y), Mv, draw::Ink::Force, (p.M.has(m.t) ? "\u222b" + said + " dt" : said + " \u0394t"),
                   p.M.has(m.t) ? "\\int " + word + "\\,dt" : word + "\\,\\Delta t");
         }
       }
       if (p.Fx.is_zero() && p.Fy.is_zero()) continue;
       // a force: along its direction at the first state (at the second when it is zero there)
       const bool varies = p.Fx.has(m.t) || p.Fy.has(m.t);
-      const std::string text = varies ? "\u222b" + effect + " dt" : effect + " \u0394t";
+      const std::string text = varies ? "\u222b" + said + " dt" : said + " \u0394t";
       const std::string tex = varies ? "\\int " + word + "\\,dt" : word + "\\,\\Delta t";
       if (!arrow(f, x, y, at1(p.Fx), at1(p.Fy), draw::Ink::Force, text, tex))
         arrow(f, at2(p.arm_x), at2(p.arm_y), at2(p.Fx), at2(p.Fy), draw::Ink::Force, text, tex);
@@ -192,8 +199,10 @@ struct Diagram {
     for (auto& l : loads) {
       if (l.body != b) continue;
       const double x = solved(l.x), y = solved(l.y);
-      const std::string word = "\\mathrm{" + tex_text(l.effect) + "}";
-      if (!l.M.is_zero()) turning(f, at1(B.x), at1(B.y), solved(l.M), draw::Ink::Force, l.effect, word);
+      // (a load with a symbol by it: W, F)
+      const std::string word = l.symbol.empty() ? "\\mathrm{" + tex_text(l.effect) + "}" : l.symbol;
+      const std::string said = l.symbol.empty() ? l.effect : l.symbol;
+      if (!l.M.is_zero()) turning(f, at1(B.x), at1(B.y), solved(l.M), draw::Ink::Force, said, word);
       if (l.Fx.is_zero() && l.Fy.is_zero()) continue;
       if (l.unknown) {
         // a reaction: one arrow along each of its unknowns' directions (F = Σ u ∂F/∂u), named by u
@@ -205,7 +214,7 @@ struct Diagram {
           }
         continue;
       }
-      arrow(f, x, y, solved(l.Fx), solved(l.Fy), draw::Ink::Force, l.effect, word);
+      arrow(f, x, y, solved(l.Fx), solved(l.Fy), draw::Ink::Force, said, word);
     }
     return f;
   }

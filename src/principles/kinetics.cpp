@@ -74,18 +74,19 @@ std::vector<ex> generic_unknowns(const Model& m, const Instant& in) {
 /// −F, −M: Newton's third law) and the supports' reactions.
 std::vector<BodyLoad> body_loads(const Model& m, const Instant& in) {
   std::vector<BodyLoad> out;
-  auto put = [&](const std::string& name, const model::PointRef& p, const ex& Fx, const ex& Fy, const ex& M, bool unknown) {
+  auto put = [&](const std::string& name, const model::PointRef& p, const ex& Fx, const ex& Fy, const ex& M, bool unknown,
+                 const std::string& symbol = "") {
     if (!is_body(p)) return;
     auto [x, y] = m.position(p);
-    out.push_back({name, p.body, x, y, Fx, Fy, M, unknown});
+    out.push_back({name, p.body, x, y, Fx, Fy, M, unknown, symbol});
   };
   for (std::size_t i = 0; i < m.effects.size(); ++i) {
     const model::Effect& e = m.effects[i];
     if (!in.effect[i]) continue;
     for (const model::Load& l : e.loads(m)) {
       const model::Wrench f = model::force_of(m, l);
-      put(e.name, l.at, f.Fx, f.Fy, f.M, false);
-      if (l.partner) put(e.name, *l.partner, -f.Fx, -f.Fy, -f.M, false);
+      put(e.name, l.at, f.Fx, f.Fy, f.M, false, l.symbol);
+      if (l.partner) put(e.name, *l.partner, -f.Fx, -f.Fy, -f.M, false, l.symbol);
     }
     auto r = e.reaction(m);
     auto it = m.instant_reactions.find(e.name);
@@ -336,7 +337,7 @@ KineticsBalance kinetics(const Model& m, const model::Analysis& a, const Knowled
   for (auto& r : out.rows) r.equation = {m.bind(r.equation.lhs, S), m.bind(r.equation.rhs, S), r.equation.principle, r.equation.label, r.equation.pos};
   for (auto& l : loads)
     if (std::find(a.bodies.begin(), a.bodies.end(), l.body) != a.bodies.end())
-      out.loads.push_back({l.effect, l.body, m.bind(l.x, S), m.bind(l.y, S), m.bind(l.Fx, S), m.bind(l.Fy, S), m.bind(l.M, S), l.unknown});
+      out.loads.push_back({l.effect, l.body, m.bind(l.x, S), m.bind(l.y, S), m.bind(l.Fx, S), m.bind(l.Fy, S), m.bind(l.M, S), l.unknown, l.symbol});
 
   // a sample point: the parameters' values, the values given at S, and for every other symbol of
   // the state a fixed sample (the rows are linear in the unknowns: which of them are independent,

@@ -85,6 +85,7 @@ void load_pushes(const Model& m, const Effect& e, const Analysis& a, const Knowl
     if (side == 0) continue;  // not on the set, or internal to it
     Push p;
     p.body = side > 0 ? l.at.body : l.partner->body;
+    p.symbol = l.symbol;
     switch (l.kind) {
       case Load::Kind::Given:
         // an interaction's force that changes with the motion: no impulse of its own (a load from

@@ -65,6 +65,9 @@ struct Load {
   std::optional<PointRef> partner;
   std::optional<int> direction;  ///< Slide/Turn: the declared sign of the motion it opposes
   std::string singular;          ///< why its value may be undefined (a drive's P/ω at ω = 0), or ""
+  /// How a diagram writes it, as a textbook does ("W" a weight, "F" a friction), the body's name
+  /// added as a subscript where a diagram has several bodies; "": by its effect's name
+  std::string symbol;
 };
 
 /// The reaction of a support, or the impulse of a contact: what it can push with (unknown until an

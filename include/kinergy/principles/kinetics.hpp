@@ -19,6 +19,7 @@ struct BodyLoad {
   ex Fx = 0, Fy = 0;   ///< its force (at the state)
   ex M = 0;            ///< its couple
   bool unknown = false;  ///< a support's reaction (holds unknowns)
+  std::string symbol;    ///< how a diagram writes it (its load's symbol: "W", "F"; "": the effect's name)
 };
 
 /// A body's accelerations at the state: its kinetic diagram is m ā and Ī α.

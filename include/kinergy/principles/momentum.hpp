@@ -18,6 +18,7 @@ struct Push {
   bool implied = false;     ///< the support is one the coordinates imply (a pin), not a relation between them
   ex Rx = 0, Ry = 0;
   std::string what;         ///< how a derivation names it, when not by the defaults
+  std::string symbol;       ///< how a diagram writes it (its load's symbol: "W", "F"; "": the effect's name)
   int body = -1;            ///< the body it acts on (−1: the set, where it is not one body's)
   std::vector<Condition> holds;  ///< what it took for granted (a declared direction of sliding): checked on the solution
 };
