@@ -171,80 +171,27 @@ bool crosses(const std::array<double, 4>& seg, const Layout::Box& b) {
   return true;
 }
 
-Layout::Box sign_box(double x, double mid, std::size_t length) {
+int page_width(int width, std::size_t n) { return width > 0 ? width : n <= 1 ? 640 : static_cast<int>(std::min<std::size_t>(1200, 400 * n)); }
+
+Layout::Box sign_box(double x, double mid, std::size_t length, double text) {
   // (drawn centred at x on the baseline mid + 9: a "+" or "=" of 28 px is about 17 px wide, and
   // stands from 19 px above the baseline to 1 below; a few pixels of room kept round it)
-  const double half = 0.6 * kSignFont * static_cast<double>(std::max<std::size_t>(length, 1)) / 2 + 4;
-  return {x - half, mid + 9 - 22, x + half, mid + 9 + 3};
+  const double half = text * (0.6 * kSignFont * static_cast<double>(std::max<std::size_t>(length, 1)) / 2 + 4);
+  return {x - half, mid - text * 13, x + half, mid + text * 12};
 }
 
-Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height, const Figure::Bounds* fixed,
-               const std::vector<std::size_t>& after) {
-  Layout L;
+/// The labels of the panels placed on the page (L.labels), off the titles (widths tw) and the
+/// words between panels (lengths after), and off each other.
+void place_labels(Layout& L, const std::vector<std::pair<const Figure*, std::size_t>>& panels, const std::vector<double>& tw,
+                  const std::vector<std::size_t>& after) {
   const std::size_t n = panels.size();
-  if (width <= 0) width = n <= 1 ? 640 : static_cast<int>(std::min<std::size_t>(1200, 400 * n));
-  L.page = width;
-  bool titles = false;
-  for (auto& p : panels) titles = titles || p.second > 0;
-  std::vector<Figure::Bounds> bs;
-  double sum_w = 0, max_h = 0;
-  for (auto& p : panels) {
-    Figure::Bounds b = fixed ? *fixed : p.first->bounds(true);
-    if (b.empty()) b = {-1, -1, 1, 1};
-    double w = std::max(b.x1 - b.x0, 1e-9), h = std::max(b.y1 - b.y0, 1e-9);
-    // a degenerate extent (all on one line): give it the other's size
-    if (w < h * 0.05) w = h * 0.5;
-    if (h < w * 0.05) h = w * 0.5;
-    const double cx = (b.x0 + b.x1) / 2, cy = (b.y0 + b.y1) / 2;
-    bs.push_back({cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2});
-    sum_w += w;
-  }
-  // one vertical place for every panel: the same height in the world at the same height on the page
-  double gy0 = bs.empty() ? 0 : bs[0].y0, gy1 = bs.empty() ? 0 : bs[0].y1;
-  for (auto& b : bs) gy0 = std::min(gy0, b.y0), gy1 = std::max(gy1, b.y1);
-  max_h = gy1 - gy0;
-  const double gaps = kGap * static_cast<double>(n > 0 ? n - 1 : 0);
-  const double title_h = titles ? kTitle : 0;
-  // each panel as wide as its drawing, or its title when that is wider: the scale s solves
-  // Σ max(w_i s, t_i) = the width available (a few rounds of fixing the panels their titles hold)
-  std::vector<double> tw;
-  for (auto& p : panels) tw.push_back(p.second > 0 ? kCharWidth * static_cast<double>(p.second) + 12 : 0);
-  const double avail = width - 2 * kPad - gaps;
-  L.scale = avail / sum_w;
-  for (int round = 0; round < 4; ++round) {
-    double fixed = 0, free_w = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double w = bs[i].x1 - bs[i].x0;
-      if (tw[i] > w * L.scale) fixed += tw[i];
-      else free_w += w;
-    }
-    if (free_w > 0 && avail - fixed > 0) L.scale = (avail - fixed) / free_w;
-  }
-  L.scale = std::min(L.scale, (max_height - 2 * kPad - title_h) / max_h);
-  std::vector<double> slot;
-  double slots = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    slot.push_back(std::max((bs[i].x1 - bs[i].x0) * L.scale, tw[i]));
-    slots += slot.back();
-  }
-  L.width = static_cast<int>(std::ceil(slots + 2 * kPad + gaps - 1e-6));
-  L.height = static_cast<int>(std::ceil(max_h * L.scale + 2 * kPad + title_h - 1e-6));
-  L.mid = kPad + max_h * L.scale / 2;
-  L.title_y = kPad + max_h * L.scale + kPad / 2 + 8;
-  const double cy = (gy0 + gy1) / 2;
-  double left = kPad;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto& b = bs[i];
-    const double w = slot[i], cx = (b.x0 + b.x1) / 2;
-    // X = left + w/2 + s (x − cx), Y = mid − s (y − cy)
-    L.places.push_back({left + w / 2 - L.scale * cx, L.mid + L.scale * cy, left + w / 2});
-    L.between_x.push_back(left + w + kGap / 2);
-    left += w + kGap;
-  }
+  const double text = L.text;
   // the titles and the words between panels first: no label goes over them
   for (std::size_t i = 0; i < n; ++i) {
-    if (tw[i] > 0) L.reserved.push_back({L.places[i].centre - (tw[i] - 12) / 2 - 2, L.title_y - 13, L.places[i].centre + (tw[i] - 12) / 2 + 2, L.title_y + 4});
-    if (i < after.size() && after[i] > 0 && i + 1 < n) L.reserved.push_back(sign_box(L.between_x[i], L.mid, after[i]));
+    if (tw[i] > 0)
+      L.reserved.push_back({L.places[i].centre - (tw[i] - 12 * text) / 2 - 2, L.title_y - 13 * text, L.places[i].centre + (tw[i] - 12 * text) / 2 + 2,
+                            L.title_y + 4 * text});
+    if (i < after.size() && after[i] > 0 && i + 1 < n) L.reserved.push_back(sign_box(L.between_x[i], L.mid, after[i], text));
   }
   // labels on the page, kept off each other, off those, and on the page, and off the strokes of
   // bodies and arrows where a place round the anchor allows: the first place free of all, else
@@ -266,19 +213,21 @@ Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels,
                            P.ty - L.scale * sh.pts[0].second});
     }
     for (auto& l : panels[i].first->labels()) {
-      const double bw = kCharWidth * static_cast<double>(l.text.size()) + 2, bh = 15;
+      // (every size in units u of the words' size: 1 for SVG's 13 px)
+      const double u = text, bw = kCharWidth * u * static_cast<double>(l.text.size()) + 2, bh = 15 * u;
       const double ax = P.tx + L.scale * l.x, ay = P.ty - L.scale * l.y;
-      const std::pair<double, double> tries[] = {{8, -6},   {8, 16},    {-8 - bw, -6}, {-8 - bw, 16}, {-bw / 2, -12},    {-bw / 2, 24},
-                                                 {14, -20}, {-14 - bw, 30}, {14, 30}, {-14 - bw, -20}, {20, 6}, {-20 - bw, 6}};
-      Layout::Box best{ax + 8, ay - 6 - bh, ax + 8 + bw, ay - 6};
+      const std::pair<double, double> tries[] = {{8 * u, -6 * u},       {8 * u, 16 * u},       {-8 * u - bw, -6 * u},  {-8 * u - bw, 16 * u},
+                                                 {-bw / 2, -12 * u},    {-bw / 2, 24 * u},     {14 * u, -20 * u},      {-14 * u - bw, 30 * u},
+                                                 {14 * u, 30 * u},      {-14 * u - bw, -20 * u}, {20 * u, 6 * u},      {-20 * u - bw, 6 * u}};
+      Layout::Box best{ax + 8 * u, ay - 6 * u - bh, ax + 8 * u + bw, ay - 6 * u};
       bool found = false, any = false;
       for (int ring = 0; ring < 6 && !found && !(any && ring > 0); ++ring) {
         // ring k: the places of ring 0 pushed out by k label heights (x by k times 12 px)
-        const double push = 15.0 * ring;
+        const double push = 15.0 * u * ring;
         for (auto& [dx0, dy0] : tries) {
           const double dx = dx0 + (dx0 < -bw / 2 - 1 ? -0.8 * push : dx0 > -bw / 2 + 1 ? 0.8 * push : 0);
-          const double dy = dy0 + (dy0 <= 6 ? -push : push);
-          Layout::Box b{ax + dx, ay + dy - bh + 3, ax + dx + bw, ay + dy + 3};
+          const double dy = dy0 + (dy0 <= 6 * u ? -push : push);
+          Layout::Box b{ax + dx, ay + dy - bh + 3 * u, ax + dx + bw, ay + dy + 3 * u};
           bool clash = b.x0 < 0 || b.x1 > L.width || b.y0 < 0 || b.y1 > L.height;
           for (auto& t : taken) clash = clash || (b.x0 < t.x1 && t.x0 < b.x1 && b.y0 < t.y1 && t.y0 < b.y1);
           if (clash) continue;
@@ -292,10 +241,86 @@ Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels,
           }
         }
       }
+      if (!any) {
+        // no place free of the others on the page: at least on the page
+        const double w = best.x1 - best.x0, h = best.y1 - best.y0;
+        best.x0 = std::clamp(best.x0, 0.0, std::max(0.0, L.width - w));
+        best.y0 = std::clamp(best.y0, 0.0, std::max(0.0, L.height - h));
+        best.x1 = best.x0 + w;
+        best.y1 = best.y0 + h;
+      }
       taken.push_back(best);
       L.labels.push_back({best, &l});
     }
   }
+}
+
+Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height, const Figure::Bounds* fixed,
+               const std::vector<std::size_t>& after, double text) {
+  Layout L;
+  L.text = text;
+  const double pad = kPad * text;  // (a margin for the labels at the edge, as large as they are)
+  const std::size_t n = panels.size();
+  width = page_width(width, n);
+  L.page = width;
+  bool titles = false;
+  for (auto& p : panels) titles = titles || p.second > 0;
+  std::vector<Figure::Bounds> bs;
+  double sum_w = 0, max_h = 0;
+  for (auto& p : panels) {
+    Figure::Bounds b = fixed ? *fixed : p.first->bounds(true);
+    if (b.empty()) b = {-1, -1, 1, 1};
+    double w = std::max(b.x1 - b.x0, 1e-9), h = std::max(b.y1 - b.y0, 1e-9);
+    // a degenerate extent (all on one line): give it the other's size
+    if (w < h * 0.05) w = h * 0.5;
+    if (h < w * 0.05) h = w * 0.5;
+    const double cx = (b.x0 + b.x1) / 2, cy = (b.y0 + b.y1) / 2;
+    bs.push_back({cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2});
+    sum_w += w;
+  }
+  // one vertical place for every panel: the same height in the world at the same height on the page
+  double gy0 = bs.empty() ? 0 : bs[0].y0, gy1 = bs.empty() ? 0 : bs[0].y1;
+  for (auto& b : bs) gy0 = std::min(gy0, b.y0), gy1 = std::max(gy1, b.y1);
+  max_h = gy1 - gy0;
+  const double gaps = kGap * static_cast<double>(n > 0 ? n - 1 : 0);
+  const double title_h = titles ? kTitle * text : 0;
+  // each panel as wide as its drawing, or its title when that is wider: the scale s solves
+  // Σ max(w_i s, t_i) = the width available (a few rounds of fixing the panels their titles hold)
+  std::vector<double> tw;
+  for (auto& p : panels) tw.push_back(p.second > 0 ? text * (kCharWidth * static_cast<double>(p.second) + 12) : 0);
+  const double avail = width - 2 * pad - gaps;
+  L.scale = avail / sum_w;
+  for (int round = 0; round < 4; ++round) {
+    double fixed = 0, free_w = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double w = bs[i].x1 - bs[i].x0;
+      if (tw[i] > w * L.scale) fixed += tw[i];
+      else free_w += w;
+    }
+    if (free_w > 0 && avail - fixed > 0) L.scale = (avail - fixed) / free_w;
+  }
+  L.scale = std::min(L.scale, (max_height - 2 * pad - title_h) / max_h);
+  std::vector<double> slot;
+  double slots = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    slot.push_back(std::max((bs[i].x1 - bs[i].x0) * L.scale, tw[i]));
+    slots += slot.back();
+  }
+  L.width = static_cast<int>(std::ceil(slots + 2 * pad + gaps - 1e-6));
+  L.height = static_cast<int>(std::ceil(max_h * L.scale + 2 * pad + title_h - 1e-6));
+  L.mid = pad + max_h * L.scale / 2;
+  L.title_y = pad + max_h * L.scale + pad / 2 + 8 * text;
+  const double cy = (gy0 + gy1) / 2;
+  double left = pad;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& b = bs[i];
+    const double w = slot[i], cx = (b.x0 + b.x1) / 2;
+    // X = left + w/2 + s (x − cx), Y = mid − s (y − cy)
+    L.places.push_back({left + w / 2 - L.scale * cx, L.mid + L.scale * cy, left + w / 2});
+    L.between_x.push_back(left + w + kGap / 2);
+    left += w + kGap;
+  }
+  place_labels(L, panels, tw, after);
   return L;
 }
 
@@ -419,26 +444,34 @@ extern const char* const kLabelFont = "font-family=\"DejaVu Sans, sans-serif\" f
 
 }  // namespace detail
 
-detail::Layout Sheet::layout(int width, int max_height) const {
+detail::Layout Sheet::layout(int width, int max_height, double width_cm) const {
   std::vector<std::pair<const Figure*, std::size_t>> ps;
   std::vector<std::size_t> after;
   for (auto& p : panels_) {
     ps.push_back({&p.figure, p.title.size()});
     after.push_back(p.after.size());
   }
-  return lay_out(ps, width, max_height, nullptr, after);
+  return lay_out(ps, width, max_height, nullptr, after, width_cm > 0 ? tikz_text(width_cm, width).second : 1);
 }
 
-std::vector<Sheet::TextBox> Sheet::text_boxes(int width, int max_height) const {
-  const Layout L = layout(width, max_height);
-  std::vector<TextBox> out;
-  for (auto& pl : L.labels) out.push_back({pl.box.x0, pl.box.y0, pl.box.x1, pl.box.y1, pl.label->text, true});
-  for (auto& r : L.reserved) out.push_back({r.x0, r.y0, r.x1, r.y1, "", false});
+std::pair<double, double> Sheet::tikz_text(double width_cm, int width) const {
+  // SVG's 13 px labels at the picture's scale would be font_pt; a document sets them at 8 pt
+  // (9 pt where the picture is large enough), and the layout makes room for that size
+  const double k = width_cm / page_width(width, panels_.size()), font_pt = kFont * k * 28.4527;
+  const double set = font_pt < 9 ? 8 : 9;
+  return {set, set / font_pt};
+}
+
+Sheet::TextLayout Sheet::text_boxes(int width, int max_height, double width_cm) const {
+  const Layout L = layout(width, max_height, width_cm);
+  TextLayout out{static_cast<double>(L.width), static_cast<double>(L.height), {}};
+  for (auto& pl : L.labels) out.boxes.push_back({pl.box.x0, pl.box.y0, pl.box.x1, pl.box.y1, pl.label->text, true});
+  for (auto& r : L.reserved) out.boxes.push_back({r.x0, r.y0, r.x1, r.y1, "", false});
   return out;
 }
 
 std::string Sheet::svg(int width, int max_height) const {
-  const Layout L = layout(width, max_height);
+  const Layout L = layout(width, max_height, 0);
   std::ostringstream o;
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << L.width << "\" height=\"" << L.height << "\" viewBox=\"0 0 " << L.width
     << " " << L.height << "\">\n";
@@ -461,7 +494,7 @@ std::string Sheet::svg(int width, int max_height) const {
 }
 
 std::string Sheet::tikz(double width_cm, int width, int max_height) const {
-  const Layout L = layout(width, max_height);
+  const Layout L = layout(width, max_height, width_cm);
   // page pixels → centimetres, y up: (k X, k (H − Y)); numbers to 1/1000 cm, the same text everywhere
   const double k = width_cm / L.page;
   auto c = [](double v) {
@@ -479,8 +512,9 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
     if (p.dashed) s += ",dash pattern=on " + c(6 * k) + "cm off " + c(4 * k) + "cm";
     return s;
   };
-  const double font_pt = kFont * k * 28.4527;
-  const std::string font = font_pt < 7.5 ? "\\scriptsize" : font_pt < 9 ? "\\footnotesize" : "\\small";
+  // labels and titles at 8 pt (\footnotesize of a 10 pt document), or 9 pt (\small), whatever
+  // the picture's scale (the layout made room for them)
+  const std::string font = tikz_text(width_cm, width).first < 9 ? "\\footnotesize" : "\\small";
   std::ostringstream o;
   o << "\\begin{tikzpicture}\n"
     ;
@@ -539,7 +573,7 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
   }
   for (auto& pl : L.labels) {
     const std::string body = pl.label->tex.empty() ? tex_label_text(pl.label->text) : "$" + pl.label->tex + "$";
-    o << "\\node[anchor=base west,inner sep=0pt,font=" << font << "] at " << pt(pl.box.x0 + 1, pl.box.y1 - 3) << " {" << body << "};\n";
+    o << "\\node[anchor=base west,inner sep=0pt,font=" << font << "] at " << pt(pl.box.x0 + 1, pl.box.y1 - 3 * L.text) << " {" << body << "};\n";
   }
   for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
     const auto& p = panels_[pi];

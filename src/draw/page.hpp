@@ -49,6 +49,9 @@ struct Layout {
   std::vector<double> between_x;  // where the words after panel i go
   /// The boxes no label may take: each panel's title, and the words between panels ("+", "=").
   std::vector<Box> reserved;
+  /// The size of the words on the page against the drawing's: 1 for SVG (13 px labels); larger
+  /// where a document sets them at a size of its own (TikZ: 8 pt however small the drawing).
+  double text = 1;
 };
 
 constexpr double kPad = 48, kGap = 120, kTitle = 26;
@@ -59,11 +62,14 @@ constexpr double kFont = 13, kCharWidth = 7.2;  // label font size and the width
 /// of an animation share the box round the whole motion). `after[i]`: the length of the words
 /// after panel i (0: none), whose place no label takes.
 Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height,
-               const Figure::Bounds* fixed = nullptr, const std::vector<std::size_t>& after = {});
+               const Figure::Bounds* fixed = nullptr, const std::vector<std::size_t>& after = {}, double text = 1);
+
+/// The page width lay_out takes for `width` (0: its default for n panels).
+int page_width(int width, std::size_t n);
 
 /// The words between panels: font size and the page box of `length` characters at (x, mid).
 constexpr double kSignFont = 28;
-Layout::Box sign_box(double x, double mid, std::size_t length);
+Layout::Box sign_box(double x, double mid, std::size_t length, double text = 1);
 
 /// An arrowhead at page point b, pointing from page point a (page pixels).
 std::vector<std::pair<double, double>> head_at(double xa, double ya, double xb, double yb);

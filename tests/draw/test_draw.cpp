@@ -345,14 +345,20 @@ TEST_CASE("every figure of every derivation: no label over another, over a title
       ++k;
       ++figures;
       const bool several = b.sheet->size() > 1;
-      for (auto [width, height] : {std::pair<int, int>{0, 1600}, {0, several ? 560 : 520}}) {
-        const auto boxes = b.sheet->text_boxes(width, height);
-        double page_w = 0, page_h = 0;
-        for (auto& x : boxes) page_w = std::max(page_w, x.x1), page_h = std::max(page_h, x.y1);
-        const std::string svg = b.sheet->svg(width, height);
-        std::smatch sz;
-        REQUIRE(std::regex_search(svg, sz, std::regex("width=\"([0-9]+)\" height=\"([0-9]+)\"")));
-        const double W = std::stod(sz[1]), H = std::stod(sz[2]);
+      // (the HTML page's SVG; the LaTeX's TikZ, its words at 8 pt, as wide as derive_latex asks)
+      for (auto [height, cm] : {std::pair<int, double>{1600, 0}, {several ? 560 : 520, several ? 15.5 : 10.5}}) {
+        const int width = 0;
+        const auto laid = b.sheet->text_boxes(width, height, cm);
+        const auto& boxes = laid.boxes;
+        const double W = laid.width, H = laid.height;
+        if (cm == 0) {
+          // the SVG is that page
+          std::smatch sz;
+          const std::string svg = b.sheet->svg(width, height);
+          REQUIRE(std::regex_search(svg, sz, std::regex("width=\"([0-9]+)\" height=\"([0-9]+)\"")));
+          CHECK(std::stod(sz[1]) == W);
+          CHECK(std::stod(sz[2]) == H);
+        }
         for (std::size_t i = 0; i < boxes.size(); ++i) {
           const auto& p = boxes[i];
           if (!p.label) continue;

@@ -113,10 +113,19 @@ public:
     std::string text;
     bool label;
   };
-  std::vector<TextBox> text_boxes(int width = 0, int max_height = 1600) const;
+  /// The page's size and its boxes of words (`width_cm` > 0: as tikz(width_cm, width,
+  /// max_height) lays it out, its words at 8 or 9 pt).
+  struct TextLayout {
+    double width = 0, height = 0;
+    std::vector<TextBox> boxes;
+  };
+  TextLayout text_boxes(int width = 0, int max_height = 1600, double width_cm = 0) const;
 
 private:
-  detail::Layout layout(int width, int max_height) const;
+  detail::Layout layout(int width, int max_height, double width_cm) const;
+  /// TikZ's size for the words (pt) at width_cm, and that size against SVG's 13 px labels at
+  /// the picture's scale.
+  std::pair<double, double> tikz_text(double width_cm, int width) const;
   struct Panel {
     Figure figure;
     std::string title, title_tex, after, after_tex;
