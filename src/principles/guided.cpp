@@ -18,27 +18,14 @@ using model::Model;
 
 namespace {
 
-/// The line body b keeps to: u when every ∂r̄/∂q_i is along one constant u and the body does
+/// The line body b keeps to: u when its centre keeps to a line (centre_line) and the body does
 /// not turn (or is a particle); nothing otherwise.
 std::optional<Guided> line_of(const Model& m, int b) {
   const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
   if (!B.inertia.is_zero() && !motion_free(m, model::trig_simplify(B.angle))) return std::nullopt;
-  if (B.x.has(m.t) || B.y.has(m.t) || B.angle.has(m.t)) return std::nullopt;
-  std::optional<std::pair<ex, ex>> u;
-  for (auto& co : m.coords) {
-    const ex dx = model::trig_simplify(B.x.diff(co.q)), dy = model::trig_simplify(B.y.diff(co.q));
-    if (vanishes(m, dx) && vanishes(m, dy)) continue;
-    if (!u) {
-      // u = ∂r̄/∂q / |∂r̄/∂q|, which must not change with the motion
-      const ex len = sqrt(model::trig_simplify(dx * dx + dy * dy));
-      const ex ux = model::trig_simplify(dx / len), uy = model::trig_simplify(dy / len);
-      if (!motion_free(m, ux) || !motion_free(m, uy)) return std::nullopt;
-      u = {ux, uy};
-    }
-    if (!vanishes(m, cross(u->first, u->second, dx, dy))) return std::nullopt;
-  }
-  if (!u) return std::nullopt;  // held still: no line
-  return Guided{b, u->first, u->second};
+  auto c = centre_line(m, b);
+  if (!c) return std::nullopt;
+  return Guided{b, c->ux, c->uy};
 }
 
 /// The moment about P its support adds for a force F at Q (and a couple M) on guided body g:
@@ -53,6 +40,34 @@ ex support_share(const Model& m, const Guided& g, const ex& px, const ex& py, co
 
 
 }  // namespace
+
+std::optional<CentreLine> centre_line(const Model& m, int b) {
+  const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+  if (B.x.has(m.t) || B.y.has(m.t) || B.angle.has(m.t)) return std::nullopt;
+  std::optional<CentreLine> c;
+  bool with_centre = false, alone = false;
+  for (auto& co : m.coords) {
+    const ex dx = model::trig_simplify(B.x.diff(co.q)), dy = model::trig_simplify(B.y.diff(co.q));
+    const bool turns = !vanishes(m, model::trig_simplify(B.angle.diff(co.q)));
+    if (vanishes(m, dx) && vanishes(m, dy)) {
+      alone = alone || turns;
+      continue;
+    }
+    with_centre = with_centre || turns;
+    if (!c) {
+      // u = ∂r̄/∂q / |∂r̄/∂q|, which must not change with the motion
+      const ex len = sqrt(model::trig_simplify(dx * dx + dy * dy));
+      const ex ux = model::trig_simplify(dx / len), uy = model::trig_simplify(dy / len);
+      if (!motion_free(m, ux) || !motion_free(m, uy)) return std::nullopt;
+      c = CentreLine{ux, uy};
+    }
+    if (!vanishes(m, cross(c->ux, c->uy, dx, dy))) return std::nullopt;
+  }
+  if (!c) return std::nullopt;  // held still: no line
+  c->turns_with_centre = with_centre;
+  c->turns_alone = alone;
+  return c;
+}
 
 const Guided* find_guided(const std::vector<Guided>& gs, int b) {
   auto it = std::find_if(gs.begin(), gs.end(), [&](const Guided& g) { return g.body == b; });

@@ -349,28 +349,10 @@ void integrate_positions(const Model& m, const Analysis& a, MomentumBalance::Com
 /// turns it alone (or the body is a particle). Its support is then a single force normal to u
 /// through the mass centre, the only load the coordinates leave unknown; nothing otherwise.
 std::optional<std::pair<ex, ex>> free_centre_line(const Model& m, int b) {
-  const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
-  if (B.x.has(m.t) || B.y.has(m.t) || B.angle.has(m.t)) return std::nullopt;
-  std::optional<std::pair<ex, ex>> u;
-  bool turns_alone = B.inertia.is_zero();
-  for (auto& co : m.coords) {
-    const ex dx = model::trig_simplify(B.x.diff(co.q)), dy = model::trig_simplify(B.y.diff(co.q));
-    const bool turns = !vanishes(m, model::trig_simplify(B.angle.diff(co.q)));
-    if (vanishes(m, dx) && vanishes(m, dy)) {
-      turns_alone = turns_alone || turns;
-      continue;
-    }
-    if (turns) return std::nullopt;  // rolling written into the coordinates: a friction is implied too
-    if (!u) {
-      const ex len = sqrt(model::trig_simplify(dx * dx + dy * dy));
-      const ex ux = model::trig_simplify(dx / len), uy = model::trig_simplify(dy / len);
-      if (!motion_free(m, ux) || !motion_free(m, uy)) return std::nullopt;
-      u = {ux, uy};
-    }
-    if (!vanishes(m, cross(u->first, u->second, dx, dy))) return std::nullopt;
-  }
-  if (!u || !turns_alone) return std::nullopt;
-  return u;
+  auto c = centre_line(m, b);
+  // (a coordinate that moves the centre and turns the body: rolling written into the coordinates, whose friction is implied too)
+  if (!c || c->turns_with_centre || !(c->turns_alone || m.bodies[static_cast<std::size_t>(b)].inertia.is_zero())) return std::nullopt;
+  return std::pair<ex, ex>{c->ux, c->uy};
 }
 
 /// Does body b interact with another body of a's set: a coordinate that moves both, or a load

@@ -52,6 +52,14 @@ struct Guided {
   int body = -1;
   ex ux = 0, uy = 0;
 };
+/// The fixed straight line body b's mass centre keeps to (every ∂r̄/∂q_i along one constant u; none
+/// where it is held still or moves otherwise), and how the coordinates turn the body: one that
+/// moves its centre turns it too (rolling written into the coordinates), one turns it alone.
+struct CentreLine {
+  ex ux = 0, uy = 0;
+  bool turns_with_centre = false, turns_alone = false;
+};
+std::optional<CentreLine> centre_line(const model::Model& m, int b);
 /// The bodies of analysis a's set so held.
 std::vector<Guided> guided_bodies(const model::Model& m, const model::Analysis& a);
 /// The entry of body b in gs, or nullptr when b is not guided.
