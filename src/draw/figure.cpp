@@ -94,15 +94,21 @@ void Figure::mark(double x, double y, const std::string& name, bool fixed) {
   shapes_.push_back({Shape::Mark, {{x, y}}, 0, fixed ? Ink::Support : Ink::Thin, fixed, name});
 }
 
-void Figure::ground(double x, double y) {
-  // a short bar under the support with hatching below it
+void Figure::ground(double x, double y, double dx, double dy) {
+  // a short bar beyond the support with hatching behind it, drawn in the support's own axes:
+  // along r = (−d_y, d_x), and "down" along d; (a, b) there is (x, y) + a r − b d
   const double g = glyph();
-  line(x - g, y - g * 0.8, x + g, y - g * 0.8, Ink::Support);
+  auto at = [&](double a, double b) { return std::pair<double, double>{x + a * -dy - b * dx, y + a * dx - b * dy}; };
+  auto seg = [&](double a0, double b0, double a1, double b1) {
+    const auto p = at(a0, b0), q = at(a1, b1);
+    line(p.first, p.second, q.first, q.second, Ink::Support);
+  };
+  seg(-g, -g * 0.8, g, -g * 0.8);
   for (int i = 0; i < 5; ++i) {
-    double x0 = x - g + i * g / 2;
-    line(x0, y - g * 0.8, x0 - g * 0.35, y - g * 1.2, Ink::Support);
+    const double a0 = -g + i * g / 2;
+    seg(a0, -g * 0.8, a0 - g * 0.35, -g * 1.2);
   }
-  polyline({{x, y}, {x - g * 0.5, y - g * 0.8}, {x + g * 0.5, y - g * 0.8}}, Ink::Support, true);
+  polyline({at(0, 0), at(-g * 0.5, -g * 0.8), at(g * 0.5, -g * 0.8)}, Ink::Support, true);
 }
 
 void Figure::label(double x, double y, const std::string& text, const std::string& tex) { labels_.push_back({x, y, text, tex}); }

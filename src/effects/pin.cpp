@@ -19,7 +19,17 @@ public:
   void draw(const Model& m, const At& at, Figure& f) const override {
     auto [x, y] = at.point(m.position(b.body >= 0 ? b : a));
     f.circle(x, y, f.glyph() * 0.45, Ink::Support);
-    if (a.body < 0 || b.body < 0) f.ground(x, y);
+    if (a.body >= 0 && b.body >= 0) return;
+    // the ground below the pin, as the ground is; above it where the pinned body hangs from it
+    // (its mass centre within 60° of straight below the pin), so that the hatching does not cross it
+    const int body = a.body >= 0 ? a.body : b.body;
+    double dy = -1;
+    if (body >= 0) {
+      const model::Body& B = m.bodies[static_cast<std::size_t>(body)];
+      const double ux = x - at(B.x), uy = y - at(B.y), d = std::hypot(ux, uy);
+      if (d > 0.5 * f.glyph() && std::isfinite(d) && uy / d > 0.5) dy = 1;
+    }
+    f.ground(x, y, 0, dy);
   }
 };
 

@@ -379,3 +379,24 @@ TEST_CASE("every figure of every derivation: no label over another, over a title
   CHECK(faults.empty());
   CHECK(figures >= 150);
 }
+
+TEST_CASE("a fixed pin's ground: below the pin, above it where the body hangs from it", "[draw]") {
+  // the compound pendulum's pin O at the origin: at state 1 the bar is 30° below the horizontal
+  // (its centre not below the pin), at state 2 it hangs straight down (the ground above O)
+  kinergy::Solution s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/compound_pendulum.yaml");
+  const auto params = kinergy::simulate::simulation_values(s);
+  for (int st : {0, 1}) {
+    const auto f = kinergy::draw::scene_at(s.model, s.branch.sol, params, st);
+    int hatch = 0;
+    for (const auto& sh : f.shapes()) {
+      if (sh.ink != kinergy::draw::Ink::Support || sh.kind != kinergy::draw::Figure::Shape::Line) continue;
+      ++hatch;
+      for (const auto& [x, y] : sh.pts) {
+        INFO("state " << st + 1 << ": (" << x << ", " << y << ")");
+        if (st == 0) CHECK(y < 1e-12);
+        else CHECK(y > -1e-12);
+      }
+    }
+    CHECK(hatch == 6);  // its bar and five strokes
+  }
+}

@@ -57,8 +57,9 @@ public:
   void arc_arrow(double cx, double cy, double r, double a0, double a1, Ink ink = Ink::Force);
   /// A named point: a small marker of fixed size on the page, its world place kept as data.
   void mark(double x, double y, const std::string& name, bool fixed = false);
-  /// Hatched ground under a fixed support at (x, y).
-  void ground(double x, double y);
+  /// Hatched ground at a fixed support at (x, y), on the side (dx, dy) points to (a unit
+  /// vector; below by default).
+  void ground(double x, double y, double dx = 0, double dy = -1);
   void label(double x, double y, const std::string& text, const std::string& tex = "");
   /// A dimension: the size `text` of the segment 1 → 2, on a thin line beside it (to its right)
   /// with a tick at each end.
