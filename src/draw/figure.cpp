@@ -111,7 +111,12 @@ void Figure::ground(double x, double y, double dx, double dy) {
   polyline({at(0, 0), at(-g * 0.5, -g * 0.8), at(g * 0.5, -g * 0.8)}, Ink::Support, true);
 }
 
-void Figure::label(double x, double y, const std::string& text, const std::string& tex) { labels_.push_back({x, y, text, tex}); }
+void Figure::label(double x, double y, const std::string& text, const std::string& tex) {
+  // the same name at the same place once ("O" of the ground and "O" of the bar pinned there)
+  for (const Label& l : labels_)
+    if (l.text == text && std::hypot(l.x - x, l.y - y) <= 0.25 * glyph()) return;
+  labels_.push_back({x, y, text, tex});
+}
 
 void Figure::dimension(double x1, double y1, double x2, double y2, const std::string& text) {
   // offset to the right of 1 → 2 by two glyphs, with a tick at each end and the size in the middle

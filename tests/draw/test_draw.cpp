@@ -380,7 +380,7 @@ TEST_CASE("every figure of every derivation: no label over another, over a title
   CHECK(figures >= 150);
 }
 
-TEST_CASE("a fixed pin's ground: below the pin, above it where the body hangs from it", "[draw]") {
+TEST_CASE("a fixed pin's ground: below the pin, above it where the body hangs from it, and its point named once", "[draw]") {
   // the compound pendulum's pin O at the origin: at state 1 the bar is 30° below the horizontal
   // (its centre not below the pin), at state 2 it hangs straight down (the ground above O)
   kinergy::Solution s = kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/compound_pendulum.yaml");
@@ -398,5 +398,9 @@ TEST_CASE("a fixed pin's ground: below the pin, above it where the body hangs fr
       }
     }
     CHECK(hatch == 6);  // its bar and five strokes
+    // the ground's point O and the bar's point O pinned there: named once
+    int named_O = 0;
+    for (const auto& l : f.labels()) named_O += l.text == "O";
+    CHECK(named_O == 1);
   }
 }

@@ -60,6 +60,8 @@ public:
   /// Hatched ground at a fixed support at (x, y), on the side (dx, dy) points to (a unit
   /// vector; below by default).
   void ground(double x, double y, double dx = 0, double dy = -1);
+  /// A label at (x, y); not repeated where one with the same text is already within a quarter
+  /// glyph of it (a point of the ground and a body's point pinned there, both named O).
   void label(double x, double y, const std::string& text, const std::string& tex = "");
   /// A dimension: the size `text` of the segment 1 → 2, on a thin line beside it (to its right)
   /// with a tick at each end.
