@@ -27,6 +27,9 @@ std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string
 
 namespace {
 
+/// A name as a TeX subscript: "_{\mathrm{rod}}" (m_rod, W_rod, N_disk).
+std::string tex_sub(const std::string& name) { return "_{\\mathrm{" + tex_text(name) + "}}"; }
+
 // What the diagram needs to put numbers on its arrows' directions.
 struct Diagram {
   const Solution& s;
@@ -114,7 +117,7 @@ struct Diagram {
       const double p = momentum(at, b);
       const double length = p_max > 0 && std::isfinite(p) ? longest * std::max(0.25, p / p_max) : len;
       const bool named = bodies.size() > 1;
-      const std::string sub = B.name, sub_tex = "_{\\mathrm{" + tex_text(B.name) + "}}";
+      const std::string sub = B.name, sub_tex = tex_sub(B.name);
       arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, named ? "m_" + sub + " v\u0304_" + sub : "m v\u0304",
             named ? "m" + sub_tex + "\\bar{v}" + sub_tex : "m\\bar{v}", length);
       if (at(B.inertia) > 0)
@@ -139,8 +142,8 @@ struct Diagram {
       const bool support = effect.rfind("N_", 0) == 0;
       const bool named = bodies.size() > 1 && p.body >= 0;
       const std::string body_name = p.body >= 0 ? m.bodies[static_cast<std::size_t>(p.body)].name : "";
-      const std::string word = support ? "N_{\\mathrm{" + tex_text(effect.substr(2)) + "}}"
-                               : !p.symbol.empty() ? p.symbol + (named ? "_{\\mathrm{" + tex_text(body_name) + "}}" : "")
+      const std::string word = support ? "N" + tex_sub(effect.substr(2))
+                               : !p.symbol.empty() ? p.symbol + (named ? tex_sub(body_name) : "")
                                                    : "\\mathrm{" + tex_text(effect) + "}";
       const std::string said = !p.symbol.empty() ? p.symbol + (named ? "_" + body_name : "") : effect;
       if (p.unknown) {
