@@ -19,6 +19,7 @@
 #include "kinergy/model/inertia.hpp"
 #include "kinergy/model/model.hpp"
 #include "kinergy/model/simplify.hpp"
+#include "connectors.hpp"
 #include "page.hpp"
 
 namespace kinergy::draw {
@@ -52,6 +53,7 @@ Pen pen(Ink i) {
     case Ink::Momentum: return {"#6a1b9a", 2.2, false};
     case Ink::Dimension: return {"#777777", 0.8, false};
     case Ink::Sense: return {"#0b7a75", 1.4, false};
+    case Ink::Cord: return {"#4a3b2a", 1.6, false};
   }
   return {"#000000", 1.0, false};
 }
@@ -59,6 +61,11 @@ Pen pen(Ink i) {
 }  // namespace detail
 
 using namespace detail;
+
+void Figure::push(Shape s) {
+  s.owner = owner_;
+  shapes_.push_back(std::move(s));
+}
 
 double At::operator()(const ex& e) const {
   try {
@@ -69,15 +76,15 @@ double At::operator()(const ex& e) const {
   return kNaN;
 }
 
-void Figure::line(double x1, double y1, double x2, double y2, Ink ink) { shapes_.push_back({Shape::Line, {{x1, y1}, {x2, y2}}, 0, ink, false, ""}); }
+void Figure::line(double x1, double y1, double x2, double y2, Ink ink) { push({Shape::Line, {{x1, y1}, {x2, y2}}, 0, ink, false, "", ""}); }
 
 void Figure::polyline(std::vector<std::pair<double, double>> pts, Ink ink, bool closed, bool filled) {
-  shapes_.push_back({closed ? Shape::Polygon : Shape::Polyline, std::move(pts), 0, ink, filled, ""});
+  push({closed ? Shape::Polygon : Shape::Polyline, std::move(pts), 0, ink, filled, "", ""});
 }
 
-void Figure::circle(double cx, double cy, double r, Ink ink, bool filled) { shapes_.push_back({Shape::Circle, {{cx, cy}}, r, ink, filled, ""}); }
+void Figure::circle(double cx, double cy, double r, Ink ink, bool filled) { push({Shape::Circle, {{cx, cy}}, r, ink, filled, "", ""}); }
 
-void Figure::arrow(double x1, double y1, double x2, double y2, Ink ink) { shapes_.push_back({Shape::Arrow, {{x1, y1}, {x2, y2}}, 0, ink, false, ""}); }
+void Figure::arrow(double x1, double y1, double x2, double y2, Ink ink) { push({Shape::Arrow, {{x1, y1}, {x2, y2}}, 0, ink, false, "", ""}); }
 
 void Figure::arc_arrow(double cx, double cy, double r, double a0, double a1, Ink ink) {
   // the arc as a polyline, its head drawn at the end when written
@@ -87,11 +94,11 @@ void Figure::arc_arrow(double cx, double cy, double r, double a0, double a1, Ink
     double a = a0 + (a1 - a0) * i / k;
     pts.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
   }
-  shapes_.push_back({Shape::Arc, std::move(pts), r, ink, false, ""});
+  push({Shape::Arc, std::move(pts), r, ink, false, "", ""});
 }
 
 void Figure::mark(double x, double y, const std::string& name, bool fixed) {
-  shapes_.push_back({Shape::Mark, {{x, y}}, 0, fixed ? Ink::Support : Ink::Thin, fixed, name});
+  push({Shape::Mark, {{x, y}}, 0, fixed ? Ink::Support : Ink::Thin, fixed, name, ""});
 }
 
 void Figure::ground(double x, double y, double dx, double dy) {
@@ -109,6 +116,55 @@ void Figure::ground(double x, double y, double dx, double dy) {
     seg(a0, -g * 0.8, a0 - g * 0.35, -g * 1.2);
   }
   polyline({at(0, 0), at(-g * 0.5, -g * 0.8), at(g * 0.5, -g * 0.8)}, Ink::Support, true);
+}
+
+void Figure::surface(double x1, double y1, double x2, double y2, double nx, double ny) {
+  // the surface's edge, and short strokes behind it every half glyph, slanted back along it:
+  // from p + s t̂ to p + s t̂ + 0.6 g (n̂ − 0.6 t̂)
+  const double L = std::hypot(x2 - x1, y2 - y1), g = glyph();
+  if (!(L > 0) || !std::isfinite(L)) return;
+  const double tx = (x2 - x1) / L, ty = (y2 - y1) / L;
+  line(x1, y1, x2, y2, Ink::Support);
+  for (double s = 0.3 * g; s <= L; s += 0.5 * g) {
+    const double px = x1 + s * tx, py = y1 + s * ty;
+    line(px, py, px + 0.6 * g * (nx - 0.6 * tx), py + 0.6 * g * (ny - 0.6 * ty), Ink::Support);
+  }
+}
+
+double Figure::reach(const std::string& owner, double x, double y, double nx, double ny) const {
+  // the support function of the owner's shapes: max (p − o)·n over their points, (c − o)·n + r
+  // for a circle (its dimension lines left out)
+  double out = 0;
+  for (const Shape& s : shapes_) {
+    if (s.owner != owner || s.ink == Ink::Dimension) continue;  // the body, not its dimension lines
+    if (s.kind == Shape::Circle) {
+      out = std::max(out, (s.pts[0].first - x) * nx + (s.pts[0].second - y) * ny + s.r);
+      continue;
+    }
+    for (auto& [px, py] : s.pts) out = std::max(out, (px - x) * nx + (py - y) * ny);
+  }
+  return std::isfinite(out) ? out : 0;
+}
+
+void Figure::round_surface(double cx, double cy, double r, bool outside) {
+  // the circle, and strokes every half glyph round it on the ground's side, slanted as a
+  // straight surface's are: from p to p + 0.6 g (±r̂ − 0.6 t̂)
+  const double g = glyph();
+  if (!(r > 0) || !std::isfinite(r)) return;
+  circle(cx, cy, r, Ink::Support);
+  const int k = std::max(12, static_cast<int>(2 * M_PI * r / (0.5 * g)));
+  const double s = outside ? 1 : -1;
+  for (int i = 0; i < k; ++i) {
+    const double a = 2 * M_PI * i / k, c = std::cos(a), sn = std::sin(a);
+    const double px = cx + r * c, py = cy + r * sn;
+    line(px, py, px + 0.6 * g * (s * c + 0.6 * sn), py + 0.6 * g * (s * sn - 0.6 * c), Ink::Support);
+  }
+}
+
+bool Figure::has_circle(double cx, double cy, double r) const {
+  for (const Shape& s : shapes_)
+    if (s.kind == Shape::Circle && std::fabs(s.r - r) <= 1e-3 * r && std::hypot(s.pts[0].first - cx, s.pts[0].second - cy) <= 1e-3 * r) return true;
+  return false;
 }
 
 void Figure::label(double x, double y, const std::string& text, const std::string& tex) {
@@ -643,7 +699,7 @@ struct Placed {
 };
 
 /// One shape drawn in its frame (model/inertia.hpp's outlines).
-void outline(const At& at, const std::string& shape_name, const std::vector<ex>& sizes, const Placed& world, Figure& f) {
+void outline(const At& at, const std::string& shape_name, const std::vector<ex>& sizes, const Placed& world, Figure& f, double rim) {
   const double gx = world.gx, gy = world.gy;
   const model::InertiaShape& shape = model::inertia_shape(shape_name);
   const double a = sizes.empty() ? 0 : at(sizes[0]);
@@ -657,8 +713,11 @@ void outline(const At& at, const std::string& shape_name, const std::vector<ex>&
     }
     case model::Outline::Round:
     case model::Outline::Gyration: {
-      if (shape.outline == model::Outline::Round) f.circle(gx, gy, a, Ink::Body, true);
-      else f.circle(gx, gy, a, Ink::Hidden);  // the radius of gyration, not the rim
+      // a wheel known by its radius of gyration k alone: its rim at `rim` (a cord's drum, a
+      // pitch circle), else that of the uniform disk of that k, R = √2 k; k itself dashed
+      const double R = shape.outline == model::Outline::Round ? a : (rim > 0 ? rim : std::sqrt(2.0) * a);
+      f.circle(gx, gy, R, Ink::Body, true);
+      if (shape.outline == model::Outline::Gyration) f.circle(gx, gy, a, Ink::Hidden);
       auto [x2, y2] = world(a, 0);
       f.line(gx, gy, x2, y2, Ink::Thin);  // the reference line: the body's angle
       break;
@@ -709,8 +768,9 @@ void dimensions(const At& at, const std::string& shape_name, const std::vector<e
 
 }  // namespace
 
-void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
+void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, double rim) {
   const model::Body& b = m.bodies.at(static_cast<std::size_t>(bi));
+  f.owned_by("body " + b.name);
   // the body by its shape, or each part of a composite body by its own: r = G + R(φ) (lx, ly)
   const double gx = at(b.x), gy = at(b.y), phi = at(b.angle);
   const Placed world{gx, gy, phi};
@@ -721,16 +781,17 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points) {
     auto [px, py] = world(at(p.lx), at(p.ly));
     shapes.push_back({&p.shape, &p.sizes, Placed{px, py, phi + at(p.angle)}});
   }
-  for (auto& [shape, sizes, placed] : shapes) outline(at, *shape, *sizes, placed, f);
+  for (auto& [shape, sizes, placed] : shapes) outline(at, *shape, *sizes, placed, f, b.parts.empty() ? rim : 0);
   f.mark(gx, gy, b.name + ".G");
   f.label(gx, gy, b.name);
-  if (!points) return;
+  if (!points) return f.owned_by("");
   for (auto& [shape, sizes, placed] : shapes) dimensions(at, *shape, *sizes, placed, f);
   for (auto& [pn, lp] : b.points) {
     auto [px, py] = world(at(lp.first), at(lp.second));
     f.mark(px, py, b.name + "." + pn);
     f.label(px, py, pn);
   }
+  f.owned_by("");
 }
 
 namespace detail {
@@ -739,14 +800,24 @@ namespace detail {
 Figure drawing(const model::Model& m, const At& at, double g, const std::vector<int>* bodies, const std::vector<std::string>* effects) {
   Figure f;
   f.set_glyph(g);
-  for (std::size_t b = 0; b < m.bodies.size(); ++b)
-    if (!bodies || std::find(bodies->begin(), bodies->end(), static_cast<int>(b)) != bodies->end()) body(m, at, static_cast<int>(b), f);
+  // what the kinematics imply (cords, meshes, surfaces), read first: a wheel's rim may come from it
+  const Implied imp = implied(m, at);
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    if (bodies && std::find(bodies->begin(), bodies->end(), static_cast<int>(b)) == bodies->end()) continue;
+    const auto rim = imp.rim.find(static_cast<int>(b));
+    body(m, at, static_cast<int>(b), f, true, rim == imp.rim.end() ? 0 : rim->second);
+  }
   for (auto& [pn, p] : m.fixed_points) {
     f.mark(at(p.first), at(p.second), pn, true);
     f.label(at(p.first), at(p.second), pn);
   }
-  for (auto& e : m.effects)
-    if (!effects || std::find(effects->begin(), effects->end(), e.name) != effects->end()) e.draw(m, at, f);
+  for (auto& e : m.effects) {
+    if (effects && std::find(effects->begin(), effects->end(), e.name) == effects->end()) continue;
+    f.owned_by(e.name);
+    e.draw(m, at, f);
+  }
+  f.owned_by("");
+  draw_implied(m, at, imp, f, bodies);
   // the positive sense of each coordinate, on the first body it moves: an arrow at the mass
   // centre along ∂r̄/∂q, or a curved arrow round it when q only turns the body (∂φ/∂q)
   for (auto& c : m.coords) {

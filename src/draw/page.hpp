@@ -25,7 +25,7 @@ struct Pen {
 Pen pen(Ink i);
 /// Every ink, for writers that go through them all (TikZ's colours, gnuplot's series).
 constexpr Ink kInks[] = {Ink::Body, Ink::Thin, Ink::Support, Ink::Force, Ink::Spring,
-                         Ink::Track, Ink::Hidden, Ink::Momentum, Ink::Dimension, Ink::Sense};
+                         Ink::Track, Ink::Hidden, Ink::Momentum, Ink::Dimension, Ink::Sense, Ink::Cord};
 
 // A sheet laid out on the page (pixels, y down): one scale for every panel, each panel's world
 // mapped by X = tx + s x, Y = ty − s y; labels placed off each other.

@@ -39,7 +39,12 @@ public:
       const model::Body& B = m.bodies[static_cast<std::size_t>(p->body)];
       auto [px, py] = at.point(m.position(*p));
       const double gx = at(B.x), gy = at(B.y), r = std::hypot(px - gx, py - gy);
-      if (std::isfinite(r) && r > 0) f.circle(gx, gy, r, Ink::Track);
+      if (std::isfinite(r) && r > 0 && !f.has_circle(gx, gy, r)) f.circle(gx, gy, r, Ink::Track);
+      // the place itself: where the parts touch (the surface under it is drawn from the kinematics)
+      if (std::isfinite(px) && std::isfinite(py)) {
+        f.circle(px, py, 0.25 * f.glyph(), Ink::Support, true);
+        f.label(px, py, name);
+      }
     }
     if (auto p = joined(m, at, a, b)) {
       const auto [x1, y1, x2, y2] = *p;

@@ -24,8 +24,8 @@ public:
 
 std::optional<model::Reaction> Contact::reaction(const Model&) const { return model::Reaction::contact(a, b, nx, ny, e, stick); }
 
-// the contact: its surface (a line across n̂ through the first party's point) and n̂ as a short
-// arrow from there into the second party
+// the contact: its surface (a line across n̂ through the first party's point, hatched when that
+// party is fixed) and n̂ as a short arrow from there into the second party
 void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
   // the surface is the plane through party a perpendicular to n̂ (the simulator's gap is measured
   // from it; the ground's plane passes through the origin): drawn where party b's point projects
@@ -36,7 +36,9 @@ void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
   const double ux = at(nx) / len, uy = at(ny) / len, g = f.glyph();
   const double gap = (xb - xa) * ux + (yb - ya) * uy;
   const double x = xb - gap * ux, y = yb - gap * uy;
-  f.line(x - uy * g * 3, y + ux * g * 3, x + uy * g * 3, y - ux * g * 3, draw::Ink::Track);
+  // a fixed party's surface is the ground: hatched behind it (against n̂); between bodies, dashed
+  if (a.body < 0) f.surface(x - uy * g * 3, y + ux * g * 3, x + uy * g * 3, y - ux * g * 3, -ux, -uy);
+  else f.line(x - uy * g * 3, y + ux * g * 3, x + uy * g * 3, y - ux * g * 3, draw::Ink::Track);
   f.arrow(x, y, x + ux * g * 2, y + uy * g * 2, draw::Ink::Thin);
   f.label(x + ux * g * 2, y + uy * g * 2, name + " n");
 }

@@ -15,10 +15,15 @@ public:
     return {force_at(a, Fx, Fy)};
   }
 
-  // an arrow along F ending at its point, 3 glyphs long, labelled with its name
+  // an arrow along F ending at its point, 3 glyphs long, labelled with its name; where F is
+  // zero at this state (a bumper not yet touched), a ring at its point, "name = 0"
   void draw(const Model& m, const At& at, Figure& f) const override {
     auto [x, y] = at.point(m.position(a));
     const double fx = at(Fx), fy = at(Fy), F = std::hypot(fx, fy);
+    if (F == 0) {
+      f.circle(x, y, 0.3 * f.glyph(), Ink::Force);
+      return f.label(x, y, name + " = 0");
+    }
     if (!(F > 0)) return;
     const double L = f.glyph() * 3;
     f.arrow(x - fx / F * L, y - fy / F * L, x, y, Ink::Force);

@@ -11,6 +11,19 @@ public:
 
   // J at its point, in the impacts it takes part in
   const model::Blow* blow() const override { return &j; }
+
+  // the blow: an arrow along J ending at its point, 3 glyphs long (a ring there where J's
+  // direction is not known at these values), labelled with its name
+  void draw(const Model& m, const At& at, Figure& f) const override {
+    auto [x, y] = at.point(m.position(j.at));
+    const double jx = at(j.Jx), jy = at(j.Jy), J = std::hypot(jx, jy), L = 3 * f.glyph();
+    if (!(J > 0)) {
+      f.circle(x, y, 0.3 * f.glyph(), Ink::Force);
+      return f.label(x, y, name);
+    }
+    f.arrow(x - jx / J * L, y - jy / J * L, x, y, Ink::Force);
+    f.label(x - jx / J * L, y - jy / J * L, name);
+  }
 };
 
 }  // namespace

@@ -28,6 +28,14 @@ public:
       const model::Body& B = m.bodies[static_cast<std::size_t>(body)];
       const double ux = x - at(B.x), uy = y - at(B.y), d = std::hypot(ux, uy);
       if (d > 0.5 * f.glyph() && std::isfinite(d) && uy / d > 0.5) dy = 1;
+      // a wheel on an axle at its centre: a post from the axle down to ground beyond its rim,
+      // not hatching inside the wheel
+      const double rim = f.reach("body " + B.name, x, y, 0, -1);
+      if (d <= 0.5 * f.glyph() && rim > 1.5 * f.glyph()) {
+        const double yg = y - rim - 0.5 * f.glyph();
+        f.line(x, y, x, yg, Ink::Support);
+        return f.ground(x, yg, 0, -1);
+      }
     }
     f.ground(x, y, 0, dy);
   }

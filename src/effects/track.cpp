@@ -54,17 +54,19 @@ public:
     return sqrt(pow(x - x0, 2) + pow(y - y0, 2)) - (R + offset);
   }
 
-  // the guide: a dashed stretch of its line about the point, or its circle (at the offset, the
-  // surface itself: the line moved back along its normal, the circle's radius R)
+  // the surface or guide (draw::line_support): under a round body at its offset, hatched on the
+  // ground's side; else the surface the loads press the body onto, or a guide through the point.
+  // A circle: the surface of radius R, hatched on the side away from the body (outside a bowl
+  // the body is in, inside a dome it is on); a guide circle where there is no offset.
   void draw(const Model& m, const At& at, Figure& f) const override {
     auto [px, py] = at.point(m.position(p));
+    const double off = at(offset);
     if (circle) {
-      f.circle(at(x0), at(y0), at(R), Ink::Track);
+      const double cx = at(x0), cy = at(y0), r = at(R);
+      if (off == 0 || !std::isfinite(off)) f.circle(cx, cy, r, Ink::Support);
+      else f.round_surface(cx, cy, r, off < 0);
     } else {
-      const double ux = at(tx), uy = at(ty), off = at(offset), nx = -uy, ny = ux;
-      // the foot of the point on the surface, and a stretch of ±25 glyphs along it (about the scene)
-      const double fx = px - off * nx, fy = py - off * ny, L = f.glyph() * 25;
-      f.line(fx - ux * L, fy - uy * L, fx + ux * L, fy + uy * L, Ink::Track);
+      draw::line_support(m, at, f, p.body, px, py, at(tx), at(ty), std::isfinite(off) ? off : 0);
     }
     f.label(px, py, name);
   }

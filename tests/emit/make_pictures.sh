@@ -21,6 +21,9 @@ shot() {  # shot URL FILE WIDTH HEIGHT: a headless Chromium screenshot
 "$kinergy" draw derivations/energy/bar_spring.yaml --state all -o "$out/scene_states.png"
 "$kinergy" draw derivations/impact/sphere_hits_pivoted_bar.yaml --figure 2 -o "$out/impulse_momentum.png"
 "$kinergy" draw derivations/momentum/disk_rolls_incline_time.yaml --figure 2 -o "$out/implied_support.png"
+"$kinergy" draw derivations/energy/atwood_pulley.yaml --state all -o "$out/cords.png"
+"$kinergy" draw derivations/energy/meshed_gears.yaml --state 1 -o "$out/gears_in_mesh.png"
+"$kinergy" draw derivations/impact/pendulum_strikes_block.yaml --state 1 -o "$out/bob_and_floor.png"
 "$kinergy" simulate derivations/impact/bouncing_ball.yaml --until 1.5 --samples 300 --animate "$tmp/ball.html" >/dev/null
 shot "file://$tmp/ball.html#frame=106" "$out/animation_frame.png" 760 760
 "$kinergy" derive derivations/momentum/disk_axle_reaction.yaml --html "$tmp/page.html"

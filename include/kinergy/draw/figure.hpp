@@ -25,7 +25,7 @@ struct At {
 };
 
 /// What a stroke is for: its colour and weight follow.
-enum class Ink { Body, Thin, Support, Force, Spring, Track, Hidden, Momentum, Dimension, Sense };
+enum class Ink { Body, Thin, Support, Force, Spring, Track, Hidden, Momentum, Dimension, Sense, Cord };
 
 class Figure {
 public:
@@ -36,6 +36,7 @@ public:
     Ink ink = Ink::Body;
     bool filled = false;
     std::string id;  ///< data-name of a marked point, for reading positions back
+    std::string owner;  ///< what it draws: an effect's name, or an implied connector's ("cord drum-load")
   };
   struct Label {
     double x, y;  ///< the anchor, world coordinates
@@ -60,6 +61,19 @@ public:
   /// Hatched ground at a fixed support at (x, y), on the side (dx, dy) points to (a unit
   /// vector; below by default).
   void ground(double x, double y, double dx = 0, double dy = -1);
+  /// A surface along the segment 1 → 2 (a floor, an incline, a wall), hatched on the side
+  /// (nx, ny) points to (a unit vector: the ground's side, away from what rests on it).
+  void surface(double x1, double y1, double x2, double y2, double nx, double ny);
+  /// A round surface of radius r about (cx, cy): a bowl (hatched outside, `outside`) or a dome
+  /// (hatched inside).
+  void round_surface(double cx, double cy, double r, bool outside);
+  /// Whom the shapes drawn from now on belong to (an effect's name; "" for the bodies).
+  void owned_by(std::string owner) { owner_ = std::move(owner); }
+  /// How far the shapes of `owner` reach from (x, y) along the unit vector (nx, ny) (0 when none
+  /// do): where a body's edge is, for the floor under it.
+  double reach(const std::string& owner, double x, double y, double nx, double ny) const;
+  /// Is there a circle of radius r round (cx, cy) already (within a thousandth of r)?
+  bool has_circle(double cx, double cy, double r) const;
   /// A label at (x, y); not repeated where one with the same text is already within a quarter
   /// glyph of it (a point of the ground and a body's point pinned there, both named O).
   void label(double x, double y, const std::string& text, const std::string& tex = "");
@@ -86,6 +100,8 @@ private:
   std::vector<Shape> shapes_;
   std::vector<Label> labels_;
   double glyph_ = 0.05;
+  std::string owner_;
+  void push(Shape s);
 };
 
 /// Figures side by side at one scale, each with a title under it and words between them: the
@@ -143,8 +159,17 @@ private:
 At state_values(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int state, const At* otherwise = nullptr);
 
 /// Body b by its inertia shape at `at`: a bar, a disk with its reference line, a plate, a
-/// block; its mass centre and (with `points`) its named points marked and labelled.
-void body(const model::Model& m, const At& at, int b, Figure& f, bool points = true);
+/// block; its mass centre and (with `points`) its named points marked and labelled. A wheel known
+/// by its radius of gyration alone is drawn with its rim at `rim` (0: at √2 k). Its shapes are
+/// owned by "body NAME".
+void body(const model::Model& m, const At& at, int b, Figure& f, bool points = true, double rim = 0);
+
+/// What holds body b's point (px, py) on the line along the unit (ux, uy) (a track, or what the
+/// coordinates imply): with `offset` ≠ 0 a round body's surface, at the foot (px, py) − offset n̂
+/// (n̂ = k × u), its ground beyond; at offset 0 the surface its weight presses it onto (and its
+/// other given loads to the same side), at its edge there; else a guide through the point (a
+/// collar's rod).
+void line_support(const model::Model& m, const At& at, Figure& f, int b, double px, double py, double ux, double uy, double offset);
 
 /// A glyph size that suits a drawing of these bodies at `at`: from a first drawing's extent.
 double glyph_for(const model::Model& m, const At& at);
