@@ -140,12 +140,27 @@ public:
 
 // --- pictures ----------------------------------------------------------------------------
 
+/// Where body b is pinned to a fixed point (a pin effect with a fixed party), at `at`; nothing
+/// when it is not.
+inline std::optional<std::pair<double, double>> fixed_pin(const Model& m, const At& at, int body) {
+  for (auto& e : m.effects) {
+    const auto r = e.reaction(m);
+    if (!r || r->kind != model::Reaction::Kind::Pin) continue;
+    if ((r->a.body == body && r->b.body < 0) || (r->b.body == body && r->a.body < 0))
+      return at.point(m.position(r->a.body == body ? r->a : r->b));
+  }
+  return std::nullopt;
+}
+
 /// A curved arrow round body b's centre, counterclockwise when sense > 0 (clockwise < 0, no
-/// head when 0), `glyphs` glyphs out, labelled: a couple, a torsion spring, a power drive.
+/// head when 0), `glyphs` glyphs out, labelled: a couple, a torsion spring, a power drive. With
+/// `at_pin`, round the fixed pin the body turns about, where it has one (a torsion spring, a
+/// bearing's friction act there).
 inline void draw_turning(const Model& m, const At& at, Figure& f, int body, double sense, Ink ink, const std::string& label,
-                         double glyphs = 1.6) {
+                         double glyphs = 1.6, bool at_pin = false) {
   const auto& B = m.bodies[static_cast<std::size_t>(body)];
-  const double x = at(B.x), y = at(B.y), r = f.glyph() * glyphs;
+  const auto pin = at_pin ? fixed_pin(m, at, body) : std::nullopt;
+  const double x = pin ? pin->first : at(B.x), y = pin ? pin->second : at(B.y), r = f.glyph() * glyphs;
   if (sense > 0) f.arc_arrow(x, y, r, -0.6, 3.6, ink);
   else if (sense < 0) f.arc_arrow(x, y, r, 3.6, -0.6, ink);
   else {

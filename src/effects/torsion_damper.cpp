@@ -17,7 +17,7 @@ public:
   }
 
   // an arc round the (first) body's centre
-  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Hidden, name, 1.3); }
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Hidden, name, 1.3, true); }
 
 };
 

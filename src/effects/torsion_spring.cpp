@@ -10,8 +10,8 @@ public:
   int body = -1, body2 = -1;
   ex k = 0, free = 0;
 
-  // a coil round the (first) body's centre
-  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Spring, name, 1.0); }
+  // a coil round the pin the (first) body turns about (its centre when it has none)
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Spring, name, 1.0, true); }
   // the couple −k (φ₁ − φ₂ − φ₀) on the body, its reaction on the second (or the ground)
   std::vector<model::Load> loads(const Model& m) const override {
     ex phi = m.bodies[body].angle - (body2 >= 0 ? m.bodies[body2].angle : ex(0));

@@ -172,3 +172,20 @@ TEST_CASE("a pendulum's bob with no pin: a cord from the fixed point it swings a
   for (const auto& l : d.imp.lines) floor = floor || (l.body == body_of(m, "block") && std::fabs(l.uy) < 1e-12);
   CHECK(floor);
 }
+
+TEST_CASE("a torsion spring is drawn round the pin its body turns about, not round the mass centre", "[draw][connectors]") {
+  // torsion_spring_bar: the bar turns about its end O (a pin to the fixed point O); the coil is
+  // an arc of radius one glyph about O, half a bar's length from the bar's centre
+  const auto d = drawn("derivations/energy/torsion_spring_bar.yaml", 0);
+  const auto& O = d.s.model.fixed_points.at("O");
+  const double ox = d.at(O.first), oy = d.at(O.second), g = d.f.glyph();
+  int points = 0;
+  for (const auto& sh : d.f.shapes()) {
+    if (sh.owner != "coil") continue;
+    for (auto [x, y] : sh.pts) {
+      CHECK(std::hypot(x - ox, y - oy) == Approx(g).epsilon(1e-9));
+      ++points;
+    }
+  }
+  CHECK(points > 10);
+}
