@@ -103,6 +103,8 @@ std::string spans_html(const Spans& spans, const Derivation& d) {
 
 }  // namespace
 
+int html_figure_width(const draw::Sheet& s) { return s.size() > 1 ? 800 : 640; }
+
 std::string html(const Derivation& d, const std::vector<std::string>& animations, const HtmlOptions& o) {
   const Katex k = katex(o.katex_dir);
   std::ostringstream os;
@@ -155,7 +157,7 @@ std::string html(const Derivation& d, const std::vector<std::string>& animations
         os << "</tbody>\n</table>\n";
         break;
       case Block::Kind::Figure:
-        os << "<figure>\n" << b.sheet->svg() << "<figcaption>" << escape(b.title) << "</figcaption>\n</figure>\n";
+        os << "<figure>\n" << b.sheet->svg(html_figure_width(*b.sheet)) << "<figcaption>" << escape(b.title) << "</figcaption>\n</figure>\n";
         break;
     }
   }

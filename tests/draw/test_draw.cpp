@@ -347,7 +347,7 @@ TEST_CASE("every figure of every derivation: no label over another, over a title
       const bool several = b.sheet->size() > 1;
       // (the HTML page's SVG; the LaTeX's TikZ, its words at 8 pt, as wide as derive_latex asks)
       for (auto [height, cm] : {std::pair<int, double>{1600, 0}, {several ? 560 : 520, several ? 15.5 : 10.5}}) {
-        const int width = 0;
+        const int width = cm == 0 ? kinergy::emit::html_figure_width(*b.sheet) : 0;
         const auto laid = b.sheet->text_boxes(width, height, cm);
         const auto& boxes = laid.boxes;
         const double W = laid.width, H = laid.height;

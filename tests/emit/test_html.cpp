@@ -67,8 +67,13 @@ TEST_CASE("every derivation's page in headless Chromium: the mathematics typeset
          "    a.show(a.times.length - 1); const g1 = root.querySelector('g[data-frame][display=\"inline\"]').innerHTML;\n"
          "    moved.push(g0 !== g1 ? 1 : 0);\n"
          "  }\n"
+         "  let least = 1000;\n"
+         "  d.querySelectorAll('figure svg').forEach(function (s) {\n"
+         "    s.querySelectorAll('text').forEach(function (t) { least = Math.min(least, t.getBoundingClientRect().height); });\n"
+         "  });\n"
          "  out.push(names[i] + ' ' + d.body.getAttribute('data-math') + ' ' + d.querySelectorAll('.katex').length + ' ' +\n"
-         "           d.querySelectorAll('.katex-error').length + ' ' + d.querySelectorAll('figure svg').length + ' ' + moved.join(''));\n"
+         "           d.querySelectorAll('.katex-error').length + ' ' + d.querySelectorAll('figure svg').length + ' ' + moved.join('') +\n"
+         "           ' ' + Math.round(least * 100));\n"
          "  i++; next();\n"
          "});\nnext();\n</script></body></html>\n";
   }
@@ -78,7 +83,7 @@ TEST_CASE("every derivation's page in headless Chromium: the mathematics typeset
   std::smatch all;
   REQUIRE(std::regex_search(dom, all, std::regex("data-done=\"([^\"]*)\"")));
   const std::string done = all[1];
-  std::regex rec("([a-z0-9_]+\\.html) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([01]*)");
+  std::regex rec("([a-z0-9_]+\\.html) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([01]*) ([0-9]+)");
   std::size_t pages = 0, animations = 0;
   for (auto it = std::sregex_iterator(done.begin(), done.end(), rec); it != std::sregex_iterator(); ++it) {
     const auto& m = *it;
@@ -90,6 +95,9 @@ TEST_CASE("every derivation's page in headless Chromium: the mathematics typeset
     CHECK(katex == typeset);  // each typeset piece is on the page
     CHECK(figures >= 1);      // the states at least
     for (char c : m[7].str()) CHECK(c == '1');
+    // every figure's words as tall on the page as 8 pt (10.7 px) or more: not scaled down (a
+    // label's box is 1.16 times its size in DejaVu Sans)
+    CHECK(std::stoi(m[8]) / 100.0 >= 1.1 * 8 * 96 / 72.0);
     animations += m[7].str().size();
     ++pages;
   }

@@ -69,6 +69,11 @@ struct Block {
   std::shared_ptr<const draw::Sheet> sheet;  ///< Figure: the drawing (its caption is `title`); the LaTeX only
 };
 
+/// The width (pixels) the HTML page draws a figure at: no wider than the page's column (52em,
+/// 832 px), so that the browser does not scale it down and its labels stay at 13 px (about the
+/// body text's 16 px, above 8 pt): 640 for one panel, 800 for several.
+int html_figure_width(const draw::Sheet& s);
+
 struct Derivation {
   std::string title, description, file;
   std::vector<Block> blocks;
