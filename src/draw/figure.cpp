@@ -776,7 +776,14 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, d
   const Placed world{gx, gy, phi};
   // each shape's frame: the body's own, or each part's at its centre and turn
   std::vector<std::tuple<const std::string*, const std::vector<ex>*, Placed>> shapes;
-  if (b.parts.empty()) shapes.push_back({&b.shape, &b.sizes, Placed{gx, gy, phi}});
+  // (`drawn_as`: a particle's or a flywheel's outline as the scene gives it, and a radius of
+  // gyration's dashed circle as well)
+  if (b.parts.empty() && !b.drawn_shape.empty()) {
+    shapes.push_back({&b.drawn_shape, &b.drawn_sizes, Placed{gx, gy, phi}});
+    if (b.shape == "gyration") f.circle(gx, gy, at(b.sizes[0]), Ink::Hidden);
+  } else if (b.parts.empty()) {
+    shapes.push_back({&b.shape, &b.sizes, Placed{gx, gy, phi}});
+  }
   for (auto& p : b.parts) {
     auto [px, py] = world(at(p.lx), at(p.ly));
     shapes.push_back({&p.shape, &p.sizes, Placed{px, py, phi + at(p.angle)}});

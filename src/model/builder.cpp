@@ -266,6 +266,7 @@ private:
         b.x = b.x + cos(b.angle) * cx - sin(b.angle) * cy;
         b.y = b.y + sin(b.angle) * cx + cos(b.angle) * cy;
       }
+      if (bd.drawn_as) drawn_as(bd, b);
       for (auto& p : bd.points) {
         ex px = checked(p.x, SceneContext::ParamsOnly, L, p.name + "[0]",
                         "body points are lengths in body axes (parameters only)");
@@ -289,6 +290,24 @@ private:
     positive(m, t.pos, what, true);
     if (auto v = value_of(m, t.pos, what); v && v->is_zero()) m = 0;
     return m;
+  }
+
+  /// `drawn_as`: the outline of a body whose inertia has none (a particle, a radius of gyration,
+  /// a given Ī), as a disk's or a plate's; refused for a body whose shape is its outline.
+  void drawn_as(const scene::BodyDef& bd, Body& b) {
+    const scene::InertiaDef& d = *bd.drawn_as;
+    if (!bd.parts.empty() || (b.shape != "particle" && b.shape != "gyration" && b.shape != "centroidal"))
+      throw SceneError(d.pos, "body '" + bd.name + "' is drawn as its " + (bd.parts.empty() ? "shape (" + b.shape + ")" : std::string("parts")) +
+                                  ", so 'drawn_as' would draw something else",
+                       "remove 'drawn_as': it is for a particle or a body known by its radius of gyration or its Ī");
+    // drawn as the inertia shape whose outline it is (the scene allows these two)
+    static const std::map<std::string, std::string> outline_of = {{"circle", "disk"}, {"rectangle", "plate"}};
+    b.drawn_shape = outline_of.at(d.kind);
+    for (auto& t : d.args) {
+      ex e = checked(t, SceneContext::ParamsOnly, Dimension::length(), "drawn_as", "a drawn size is a length");
+      positive(e, t.pos, "the size '" + t.s + "' of " + d.kind);
+      b.drawn_sizes.push_back(e);
+    }
   }
 
   /// An inertia shape's name, sizes and Ī for mass m (model/inertia.cpp).

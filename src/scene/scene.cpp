@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -275,6 +276,25 @@ struct Loader {
     return d;
   }
 
+  /// `drawn_as: {circle: R}` or `drawn_as: {rectangle: [w, h]}`: an outline and its sizes.
+  InertiaDef drawn_as(const Node& n) const {
+    static const std::map<std::string, int> outlines = {{"circle", 1}, {"rectangle", 2}};
+    const auto o = n.is_map() && n.entries.size() == 1 ? outlines.find(n.entries[0].first.scalar) : outlines.end();
+    if (o == outlines.end())
+      throw SceneError(n.pos, "'drawn_as' names one outline: a circle or a rectangle", "write 'drawn_as: {circle: R}' or 'drawn_as: {rectangle: [w, h]}'");
+    const auto& [k, v] = n.entries[0];
+    InertiaDef d;
+    d.kind = k.scalar;
+    d.pos = k.pos;
+    if (o->second == 2) {
+      auto [a, b] = pair(v, d.kind, "drawn_as: {rectangle: [w, h]}");
+      d.args = {a, b};
+    } else {
+      d.args = {text(v, d.kind, "drawn_as: {circle: R}")};
+    }
+    return d;
+  }
+
   /// `NAME: {least|greatest: p, reaches: S, along: th, over: [lo, hi], unit: U}`: the least
   /// (greatest) value of the parameter p for which state S is reached. @returns false when v asks
   /// for none of this (an ordinary result or an extreme).
@@ -349,7 +369,7 @@ struct Loader {
         not_a_section(k, r, "bodies");
         check_name(k, "body");
         need_map(v, k.scalar, "{mass: m, inertia: {disk: r}, position: [x, y], angle: phi}");
-        only_keys(v, "body '" + k.scalar + "'", {"mass", "inertia", "position", "angle", "points", "parts"});
+        only_keys(v, "body '" + k.scalar + "'", {"mass", "inertia", "position", "angle", "points", "parts", "drawn_as"});
         BodyDef b;
         b.name = k.scalar;
         b.pos = k.pos;
@@ -379,6 +399,7 @@ struct Loader {
         b.x = x;
         b.y = y;
         if (auto* a = v.get("angle")) b.angle = text(*a, "angle", "angle: theta");
+        if (auto* d = v.get("drawn_as")) b.drawn_as = drawn_as(*d);
         if (auto* pts = v.get("points")) {
           need_map(*pts, "points", "points: {A: [l/2, 0]}");
           for (auto& [pk, pv] : pts->entries) {

@@ -189,3 +189,12 @@ TEST_CASE("a torsion spring is drawn round the pin its body turns about, not rou
   }
   CHECK(points > 10);
 }
+
+TEST_CASE("drawn_as: the bouncing ball, a particle, drawn as a circle of its radius r = 0.03 m", "[draw]") {
+  // the scene gives the ball's radius (drawn_as: {circle: r}); its centre at y = h + r at state 1
+  const auto d = drawn("derivations/impact/bouncing_ball.yaml", 0);
+  CHECK(d.f.has_circle(0, 1.2 + 0.03, 0.03));
+  // and no block: no polygon among the ball's shapes
+  for (const auto& sh : d.f.shapes())
+    if (sh.owner == "body ball") CHECK(sh.kind != kd::Figure::Shape::Polygon);
+}

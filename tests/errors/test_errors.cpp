@@ -1036,3 +1036,26 @@ TEST_CASE("inputs the fuzzer found (each once a hang in yaml-cpp) end with one l
   }
   CHECK(n >= 9);
 }
+
+TEST_CASE("drawn_as: a circle or a rectangle of lengths, for a body whose inertia has no outline", "[errors][draw]") {
+  // the block with a length R to draw it by
+  auto ball = [](const std::string& drawn) {
+    return edit(block("    inertia: particle\n", "    inertia: particle\n" + drawn), "  v1: 3 m/s\n", "  v1: 3 m/s\n  R: 0.1 m\n");
+  };
+  CHECK_FALSE(error_of(ball("    drawn_as: {circle: R}\n")));
+  CHECK_FALSE(error_of(ball("    drawn_as: {rectangle: [2*R, R]}\n")));
+  auto t = ball("    drawn_as: {triangle: R}\n");
+  expect_error(t, at(t, "{triangle"), "'drawn_as' names one outline: a circle or a rectangle", "drawn_as: {circle: R}");
+  auto t2 = ball("    drawn_as: {circle: beta}\n");
+  expect_error(t2, at(t2, "beta}"), "'drawn_as' is a pure number (or an angle) but must be in m", "a drawn size is a length");
+  auto t3 = ball("    drawn_as: {circle: -R}\n");
+  expect_error(t3, at(t3, "-R}"), "the size '-R' of circle");
+  auto t4 = ball("    drawn_as: {rectangle: R}\n");
+  expect_error(t4, at(t4, "R}\n"), "rectangle");
+  auto t5 = ball("    drawn_as: circle\n");
+  expect_error(t5, at(t5, "circle\n"), "'drawn_as' names one outline");
+  // a rod is drawn as a rod: refused at its line
+  auto t6 = rod("    inertia: {slender_rod: l}\n", "    inertia: {slender_rod: l}\n    drawn_as: {circle: l}\n");
+  expect_error(t6, at(t6, "circle"), "body 'rod' is drawn as its shape (slender_rod), so 'drawn_as' would draw something else",
+               "remove 'drawn_as'");
+}

@@ -54,6 +54,10 @@ struct Body {
     ex lx, ly, angle;
   };
   std::vector<Part> parts;  ///< a composite body's parts (empty for a body of one shape)
+  /// How it is drawn where its inertia has no outline (`drawn_as`): "disk" (a circle of radius
+  /// drawn_sizes[0]) or "plate" (a rectangle), "" for its inertia's own shape. Drawing only.
+  std::string drawn_shape;
+  std::vector<ex> drawn_sizes;
   /// The lengths that size it, for drawing and time scales: its shape's sizes, or a composite
   /// body's parts' sizes and their centres' offsets from G.
   std::vector<ex> lengths() const {

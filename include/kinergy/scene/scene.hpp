@@ -68,6 +68,9 @@ struct BodyDef {
   std::optional<Text> angle;
   std::vector<PointDef> points;  ///< in body axes through G (a composite body: through its reference point)
   std::vector<PartDef> parts;    ///< a composite body's parts (then mass and inertia are theirs)
+  /// `drawn_as: {circle: R}` or `{rectangle: [w, h]}`: how a body whose inertia has no outline (a
+  /// particle, a radius of gyration, a given Ī) is drawn; for drawing only
+  std::optional<InertiaDef> drawn_as;
 };
 
 /// An effect: its name, its kind and the rest of its map (checked by the model per kind).
