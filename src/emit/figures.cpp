@@ -69,6 +69,18 @@ struct Diagram {
     return true;
   }
 
+  // where a load on body b at (x, y) is drawn: there; but on a particle whose drawing it is off
+  // (the friction of a block on the cart it rides, acting at the block), at the particle's edge
+  // toward it — a particle's loads act through its centre, only their directions matter
+  std::pair<double, double> on_body(const draw::Figure& f, const draw::At& at, int b, double x, double y) const {
+    if (b < 0 || !m.bodies[static_cast<std::size_t>(b)].inertia.is_zero()) return {x, y};
+    const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+    const double gx = at(B.x), gy = at(B.y), d = std::hypot(x - gx, y - gy);
+    if (!(d > 0) || !std::isfinite(d)) return {x, y};
+    const double r = f.reach("body " + B.name, gx, gy, (x - gx) / d, (y - gy) / d);
+    return d > r ? std::pair{gx + r * (x - gx) / d, gy + r * (y - gy) / d} : std::pair{x, y};
+  }
+
   // a curved arrow round (x, y) in the sense of w (counterclockwise when positive), labelled
   void turning(draw::Figure& f, double x, double y, double w, draw::Ink ink, const std::string& text, const std::string& tex) const {
     if (!(std::fabs(w) > 0) || !std::isfinite(w) || !std::isfinite(x) || !std::isfinite(y)) return;
@@ -135,7 +147,7 @@ struct Diagram {
     for (int b : bodies) draw::body(m, at1, b, f, false);
     for (auto& [effect, p] : shown) {
       if (!in_set(p.body)) continue;
-      const double x = at1(p.arm_x), y = at1(p.arm_y);
+      const auto [x, y] = on_body(f, at1, p.body, at1(p.arm_x), at1(p.arm_y));
       // an implied support ("N_disk", the principles' name) as a textbook writes it: N with the body's
       // subscript; a load with a symbol (W, F) by it, the body's name its subscript where the
       // diagram has several bodies
@@ -160,8 +172,7 @@ struct Diagram {
         if (made_of_unknowns)
           for (const symbol& u : us) {
             // named as written, without the states an impulse is bound to ("J_hit[before,after]")
-            const std::string name = model::text(u);
-            arrow(f, x, y, at1(p.Rx.diff(u)), at1(p.Ry.diff(u)), draw::Ink::Force, name.substr(0, name.find('[')), latex(u, names));
+            arrow(f, x, y, at1(p.Rx.diff(u)), at1(p.Ry.diff(u)), draw::Ink::Force, plain_name(model::text(u)), latex(u, names));
           }
         // a known impulse (given, or a pin's: the momentum change less the others): along its solved value
         else arrow(f, x, y, solved(p.Rx), solved(p.Ry), draw::Ink::Force, effect, word);
@@ -186,8 +197,10 @@ struct Diagram {
       const bool varies = p.Fx.has(m.t) || p.Fy.has(m.t);
       const std::string text = varies ? "\u222b" + said + " dt" : said + " \u0394t";
       const std::string tex = varies ? "\\int " + word + "\\,dt" : word + "\\,\\Delta t";
-      if (!arrow(f, x, y, at1(p.Fx), at1(p.Fy), draw::Ink::Force, text, tex))
-        arrow(f, at2(p.arm_x), at2(p.arm_y), at2(p.Fx), at2(p.Fy), draw::Ink::Force, text, tex);
+      if (!arrow(f, x, y, at1(p.Fx), at1(p.Fy), draw::Ink::Force, text, tex)) {
+        const auto [x2, y2] = on_body(f, at2, p.body, at2(p.arm_x), at2(p.arm_y));
+        arrow(f, x2, y2, at2(p.Fx), at2(p.Fy), draw::Ink::Force, text, tex);
+      }
     }
     about_point(f, at1);
     return f;
@@ -201,7 +214,7 @@ struct Diagram {
     const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
     for (auto& l : loads) {
       if (l.body != b) continue;
-      const double x = solved(l.x), y = solved(l.y);
+      const auto [x, y] = on_body(f, at1, b, solved(l.x), solved(l.y));
       // (a load with a symbol by it: W, F)
       const std::string word = l.symbol.empty() ? "\\mathrm{" + tex_text(l.effect) + "}" : l.symbol;
       const std::string said = l.symbol.empty() ? l.effect : l.symbol;
@@ -211,9 +224,8 @@ struct Diagram {
         // a reaction: one arrow along each of its unknowns' directions (F = Σ u ∂F/∂u), named by u
         for (const ex& u : a.unknowns)
           if (is_a<symbol>(u) && (l.Fx.has(u) || l.Fy.has(u))) {
-            const std::string name = model::text(u);
             arrow(f, x, y, solved(l.Fx.diff(ex_to<symbol>(u))), solved(l.Fy.diff(ex_to<symbol>(u))), draw::Ink::Force,
-                  name.substr(0, name.find('@')), latex(u, names));
+                  plain_name(model::text(u)), latex(u, names));
           }
         continue;
       }

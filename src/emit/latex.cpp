@@ -99,6 +99,29 @@ std::string tex_at(const std::string& base, const std::string& state) {
   return base + "_{" + s + "}";
 }
 
+std::string plain_name(const std::string& full) {
+  std::string name = full.substr(0, std::min(full.find('@'), full.find('[')));
+  std::vector<std::string> parts;
+  std::string cur;
+  for (char c : name) {
+    if (c == '_') {
+      parts.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  parts.push_back(cur);
+  if (parts[0].empty()) return name;
+  // (a head of one Latin letter and a rest, as tex_name splits it: Rx → R, x)
+  auto [base, rest] = head_parts(parts[0]);
+  const bool letter = base.size() == 1;
+  std::string out = letter ? base : parts[0], subs = letter ? rest : "";
+  for (std::size_t i = 1; i < parts.size(); ++i)
+    if (!parts[i].empty()) subs += (subs.empty() ? "" : ",") + parts[i];
+  return subs.empty() ? out : out + "_" + subs;
+}
+
 std::string tex_name(const std::string& full) {
   std::string name = full, state;
   if (auto at = name.find('@'); at != std::string::npos) {

@@ -24,6 +24,11 @@ using TexSymbols = std::map<GiNaC::ex, TexSymbol, GiNaC::ex_is_less>;
 /// lost → \mathrm{lost}.
 std::string tex_name(const std::string& name);
 
+/// The same name as a drawing's label writes it (what follows its '_' set as a subscript),
+/// subscripted as tex_name does, without its states: Rx_axle → R_x,axle, J_hit[before,after] →
+/// J_hit, xA → x_A; a Greek or word head as written (theta2 → theta2).
+std::string plain_name(const std::string& name);
+
 /// TeX of a state-bound quantity: base at state S ("T", "1" → T_{1}; "L_{x}", "after" →
 /// (L_{x})_{\mathrm{after}}).
 std::string tex_at(const std::string& base_tex, const std::string& state);
