@@ -61,7 +61,11 @@ void section(emit::Sections& w, int k, const model::Analysis& a, const principle
     bool struck = false;
     for (auto& sh : ib.shown) struck = struck || sh.push.body == static_cast<int>(b);
     if (!struck) continue;
-    w.momentum_figure(a, {static_cast<int>(b)}, ib.shown, "Impulse-momentum diagram of " + m.bodies[b].name + " in the impact: its momenta before (" + SB +
+    // (the impulses on it: the diagram must draw each)
+    std::vector<std::string> held;
+    for (auto& sh : ib.shown)
+      if (sh.push.body == static_cast<int>(b) && std::find(held.begin(), held.end(), sh.effect) == held.end()) held.push_back(sh.effect);
+    w.momentum_figure(a, {static_cast<int>(b)}, ib.shown, held, "Impulse-momentum diagram of " + m.bodies[b].name + " in the impact: its momenta before (" + SB +
                                     "), plus the impulses on it, equal its momenta after (" + SA + ").");
   }
   if (!ib.momentum.empty()) {

@@ -109,7 +109,12 @@ void momentum_section(emit::Sections& w, int k, const model::Analysis& a, const 
             N("(\\bar{r} - r_{" + P + "})\\times\\hat{u}\\,(F\\cdot\\hat{u})", "(r_G - r_" + a.about()->text + ") × u (F·u)"),
             W(", with u along the line. A cord or a coupling between " + B + " and the other bodies is taken to pull along its line, through its mass centre.")});
   }
-  w.momentum_figure(a, a.bodies, mb.shown, "Impulse-momentum diagram of " + bodies + ": the momenta at " + S1 + ", plus the impulses from " + S1 +
+  // (the effects whose impulses the equations hold: the diagram must draw each)
+  std::vector<std::string> held;
+  for (auto& c : mb.components)
+    for (auto& t : c.impulses)
+      if (!t.value.is_zero() && std::find(held.begin(), held.end(), t.effect) == held.end()) held.push_back(t.effect);
+  w.momentum_figure(a, a.bodies, mb.shown, held, "Impulse-momentum diagram of " + bodies + ": the momenta at " + S1 + ", plus the impulses from " + S1 +
                                   " to " + S2 + ", equal the momenta at " + S2 + ".");
   for (auto& c : mb.components) {
     std::string base_tex, base_text, comp;

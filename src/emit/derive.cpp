@@ -94,8 +94,8 @@ private:
     d_.blocks.push_back(std::move(b));
   }
   void momentum_figure(const model::Analysis& a, const std::vector<int>& bodies, const std::vector<principles::Shown>& shown,
-                       const std::string& caption) override {
-    if (auto sheet = momentum_diagram(s_, a, bodies, shown, &d_.names)) figure(std::move(*sheet), caption);
+                       const std::vector<std::string>& held, const std::string& caption) override {
+    if (auto sheet = momentum_diagram(s_, a, bodies, shown, held, &d_.names)) figure(std::move(*sheet), caption);
   }
   void legend(const std::string& letter, const std::string& meaning) override {
     const std::string entry = letter + " " + meaning + ", ";

@@ -81,6 +81,13 @@ struct Diagram {
     return d > r ? std::pair{gx + r * (x - gx) / d, gy + r * (y - gy) / d} : std::pair{x, y};
   }
 
+  // a load that is zero (at both states): a ring at its point, "name = 0"
+  void zero(draw::Figure& f, double x, double y, const std::string& text, const std::string& tex) const {
+    if (!std::isfinite(x) || !std::isfinite(y)) return;
+    f.circle(x, y, 0.35 * g, draw::Ink::Force);
+    f.label(x, y, text + " = 0", tex + " = 0");
+  }
+
   // a curved arrow round (x, y) in the sense of w (counterclockwise when positive), labelled
   void turning(draw::Figure& f, double x, double y, double w, draw::Ink ink, const std::string& text, const std::string& tex) const {
     if (!(std::fabs(w) > 0) || !std::isfinite(w) || !std::isfinite(x) || !std::isfinite(y)) return;
@@ -147,6 +154,7 @@ struct Diagram {
     for (int b : bodies) draw::body(m, at1, b, f, false);
     for (auto& [effect, p] : shown) {
       if (!in_set(p.body)) continue;
+      f.owned_by(effect);  // (what the check of the diagram against its equations reads)
       const auto [x, y] = on_body(f, at1, p.body, at1(p.arm_x), at1(p.arm_y));
       // an implied support ("N_disk", the principles' name) as a textbook writes it: N with the body's
       // subscript; a load with a symbol (W, F) by it, the body's name its subscript where the
@@ -174,8 +182,10 @@ struct Diagram {
             // named as written, without the states an impulse is bound to ("J_hit[before,after]")
             arrow(f, x, y, at1(p.Rx.diff(u)), at1(p.Ry.diff(u)), draw::Ink::Force, plain_name(model::text(u)), latex(u, names));
           }
-        // a known impulse (given, or a pin's: the momentum change less the others): along its solved value
-        else arrow(f, x, y, solved(p.Rx), solved(p.Ry), draw::Ink::Force, effect, word);
+        // a known impulse (given, or a pin's: the momentum change less the others): along its solved
+        // value; a ring at its point where it is zero (a pin struck at the centre of percussion)
+        else if (!arrow(f, x, y, solved(p.Rx), solved(p.Ry), draw::Ink::Force, effect, word))
+          zero(f, x, y, effect, word);
         continue;
       }
       if (!p.M.is_zero()) {
@@ -199,9 +209,10 @@ struct Diagram {
       const std::string tex = varies ? "\\int " + word + "\\,dt" : word + "\\,\\Delta t";
       if (!arrow(f, x, y, at1(p.Fx), at1(p.Fy), draw::Ink::Force, text, tex)) {
         const auto [x2, y2] = on_body(f, at2, p.body, at2(p.arm_x), at2(p.arm_y));
-        arrow(f, x2, y2, at2(p.Fx), at2(p.Fy), draw::Ink::Force, text, tex);
+        if (!arrow(f, x2, y2, at2(p.Fx), at2(p.Fy), draw::Ink::Force, text, tex)) zero(f, x, y, said, word);
       }
     }
+    f.owned_by("");
     about_point(f, at1);
     return f;
   }
@@ -214,6 +225,7 @@ struct Diagram {
     const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
     for (auto& l : loads) {
       if (l.body != b) continue;
+      f.owned_by(l.effect);
       const auto [x, y] = on_body(f, at1, b, solved(l.x), solved(l.y));
       // (a load with a symbol by it: W, F)
       const std::string word = l.symbol.empty() ? "\\mathrm{" + tex_text(l.effect) + "}" : l.symbol;
@@ -231,6 +243,7 @@ struct Diagram {
       }
       arrow(f, x, y, solved(l.Fx), solved(l.Fy), draw::Ink::Force, said, word);
     }
+    f.owned_by("");
     return f;
   }
 
@@ -248,7 +261,31 @@ struct Diagram {
   }
 };
 
+// the supports that act on the set from outside it: a pin, a track or a relation with a party in
+// the set and the other not (the ground, a fixed point, a body left out)
+std::vector<std::string> outside_supports(const model::Model& m, const std::vector<int>& bodies) {
+  auto in = [&](int b) { return b >= 0 && std::find(bodies.begin(), bodies.end(), b) != bodies.end(); };
+  std::vector<std::string> out;
+  for (auto& e : m.effects) {
+    const auto r = e.reaction(m);
+    if (!r || r->kind == model::Reaction::Kind::Contact) continue;  // (a contact acts in its impacts only: among the terms there)
+    if (in(r->a.body) != in(r->b.body)) out.push_back(e.name);
+  }
+  return out;
+}
+
 }  // namespace
+
+void check_diagram(const draw::Sheet& sheet, std::size_t panel, const std::vector<std::string>& held, const std::string& what) {
+  std::string missing;
+  for (const std::string& e : held) {
+    const auto& shapes = sheet.panel(panel).shapes();
+    if (std::none_of(shapes.begin(), shapes.end(), [&](const draw::Figure::Shape& sh) { return sh.owner == e; }))
+      missing += (missing.empty() ? "'" : ", '") + e + "'";
+  }
+  if (!missing.empty())
+    throw std::logic_error("the " + what + " does not draw " + missing + ", which its equations hold (or which acts on it from outside its set)");
+}
 
 std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analysis& a, const principles::BodyAcceleration& acc,
                                            const std::vector<principles::BodyLoad>& loads, const TexSymbols* names) {
@@ -268,11 +305,18 @@ std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analy
   sheet.add(d.free_body(body, loads), "free-body diagram");
   sheet.then("=", "=");
   sheet.add(d.kinetic(acc), "kinetic diagram");
+  // every load of its equations on the body (a force or a couple), and its supports from outside
+  std::vector<std::string> held = outside_supports(m, bodies);
+  for (auto& l : loads)
+    if (l.body == body && !(l.Fx.is_zero() && l.Fy.is_zero() && l.M.is_zero()) && std::find(held.begin(), held.end(), l.effect) == held.end())
+      held.push_back(l.effect);
+  check_diagram(sheet, 0, held, "free-body diagram of " + m.bodies[static_cast<std::size_t>(body)].name);
   return sheet;
 }
 
 std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Analysis& a, const std::vector<int>& bodies,
-                                            const std::vector<principles::Shown>& shown, const TexSymbols* names) {
+                                            const std::vector<principles::Shown>& shown, const std::vector<std::string>& held,
+                                            const TexSymbols* names) {
   const model::Model& m = s.model;
   Diagram d{s, m, a, bodies, names, parameter_values(s), {}, {}};
   // each state at its own positions; a coordinate one of them does not fix (an angle the problem
@@ -299,6 +343,12 @@ std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Anal
   sheet.add(d.impulses(shown), a.instant() ? "impulses in the impact" : "impulses from " + S1 + " to " + S2);
   sheet.then("=", "=");
   sheet.add(d.momenta(d.at2), "momenta at " + S2);
+  std::vector<std::string> all = held;
+  for (auto& e : outside_supports(m, bodies))
+    if (std::find(all.begin(), all.end(), e) == all.end()) all.push_back(e);
+  std::string names_of;
+  for (int b : bodies) names_of += (names_of.empty() ? "" : ", ") + m.bodies[static_cast<std::size_t>(b)].name;
+  check_diagram(sheet, 1, all, "impulse-momentum diagram of " + names_of + " from state " + S1 + " to " + S2);
   return sheet;
 }
 

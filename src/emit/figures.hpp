@@ -22,7 +22,14 @@ std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string
 /// effect's at its point, named; an unknown reaction by its unknowns), the momenta at its second
 /// state. `names`: TeX names of symbols that need them. None when a state cannot be drawn.
 std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Analysis& a, const std::vector<int>& bodies,
-                                          const std::vector<principles::Shown>& shown, const TexSymbols* names);
+                                          const std::vector<principles::Shown>& shown, const std::vector<std::string>& held,
+                                          const TexSymbols* names);
+
+/// A diagram and its equations cannot disagree: panel `panel` of `sheet` draws each effect of
+/// `held` (the effects whose terms its equations hold, and the supports that act on its bodies
+/// from outside their set, which an equation may drop). @throws std::logic_error naming those it
+/// does not draw (a fault of kinergy's, not of the scene).
+void check_diagram(const draw::Sheet& sheet, std::size_t panel, const std::vector<std::string>& held, const std::string& what);
 
 /// Kinetics at a state, for the body of `acc`: its free-body diagram (each force of `loads` on it at its
 /// point, named — a support's reaction by its unknowns — and each couple round its mass centre)

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "../support/helpers.hpp"
@@ -10,6 +11,7 @@
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/emit/latex.hpp"
 #include "kinergy/problem.hpp"
+#include "../../src/emit/figures.hpp"
 
 namespace kd = kinergy::draw;
 
@@ -55,4 +57,33 @@ TEST_CASE("a force on a particle from a point off its drawing is drawn from the 
     }
   }
   CHECK(checked >= 2);  // the friction on the block, and on the cart
+}
+
+TEST_CASE("a diagram and its equations cannot disagree: a load the equations hold and the diagram lacks is an error", "[draw][diagram]") {
+  // a panel that draws the weight only, checked against equations that hold the weight and a pin
+  kd::Figure f;
+  f.owned_by("gravity");
+  f.arrow(0, 0, 0, -1);
+  f.owned_by("");
+  kd::Sheet sheet(f);
+  CHECK_NOTHROW(kinergy::emit::check_diagram(sheet, 0, {"gravity"}, "diagram"));
+  try {
+    kinergy::emit::check_diagram(sheet, 0, {"gravity", "pin", "cord"}, "impulse-momentum diagram of bar");
+    FAIL("no error");
+  } catch (const std::logic_error& e) {
+    CHECK(std::string(e.what()) ==
+          "the impulse-momentum diagram of bar does not draw 'pin', 'cord', which its equations hold (or which acts on it from outside its set)");
+  }
+}
+
+TEST_CASE("the centre of percussion: the pin's impulse, zero, is drawn as zero at the pin", "[draw][diagram]") {
+  // a blow at the centre of percussion (2L/3 below the pin for a bar pinned at its end) leaves the
+  // pin's impulse zero: J (L/6) = Ī ω and J = m ω L/2 give L/6 · m L/2 = m L²/12, true for any J
+  const auto d = kinergy::emit::derive(kinergy::solve_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/impact/centre_of_percussion.yaml"));
+  int found = 0;
+  for (const auto& b : d.blocks) {
+    if (!b.sheet || b.sheet->size() != 3) continue;
+    for (const auto& l : b.sheet->panel(1).labels()) found += l.text == "pin = 0";
+  }
+  CHECK(found == 1);
 }

@@ -232,8 +232,8 @@ TEST_CASE("the impact diagram of a sphere striking a pivoted bar: each arrow poi
   REQUIRE(impact);
   REQUIRE(s.balances_of<kinergy::principles::ImpactBalance>().size() == 1);
   const int bar = m.body_index("bar"), sphere = m.body_index("sphere");
-  auto bar_d = kinergy::emit::momentum_diagram(s, *impact, {bar}, s.balances_of<kinergy::principles::ImpactBalance>()[0]->shown, nullptr);
-  auto sphere_d = kinergy::emit::momentum_diagram(s, *impact, {sphere}, s.balances_of<kinergy::principles::ImpactBalance>()[0]->shown, nullptr);
+  auto bar_d = kinergy::emit::momentum_diagram(s, *impact, {bar}, s.balances_of<kinergy::principles::ImpactBalance>()[0]->shown, {}, nullptr);
+  auto sphere_d = kinergy::emit::momentum_diagram(s, *impact, {sphere}, s.balances_of<kinergy::principles::ImpactBalance>()[0]->shown, {}, nullptr);
   REQUIRE(bar_d);
   REQUIRE(sphere_d);
   REQUIRE(bar_d->size() == 3);

@@ -61,9 +61,10 @@ public:
   /// A figure, numbered in order (as `kinergy draw --figure N` finds it).
   virtual void figure(draw::Sheet sheet, const std::string& caption) = 0;
   /// The impulse–momentum diagram of `bodies` in analysis `a` showing `shown` (nothing when there
-  /// is nothing to draw).
+  /// is nothing to draw); `held`: the effects whose impulses its equations hold, each of which it
+  /// must draw (checked: emit::check_diagram).
   virtual void momentum_figure(const model::Analysis& a, const std::vector<int>& bodies, const std::vector<principles::Shown>& shown,
-                               const std::string& caption) = 0;
+                               const std::vector<std::string>& held, const std::string& caption) = 0;
   /// The free-body diagram of `body` at analysis `a`'s state equal to its kinetic diagram (nothing
   /// when there is nothing to draw).
   virtual void kinetic_figure(const model::Analysis& a, const principles::BodyAcceleration& acc, const std::vector<principles::BodyLoad>& loads,
