@@ -134,17 +134,18 @@ struct PyScene {
     in_core([&] { app::set_parameter(def, parameter, v); });
     sets.emplace_back(parameter, v);
   }
-  // (in the core) the scene at a state ("" the first) as SVG
-  std::string draw(const std::string& state) const {
+  // (in the core) the scene at a state ("" the first) as SVG; a parameter without a value at a
+  // sample value, said in `samples`
+  std::string draw(const std::string& state, std::vector<std::string>& samples) const {
     model::Model m = model::Model::build(def);
     int st = 0;
     if (!state.empty()) {
       st = m.state_index(state);
       if (st < 0) throw InputError("there is no state '" + state + "'", "name a state of the scene's 'states'");
     }
-    if (def.analyses.empty()) return draw::scene_at(m, {}, m.parameter_values(), st).svg();
+    if (def.analyses.empty()) return draw::scene_at(m, {}, draw::with_samples(m, m.parameter_values(), &samples), st).svg();
     const Solution s = solve_scene(def);
-    return draw::scene_at(s.model, s.branch.sol, parameter_values(s), st).svg();
+    return draw::scene_at(s.model, s.branch.sol, draw::with_samples(s.model, parameter_values(s), &samples), st).svg();
   }
 };
 
@@ -740,9 +741,19 @@ PYBIND11_MODULE(_kinergy, m) {
           "draw",
           [](const PyScene& s, const py::object& state) {
             const std::string st = state.is_none() ? std::string() : py::str(state).cast<std::string>();
-            return in_core([&] { return s.draw(st); });
+            std::vector<std::string> samples;
+            std::string svg = in_core([&] { return s.draw(st, samples); });
+            if (!samples.empty()) {
+              std::string list;
+              for (auto& v : samples) list += (list.empty() ? "" : ", ") + v;
+              py::module_::import("warnings").attr("warn")("drawn with sample values for the parameters that have none: " + list +
+                                                           " (give them with scene.set(NAME, VALUE))");
+            }
+            return svg;
           },
-          py::arg("state") = py::none(), sig("draw(self, state=None)", "the scene at a state (the first by default) as SVG"))
+          py::arg("state") = py::none(),
+          sig("draw(self, state=None)", "the scene at a state (the first by default) as SVG; a parameter without a value is drawn at a "
+                                        "sample value (1 in SI units), with a warning that names it"))
       .def("__repr__",
            [](const PyScene& s) {
              std::string out = "<kinergy.Scene '" + s.def.title + "' (" + s.name + ")";
@@ -758,14 +769,18 @@ PYBIND11_MODULE(_kinergy, m) {
             // and as that SVG inline in HTML, which a notebook shows first (an exported notebook
             // keeps it: nbconvert strips an image/svg+xml output's elements, not an HTML output's)
             std::string svg;
+            std::vector<std::string> samples;  // (said under the picture in the HTML)
             try {
-              svg = in_core([&] { return s.draw(""); });
+              svg = in_core([&] { return s.draw("", samples); });
             } catch (const std::exception&) {
               return py::none();  // (a scene that cannot be drawn shows as its repr)
             }
             py::dict out;
             out["image/svg+xml"] = svg;
-            out["text/html"] = "<div class=\"kinergy-scene\">" + svg + "</div>";
+            std::string note;
+            for (auto& v : samples) note += (note.empty() ? "" : ", ") + v;
+            if (!note.empty()) note = "<p><i>Drawn with sample values for the parameters that have none: " + note + ".</i></p>";
+            out["text/html"] = "<div class=\"kinergy-scene\">" + svg + note + "</div>";
             return out;
           },
           py::arg("include") = py::none(), py::arg("exclude") = py::none(),

@@ -114,6 +114,22 @@ def test_derivation_drawing_and_notebook_views():
         solution.derive("pdf")
 
 
+def test_a_scene_without_a_value_drawn_at_a_sample_value_with_a_warning():
+    # the compound pendulum with its length L a symbol: drawn at L = 1 m, said by a warning and
+    # under the notebook's picture; with L set, drawn at that value without one. Its end B at
+    # state 1 is at L (cos(-150 deg), sin(-150 deg)) (tests/draw/test_draw.cpp works it out)
+    scene = kinergy.load(os.path.join(ROOT, "tests", "data", "symbolic_pendulum.yaml"))
+    with pytest.warns(UserWarning, match="L = 1 m"):
+        svg = scene.draw()
+    assert 'data-name="bar.B" cx="-0.866025" cy="-0.5"' in svg
+    assert "Drawn with sample values for the parameters that have none: L = 1 m." in scene._repr_mimebundle_()["text/html"]
+    scene.set("L", "0.9 m")
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert 'data-name="bar.B" cx="-0.779423" cy="-0.45"' in scene.draw()
+
+
 def test_simulation_as_arrays():
     numpy = pytest.importorskip("numpy")
     run = kinergy.load(BALL).solve().simulate(until=0.6, samples=61)

@@ -1,6 +1,7 @@
 // Work–energy between two states: T₁ + V₁ + Σ U₁→₂ = T₂ + V₂ (conservation when no work is done).
 #include "common.hpp"
 #include "kinergy/principles/momentum.hpp"
+#include "../emit/figures.hpp"
 
 namespace kinergy::analyses {
 
@@ -22,7 +23,7 @@ void section(emit::Sections& w, int k, const model::Analysis& a, const principle
   // the positions at the two states with the effects that do work between them
   try {
     const std::string names = listed(b.working);
-    w.figure(draw::positions_with(m, s.branch.sol, parameter_values(s), a.from, a.to, a.bodies, b.working),
+    w.figure(draw::positions_with(m, s.branch.sol, emit::figure_values(s), a.from, a.to, a.bodies, b.working),
            "Positions at " + S1 + " and " + S2 + (names.empty() ? ", with no effect doing work" : ", with the effects that do work: " + names) + ".");
   } catch (const SceneError&) {
     // a state neither fixes: the states' figure says which

@@ -99,8 +99,15 @@ namespace {
 struct Loaded {
   std::optional<kinergy::Solution> sol;
   std::optional<kinergy::model::Model> bare;
-  explicit Loaded(const std::string& file) {
+  /// The scene, with `sets` ("NAME=VALUE", as a scene writes a value) put in.
+  explicit Loaded(const std::string& file, const std::vector<std::string>& sets = {}) {
     kinergy::scene::SceneDef def = kinergy::scene::load_file(file);
+    for (const std::string& t : sets) {
+      const std::size_t eq = t.find('=');
+      if (eq == std::string::npos || eq == 0)
+        throw kinergy::InputError("'" + t + "' does not set a parameter", "write NAME=VALUE as the scene writes a value, e.g. --set L=0.9 m");
+      kinergy::app::set_parameter(def, t.substr(0, eq), t.substr(eq + 1));
+    }
     if (def.analyses.empty()) bare = kinergy::model::Model::build(def);
     else sol = kinergy::solve_scene(def);
   }
@@ -241,6 +248,7 @@ struct VerifyCommand {
 /// `kinergy draw`: the scene at a state, or a figure of its worked solution.
 struct DrawCommand {
   std::string scene, draw_state, draw_out;
+  std::vector<std::string> sets;
   int draw_figure = 0;
 
   void add(CLI::App& app) {
@@ -251,14 +259,24 @@ struct DrawCommand {
                                               "an impulse-momentum diagram")
         ->check(CLI::Range(1, 1000000));
     draw->add_option("-o,--output", draw_out, "FILE.svg, FILE.pdf, FILE.png or FILE.tex (a TikZ picture) (default: SVG on standard output)");
+    draw->add_option("--set", sets, "NAME=VALUE: draw with parameter NAME at VALUE, as the scene writes a value ('L=0.9 m'); a parameter "
+                                    "without a value that is not set is drawn at a sample value (1 in SI units), which stderr names");
   }
 
   int run() const {
     return guarded(scene, [&]() -> int {
-      Loaded in(scene);
+      Loaded in(scene, sets);
       const kinergy::model::Model& m = in.model();
       const auto& sol = in.sol;
       if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to draw", "add a state with every coordinate");
+      // a parameter without a value: drawn at a sample value, said
+      std::vector<std::string> samples;
+      const GiNaC::exmap values = kinergy::draw::with_samples(m, sol ? kinergy::simulate::simulation_values(*sol) : m.parameter_values(), &samples);
+      if (!samples.empty()) {
+        std::string list;
+        for (auto& v : samples) list += (list.empty() ? "" : ", ") + v;
+        std::cerr << scene << ": drawn with sample values for the parameters that have none: " << list << " (give them with --set NAME=VALUE)\n";
+      }
       if (draw_figure > 0) {
         // the derivation's own figures, numbered as in its LaTeX
         if (!sol) throw kinergy::SceneError({scene, 1, 1}, "the scene has no analyses, so its worked solution has no figures", "draw it with --state");
@@ -286,7 +304,6 @@ struct DrawCommand {
           throw kinergy::SceneError({scene, 1, 1}, "there is no state '" + draw_state + "'", "name a state of the scene's 'states', or 'all'");
       }
       const GiNaC::exmap solved = sol ? sol->branch.sol : GiNaC::exmap{};
-      const GiNaC::exmap values = sol ? kinergy::simulate::simulation_values(*sol) : m.parameter_values();
       std::vector<std::string> left_out;
       const kinergy::draw::Sheet sheet = states.size() == 1 ? kinergy::draw::Sheet(kinergy::draw::scene_at(m, solved, values, states[0]))
                                                             : kinergy::draw::states_at(m, solved, values, states, &left_out);

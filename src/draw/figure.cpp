@@ -63,6 +63,10 @@ Pen pen(Ink i) {
 using namespace detail;
 
 void Figure::push(Shape s) {
+  // a place without a value (a size of a parameter that has none) is not drawn: no NaN in a picture
+  if (!std::isfinite(s.r)) return;
+  for (auto& [x, y] : s.pts)
+    if (!std::isfinite(x) || !std::isfinite(y)) return;
   s.owner = owner_;
   shapes_.push_back(std::move(s));
 }
@@ -168,6 +172,7 @@ bool Figure::has_circle(double cx, double cy, double r) const {
 }
 
 void Figure::label(double x, double y, const std::string& text, const std::string& tex) {
+  if (!std::isfinite(x) || !std::isfinite(y)) return;
   // the same name at the same place once ("O" of the ground and "O" of the bar pinned there)
   for (const Label& l : labels_)
     if (l.text == text && std::hypot(l.x - x, l.y - y) <= 0.25 * glyph()) return;
@@ -653,6 +658,27 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
   }
   o << "\\end{tikzpicture}\n";
   return o.str();
+}
+
+exmap with_samples(const model::Model& m, exmap values, std::vector<std::string>* stated) {
+  auto number = [](const ex& e) {
+    try {
+      return is_a<numeric>(e.evalf());
+    } catch (const std::exception&) {
+      return false;
+    }
+  };
+  exmap samples;
+  for (auto& p : m.params) {
+    auto it = values.find(p.sym);
+    if (it != values.end() && number(it->second.subs(values))) continue;
+    if (it != values.end() && p.unknown) continue;  // solved in terms of others: follows their samples
+    samples[p.sym] = 1;
+    if (stated) stated->push_back(p.name + " = 1" + (units::si_name(p.dim).empty() ? "" : " " + units::si_name(p.dim)));
+  }
+  for (auto& [k, v] : values) v = v.subs(samples);
+  for (auto& [k, v] : samples) values[k] = v;
+  return values;
 }
 
 At state_values(const model::Model& m, const exmap& solved, const exmap& params, int state, const At* otherwise) {

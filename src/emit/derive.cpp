@@ -46,7 +46,14 @@ void symbols_in(const ex& e, std::vector<ex>& out) {
 class Builder : public Sections {
 public:
   Builder(const Solution& s, const scene::SceneDef& def, const DeriveOptions& o)
-      : s_(s), m_(s.model), def_(def), o_(o), given_(s.model.given_values()), tag_of_(s.equations.size()) {}
+      : s_(s), m_(s.model), def_(def), o_(o), given_(s.model.given_values()), tag_of_(s.equations.size()) {
+    // the figures of a scene whose parameters have no values are drawn at sample values: each
+    // caption says which
+    std::vector<std::string> samples;
+    figure_values(s, &samples);
+    for (auto& v : samples) samples_ += (samples_.empty() ? "" : ", ") + v;
+    if (!samples_.empty()) samples_ = " Drawn with sample values for the parameters that have none: " + samples_ + ".";
+  }
 
   Derivation run() {
     d_.title = m_.title;
@@ -78,6 +85,7 @@ private:
   exmap given_;
   std::vector<std::string> tag_of_;  ///< tag of each equation of s_.equations where first shown
   int figures_ = 0;
+  std::string samples_;  ///< " Drawn with sample values …: L = 1 m." when some parameter has no value
   std::string legend_;  ///< the tags the analysis kinds add ("N Newton's second law at a state, ")
 
   // --- what an analysis kind writes its section with (Sections: called through it) ------------
@@ -89,7 +97,7 @@ private:
   void figure(draw::Sheet sheet, const std::string& caption) override {
     // numbered in order, as `kinergy draw --figure N` finds them
     ++figures_;
-    Block b{Block::Kind::Figure, "Figure " + std::to_string(figures_) + ": " + caption, {}, {}, {}, {}, nullptr};
+    Block b{Block::Kind::Figure, "Figure " + std::to_string(figures_) + ": " + caption + samples_, {}, {}, {}, {}, nullptr};
     b.sheet = std::make_shared<const draw::Sheet>(std::move(sheet));
     d_.blocks.push_back(std::move(b));
   }

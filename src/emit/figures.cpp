@@ -12,9 +12,11 @@ namespace kinergy::emit {
 
 using namespace GiNaC;
 
+exmap figure_values(const Solution& s, std::vector<std::string>* samples) { return draw::with_samples(s.model, parameter_values(s), samples); }
+
 std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string>& left_out) {
   const model::Model& m = s.model;
-  const exmap values = parameter_values(s);
+  const exmap values = figure_values(s);
   std::vector<draw::Sheet> out;
   for (std::size_t first = 0; first < m.states.size(); first += 3) {
     std::vector<int> row;
@@ -292,7 +294,7 @@ std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analy
   const int body = acc.body;
   const model::Model& m = s.model;
   const std::vector<int> bodies{body};
-  Diagram d{s, m, a, bodies, names, parameter_values(s), {}, {}};
+  Diagram d{s, m, a, bodies, names, figure_values(s), {}, {}};
   try {
     d.at1 = draw::state_values(m, s.branch.sol, d.params, a.from);
   } catch (const SceneError&) {
@@ -318,7 +320,7 @@ std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Anal
                                             const std::vector<principles::Shown>& shown, const std::vector<std::string>& held,
                                             const TexSymbols* names) {
   const model::Model& m = s.model;
-  Diagram d{s, m, a, bodies, names, parameter_values(s), {}, {}};
+  Diagram d{s, m, a, bodies, names, figure_values(s), {}, {}};
   // each state at its own positions; a coordinate one of them does not fix (an angle the problem
   // never needs) at the other's
   std::optional<draw::At> a1, a2;

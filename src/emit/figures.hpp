@@ -13,6 +13,11 @@
 
 namespace kinergy::emit {
 
+/// The values a worked solution's figures are drawn with: the parameters' and the solved
+/// unknowns', and a sample value for each parameter without one (draw::with_samples), said in
+/// `samples`.
+GiNaC::exmap figure_values(const Solution& s, std::vector<std::string>* samples = nullptr);
+
 /// The scene at each of its states, at most three to a sheet; `left_out` gets the states that do
 /// not fix every coordinate.
 std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string>& left_out);
