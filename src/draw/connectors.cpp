@@ -295,6 +295,20 @@ struct Reader {
     }
     for (auto& c : out.cords)
       if (m.bodies[static_cast<std::size_t>(c.drum)].shape == "gyration") out.rim[c.drum] = std::max(out.rim[c.drum], c.r);
+    // where its loads and supports act on it: a tooth force at the pitch radius, a brake's shoe
+    auto reach_to = [&](const model::PointRef& p) {
+      if (p.body < 0 || m.bodies[static_cast<std::size_t>(p.body)].shape != "gyration") return;
+      auto [px, py] = at.point(m.position(p));
+      const double d = std::hypot(px - gx(p.body), py - gy(p.body));
+      if (std::isfinite(d) && d > 0) out.rim[p.body] = std::max(out.rim[p.body], d);
+    };
+    for (auto& e : m.effects) {
+      for (const model::Load& l : e.loads(m)) reach_to(l.at);
+      if (const auto r = e.reaction(m)) {
+        reach_to(r->a);
+        reach_to(r->b);
+      }
+    }
     for (auto& g : out.meshes)
       for (auto [b, r] : {std::pair{g.a, g.ra}, std::pair{g.b, g.rb}})
         if (m.bodies[static_cast<std::size_t>(b)].shape == "gyration") out.rim[b] = std::max(out.rim[b], r);
@@ -398,6 +412,8 @@ void draw_implied(const model::Model& m, const At& at, const Implied& imp, Figur
 }  // namespace kinergy::draw::detail
 
 namespace kinergy::draw {
+
+std::map<int, double> wheel_rims(const model::Model& m, const At& at) { return detail::implied(m, at).rim; }
 
 void line_support(const model::Model& m, const At& at, Figure& f, int b, double px, double py, double ux, double uy, double offset) {
   const double g = f.glyph(), nx = -uy, ny = ux;

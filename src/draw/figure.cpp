@@ -740,10 +740,14 @@ void outline(const At& at, const std::string& shape_name, const std::vector<ex>&
     case model::Outline::Round:
     case model::Outline::Gyration: {
       // a wheel known by its radius of gyration k alone: its rim at `rim` (a cord's drum, a
-      // pitch circle), else that of the uniform disk of that k, R = √2 k; k itself dashed
-      const double R = shape.outline == model::Outline::Round ? a : (rim > 0 ? rim : std::sqrt(2.0) * a);
+      // pitch circle), else that of the uniform disk of that k, R = √2 k; k itself dashed. No
+      // wheel's rim is inside k (k ≤ R, a thin ring's k = R): what acts inside it acts on a hub
+      // or a drum, drawn as its own circle
+      const bool gyration = shape.outline == model::Outline::Gyration;
+      const double R = !gyration ? a : (rim >= a ? rim : std::sqrt(2.0) * a);
       f.circle(gx, gy, R, Ink::Body, true);
-      if (shape.outline == model::Outline::Gyration) f.circle(gx, gy, a, Ink::Hidden);
+      if (gyration) f.circle(gx, gy, a, Ink::Hidden);
+      if (gyration && rim > 0 && rim < a) f.circle(gx, gy, rim, Ink::Body);
       auto [x2, y2] = world(a, 0);
       f.line(gx, gy, x2, y2, Ink::Thin);  // the reference line: the body's angle
       break;

@@ -42,6 +42,12 @@ struct Diagram {
   exmap params;
   draw::At at1, at2;
   double g = 0, len = 0;  // glyph, and the length every arrow is drawn with (directions only)
+  std::map<int, double> rims = {};  // a wheel known by k: its rim as the scene drawing has it (a pitch circle)
+
+  void body(draw::Figure& f, const draw::At& at, int b) const {
+    const auto r = rims.find(b);
+    draw::body(m, at, b, f, false, r == rims.end() ? 0 : r->second);
+  }
 
   bool in_set(int b) const { return b < 0 || std::find(bodies.begin(), bodies.end(), b) != bodies.end(); }
 
@@ -132,7 +138,7 @@ struct Diagram {
     f.set_glyph(g);
     const double p_max = largest_momentum(), longest = 1.4 * len;
     for (int b : bodies) {
-      draw::body(m, at, b, f, false);
+      body(f, at, b);
       const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
       const double x = at(B.x), y = at(B.y);
       const double p = momentum(at, b);
@@ -153,7 +159,7 @@ struct Diagram {
   draw::Figure impulses(const std::vector<principles::Shown>& shown) const {
     draw::Figure f;
     f.set_glyph(g);
-    for (int b : bodies) draw::body(m, at1, b, f, false);
+    for (int b : bodies) body(f, at1, b);
     for (auto& [effect, p] : shown) {
       if (!in_set(p.body)) continue;
       f.owned_by(effect);  // (what the check of the diagram against its equations reads)
@@ -223,7 +229,7 @@ struct Diagram {
   draw::Figure free_body(int b, const std::vector<principles::BodyLoad>& loads) const {
     draw::Figure f;
     f.set_glyph(g);
-    draw::body(m, at1, b, f, false);
+    body(f, at1, b);
     const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
     for (auto& l : loads) {
       if (l.body != b) continue;
@@ -254,7 +260,7 @@ struct Diagram {
     const int b = acc.body;
     draw::Figure f;
     f.set_glyph(g);
-    draw::body(m, at1, b, f, false);
+    body(f, at1, b);
     const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
     const double x = at1(B.x), y = at1(B.y);
     arrow(f, x, y, solved(acc.ax), solved(acc.ay), draw::Ink::Momentum, "m a\u0304", "m\\bar{a}");
@@ -301,6 +307,7 @@ std::optional<draw::Sheet> kinetic_diagram(const Solution& s, const model::Analy
     return std::nullopt;
   }
   d.at2 = d.at1;
+  d.rims = draw::wheel_rims(m, d.at1);
   d.g = draw::glyph_for(m, d.at1);
   d.len = 5 * d.g;
   draw::Sheet sheet;
@@ -336,6 +343,7 @@ std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Anal
   }
   d.at1 = *a1;
   d.at2 = *a2;
+  d.rims = draw::wheel_rims(m, d.at1);
   d.g = std::max(draw::glyph_for(m, d.at1), draw::glyph_for(m, d.at2));
   d.len = 5 * d.g;
   const std::string S1 = m.states[static_cast<std::size_t>(a.from)].name, S2 = m.states[static_cast<std::size_t>(a.to)].name;

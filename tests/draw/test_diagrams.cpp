@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -86,4 +87,53 @@ TEST_CASE("the centre of percussion: the pin's impulse, zero, is drawn as zero a
     for (const auto& l : b.sheet->panel(1).labels()) found += l.text == "pin = 0";
   }
   CHECK(found == 1);
+}
+
+TEST_CASE("every derivation's impulse-momentum and free-body diagrams: each force arrow starts on a drawn body", "[draw][diagram]") {
+  // a tail T is on a body when it lies in the convex hull of the body's drawn shapes (a circle by
+  // 720 points round it, within 1e-5 of its radius): max over its points of (p - T)·n >= 0 in
+  // every direction n, to a thousandth of a glyph
+  auto on = [](const kd::Figure& f, const std::string& owner, double tx, double ty, double tol) {
+    std::vector<std::pair<double, double>> pts;
+    for (const auto& sh : f.shapes()) {
+      if (sh.owner != owner || sh.ink == kd::Ink::Dimension) continue;
+      if (sh.kind == kd::Figure::Shape::Circle)
+        for (int i = 0; i < 720; ++i) pts.push_back({sh.pts[0].first + sh.r * std::cos(i * M_PI / 360), sh.pts[0].second + sh.r * std::sin(i * M_PI / 360)});
+      else
+        pts.insert(pts.end(), sh.pts.begin(), sh.pts.end());
+    }
+    if (pts.empty()) return false;
+    for (int k = 0; k < 64; ++k) {
+      const double nx = std::cos(k * M_PI / 32), ny = std::sin(k * M_PI / 32);
+      double most = -1e300;
+      for (auto [x, y] : pts) most = std::max(most, (x - tx) * nx + (y - ty) * ny);
+      if (most < -tol) return false;
+    }
+    return true;
+  };
+  int arrows = 0;
+  std::vector<std::string> faults;
+  for (const auto& file : kt::scene_files("derivations")) {
+    const auto d = kinergy::emit::derive(kinergy::solve_file(file));
+    for (const auto& b : d.blocks) {
+      if (!b.sheet || b.sheet->size() < 2) continue;
+      // the impulses of an impulse-momentum diagram (3 panels), the forces of a free-body diagram (2)
+      const kd::Figure& f = b.sheet->panel(b.sheet->size() == 3 ? 1 : 0);
+      if (b.title.find("Positions at") != std::string::npos || b.title.find("at its states") != std::string::npos) continue;
+      std::set<std::string> bodies;
+      for (const auto& sh : f.shapes())
+        if (sh.owner.rfind("body ", 0) == 0) bodies.insert(sh.owner);
+      for (const auto& sh : f.shapes()) {
+        if (sh.kind != kd::Figure::Shape::Arrow || sh.ink != kd::Ink::Force) continue;
+        ++arrows;
+        const auto [tx, ty] = sh.pts[0];
+        const bool ok = std::any_of(bodies.begin(), bodies.end(), [&](const std::string& o) { return on(f, o, tx, ty, 1e-3 * f.glyph()); });
+        if (!ok) faults.push_back(file + ": " + b.title.substr(0, 40) + ": '" + sh.owner + "' starts at (" + std::to_string(tx) + ", " + std::to_string(ty) + "), off every body");
+      }
+    }
+  }
+  INFO(arrows << " arrows");
+  for (auto& f : faults) UNSCOPED_INFO(f);
+  CHECK(faults.empty());
+  CHECK(arrows >= 150);
 }

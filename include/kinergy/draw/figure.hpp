@@ -1,6 +1,7 @@
 /// @file figure.hpp  A figure in world coordinates (metres, y up), fitted to a page and written
 /// as SVG: the scene's bodies, points and effects drawn at a state.
 #pragma once
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -175,6 +176,10 @@ void body(const model::Model& m, const At& at, int b, Figure& f, bool points = t
 /// other given loads to the same side), at its edge there; else a guide through the point (a
 /// collar's rod).
 void line_support(const model::Model& m, const At& at, Figure& f, int b, double px, double py, double ux, double uy, double offset);
+
+/// The rim of each wheel known only by its radius of gyration, where the kinematics give it one
+/// at `at` (a cord's drum, a mesh's pitch circle): for drawing it as the scene drawing does.
+std::map<int, double> wheel_rims(const model::Model& m, const At& at);
 
 /// A glyph size that suits a drawing of these bodies at `at`: from a first drawing's extent.
 double glyph_for(const model::Model& m, const At& at);
