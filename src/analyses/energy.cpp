@@ -1,4 +1,6 @@
 // Work–energy between two states: T₁ + V₁ + Σ U₁→₂ = T₂ + V₂ (conservation when no work is done).
+#include <algorithm>
+
 #include "common.hpp"
 #include "kinergy/principles/momentum.hpp"
 #include "../emit/figures.hpp"
@@ -20,11 +22,23 @@ void section(emit::Sections& w, int k, const model::Analysis& a, const principle
   auto V = [&](const std::string& S) { return Math::notation(tex_at("V", S), text_at("V", S)); };
   std::string U_tex = "U_{" + tex_interval_sub(S1, S2) + "}", U_text = "U" + text_interval_sub(S1, S2);
 
-  // the positions at the two states with the effects that do work between them
+  // the positions at the two states with the effects that do work between them, and the supports
+  // that hold the bodies, which do none (a pin, a track, a relation with a party outside the set)
   try {
     const std::string names = listed(b.working);
-    w.figure(draw::positions_with(m, s.branch.sol, emit::figure_values(s), a.from, a.to, a.bodies, b.working),
-           "Positions at " + S1 + " and " + S2 + (names.empty() ? ", with no effect doing work" : ", with the effects that do work: " + names) + ".");
+    std::vector<std::string> drawn = b.working, supports;
+    auto in = [&](int x) { return x >= 0 && std::find(a.bodies.begin(), a.bodies.end(), x) != a.bodies.end(); };
+    for (auto& e : m.effects) {
+      const auto r = e.reaction(m);
+      if (!r || r->kind == model::Reaction::Kind::Contact || std::find(drawn.begin(), drawn.end(), e.name) != drawn.end()) continue;
+      if (in(r->a.body) != in(r->b.body)) {
+        drawn.push_back(e.name);
+        supports.push_back(e.name);
+      }
+    }
+    w.figure(draw::positions_with(m, s.branch.sol, emit::figure_values(s), a.from, a.to, a.bodies, drawn),
+             "Positions at " + S1 + " and " + S2 + (names.empty() ? ", with no effect doing work" : ", with the effects that do work: " + names) +
+                 (supports.empty() ? "" : "; and the supports, which do none: " + listed(supports)) + ".");
   } catch (const SceneError&) {
     // a state neither fixes: the states' figure says which
   }

@@ -212,7 +212,7 @@ struct Diagram {
       }
       if (p.Fx.is_zero() && p.Fy.is_zero()) continue;
       // a force: along its direction at the first state (at the second when it is zero there)
-      const bool varies = p.Fx.has(m.t) || p.Fy.has(m.t);
+      const bool varies = p.Fx.has(m.t) || p.Fy.has(m.t) || p.assumed;
       const std::string text = varies ? "\u222b" + said + " dt" : said + " \u0394t";
       const std::string tex = varies ? "\\int " + word + "\\,dt" : word + "\\,\\Delta t";
       if (!arrow(f, x, y, at1(p.Fx), at1(p.Fy), draw::Ink::Force, text, tex)) {

@@ -381,11 +381,14 @@ bool coupled_in_set(const Model& m, const Analysis& a, int b) {
 /// about a point on the normal through its centre) drop it, but the diagram shows every impulse
 /// on the set. The centre does not accelerate across its line, so N = −(ΣF·n) n at the mass centre,
 /// n normal to the line, from the known loads on the body; not shown where a load on it across
-/// the line is unknown (a declared support's reaction), where a support of it is already shown,
-/// or where it interacts with another body of the set (coupled_in_set).
+/// the line is unknown (a declared support's reaction), or where a support of it is already shown.
+/// Where the body interacts with another body of the set (coupled_in_set: a collar on its guide
+/// with a rod hanging from it), the guide answers the others' pull too, which the set's equations
+/// do not give: it is shown by its direction only (Push::assumed), against the given loads on the
+/// whole set across the line, −(Σ_set F·n) n.
 void show_line_supports(const Model& m, const Analysis& a, MomentumBalance& out) {
   for (int b : a.bodies) {
-    if (coupled_in_set(m, a, b)) continue;
+    const bool coupled = coupled_in_set(m, a, b);
     const std::string name = "N_" + m.bodies[static_cast<std::size_t>(b)].name;
     if (std::any_of(out.shown.begin(), out.shown.end(), [&](const Shown& sh) { return sh.effect == name; })) continue;
     const auto u = free_centre_line(m, b);
@@ -394,13 +397,14 @@ void show_line_supports(const Model& m, const Analysis& a, MomentumBalance& out)
     ex Fn = 0;
     bool unknown = false;
     for (auto& sh : out.shown) {
-      if (sh.push.body != b) continue;
+      if (coupled ? !in_set(a.bodies, sh.push.body) : sh.push.body != b) continue;
       if (sh.push.unknown) unknown = unknown || !vanishes(m, dot(sh.push.Rx, sh.push.Ry, nx, ny));
       else Fn += dot(sh.push.Fx, sh.push.Fy, nx, ny);
     }
     if (unknown || vanishes(m, Fn)) continue;
     Push n;
     n.body = b;
+    n.assumed = coupled;
     n.Fx = model::trig_simplify(-Fn * nx);
     n.Fy = model::trig_simplify(-Fn * ny);
     n.arm_x = m.bodies[static_cast<std::size_t>(b)].x;

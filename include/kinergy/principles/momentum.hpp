@@ -19,6 +19,7 @@ struct Push {
   ex Rx = 0, Ry = 0;
   std::string what;         ///< how a derivation names it, when not by the defaults
   std::string symbol;       ///< how a diagram writes it (its load's symbol: "W", "F"; "": the effect's name)
+  bool assumed = false;     ///< shown by its direction only: a support whose size the equations do not give (∫N dt)
   int body = -1;            ///< the body it acts on (−1: the set, where it is not one body's)
   std::vector<Condition> holds;  ///< what it took for granted (a declared direction of sliding): checked on the solution
 };
