@@ -260,6 +260,43 @@ struct Reader {
     return std::nullopt;
   }
 
+  // a named point P of body b whose place r_P = r̄ + R(φ) p keeps to a fixed line: every ∂r_P/∂q_j
+  // along one u, here and at other values of the coordinates (a straight path)
+  void points_on_lines(int b) {
+    const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+    for (auto& [name, lp] : B.points) {
+      const ex px = B.x + cos(B.angle) * lp.first - sin(B.angle) * lp.second, py = B.y + sin(B.angle) * lp.first + cos(B.angle) * lp.second;
+      double ux = 0, uy = 0;
+      bool line = true, moves = false;
+      for (double s : {0.0, 1.0, -1.3, 0.7}) {
+        At other = at;
+        for (auto& co : m.coords) other.values[co.q] = at(co.q) + 0.3 * s * (std::fabs(at(co.q)) + 0.1);
+        for (auto& co : m.coords) {
+          const double dx = other(px.diff(co.q)), dy = other(py.diff(co.q)), d = std::hypot(dx, dy);
+          if (!std::isfinite(d) || d < 1e-12) continue;
+          if (!moves) ux = dx / d, uy = dy / d, moves = true;
+          line = line && std::fabs(dx * uy - dy * ux) <= 1e-9 * d;
+        }
+      }
+      if (!moves || !line || px.has(m.t) || py.has(m.t)) continue;
+      if (held_at(b, lp)) continue;
+      const double x = at(px), y = at(py), nx = -uy, ny = ux, side = (gx(b) - x) * nx + (gy(b) - y) * ny;
+      const double s = std::fabs(side) > 1e-9 * (std::fabs(x) + std::fabs(y) + 1) ? (side > 0 ? -1 : 1) : 0;
+      out.points.push_back({b, name, x, y, ux, uy, s * nx, s * ny});
+    }
+  }
+
+  // a support the scene names at that point (body axes lp) of the body: a track on it, a pin there
+  bool held_at(int b, const std::pair<ex, ex>& lp) const {
+    for (auto& e : m.effects) {
+      const auto r = e.reaction(m);
+      if (!r) continue;
+      for (const model::PointRef* p : {&r->a, &r->b})
+        if (p->body == b && !p->world_place && (p->lx - lp.first).expand().is_zero() && (p->ly - lp.second).expand().is_zero()) return true;
+    }
+    return false;
+  }
+
   void read() {
     const Eigen::MatrixXd N = allowed_rates(m, at);
     const int nb = static_cast<int>(m.bodies.size());
@@ -293,6 +330,8 @@ struct Reader {
         if (std::isfinite(cx) && std::isfinite(cy)) out.hangs.push_back({b, cx, cy});
       }
     }
+    for (int b = 0; b < nb; ++b)
+      if (mv[b].known && !pivot[b]) points_on_lines(b);
     for (auto& c : out.cords)
       if (m.bodies[static_cast<std::size_t>(c.drum)].shape == "gyration") out.rim[c.drum] = std::max(out.rim[c.drum], c.r);
     // where its loads and supports act on it: a tooth force at the pitch radius, a brake's shoe
@@ -386,6 +425,15 @@ void draw_implied(const model::Model& m, const At& at, const Implied& imp, Figur
     const model::Body& B = m.bodies[static_cast<std::size_t>(l.body)];
     f.owned_by("support");
     line_support(m, at, f, l.body, at(B.x), at(B.y), l.ux, l.uy, l.offset);
+  }
+  for (auto& p : imp.points) {
+    if (!shown(bodies, {p.body})) continue;
+    // a surface through the point along its line, hatched away from the body; a slot where the
+    // body's centre is on the line itself
+    const double L = 4 * g;
+    f.owned_by("support");
+    if (p.nx == 0 && p.ny == 0) f.line(p.px - L * p.ux, p.py - L * p.uy, p.px + L * p.ux, p.py + L * p.uy, Ink::Support);
+    else f.surface(p.px - L * p.ux, p.py - L * p.uy, p.px + L * p.ux, p.py + L * p.uy, p.nx, p.ny);
   }
   for (auto& h : imp.hangs) {
     if (!shown(bodies, {h.body})) continue;

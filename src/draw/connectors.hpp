@@ -41,6 +41,15 @@ struct Implied {
   std::vector<Mesh> meshes;
   std::vector<OnLine> lines;
   std::vector<Hang> hangs;
+  /// A named point of a body that the coordinates keep to a fixed line along (ux, uy) (a ladder's
+  /// foot on the floor, its top on the wall), held by nothing the scene names: a surface through it,
+  /// its ground on the side (nx, ny) away from the body's centre (none: a slot, both sides).
+  struct PointOnLine {
+    int body;
+    std::string point;
+    double px, py, ux, uy, nx, ny;
+  };
+  std::vector<PointOnLine> points;
   /// A body known only by its radius of gyration: the largest radius a cord or a mesh gives it.
   std::map<int, double> rim;
   /// A `constraints:` relation no connector accounts for: its index in the model's constraints,

@@ -198,3 +198,26 @@ TEST_CASE("drawn_as: the bouncing ball, a particle, drawn as a circle of its rad
   for (const auto& sh : d.f.shapes())
     if (sh.owner == "body ball") CHECK(sh.kind != kd::Figure::Shape::Polygon);
 }
+
+TEST_CASE("a ladder's ends kept on lines by the coordinates: the wall and the track drawn, hatched away from the rod", "[draw][connectors]") {
+  // sliding_rod at state 2 (theta = 30 deg, l = 1.2 m): G = (l/2 cos, -l/2 sin) = (0.5196, -0.3);
+  // B = G + R(theta)(-l/2, 0) = (0, -0.6) keeps to x = 0, A = (l cos, 0) = (1.0392, 0) to y = 0. The
+  // rod lies to the right of B's line and below A's: the wall hatched left, A's track above
+  const auto d = drawn("derivations/energy/sliding_rod.yaml", 1);
+  REQUIRE(d.imp.points.size() == 2);
+  for (const auto& p : d.imp.points) {
+    if (p.point == "B") {
+      CHECK(p.px == Approx(0).margin(1e-12));
+      CHECK(p.py == Approx(-0.6));
+      CHECK(std::fabs(p.ux) == Approx(0).margin(1e-12));
+      CHECK(p.nx == Approx(-1));
+    } else {
+      CHECK(p.point == "A");
+      CHECK(p.px == Approx(1.2 * std::cos(M_PI / 6)));
+      CHECK(p.py == Approx(0).margin(1e-12));
+      CHECK(p.ny == Approx(1));
+    }
+  }
+  CHECK(lines_along(d.f, "support", 0, -0.6, 0, 1, 1e-9) == 1);
+  CHECK(lines_along(d.f, "support", 1.0392, 0, 1, 0, 1e-9) == 1);
+}
