@@ -272,10 +272,17 @@ void place_labels(Layout& L, const std::vector<std::pair<const Figure*, std::siz
   std::vector<Layout::Box> taken = L.reserved;
   for (std::size_t i = 0; i < n; ++i) {
     const auto& P = L.places[i];
-    // the page segments of the panel's bodies and arrows
+    // the page segments of the panel's bodies (a wheel's rim by 32 chords), cords and arrows
     std::vector<std::array<double, 4>> strokes;
     for (auto& sh : panels[i].first->shapes()) {
-      if (sh.ink != Ink::Body && sh.ink != Ink::Force && sh.ink != Ink::Momentum && sh.ink != Ink::Sense) continue;
+      if (sh.ink != Ink::Body && sh.ink != Ink::Force && sh.ink != Ink::Momentum && sh.ink != Ink::Sense && sh.ink != Ink::Cord) continue;
+      if (sh.kind == Figure::Shape::Circle && sh.ink == Ink::Body) {
+        const double cx = P.tx + L.scale * sh.pts[0].first, cy = P.ty - L.scale * sh.pts[0].second, r = L.scale * sh.r;
+        for (int k = 0; k < 32; ++k)
+          strokes.push_back({cx + r * std::cos(k * M_PI / 16), cy + r * std::sin(k * M_PI / 16), cx + r * std::cos((k + 1) * M_PI / 16),
+                             cy + r * std::sin((k + 1) * M_PI / 16)});
+        continue;
+      }
       if (sh.kind == Figure::Shape::Circle || sh.kind == Figure::Shape::Mark) continue;
       for (std::size_t k = 0; k + 1 < sh.pts.size(); ++k)
         strokes.push_back({P.tx + L.scale * sh.pts[k].first, P.ty - L.scale * sh.pts[k].second, P.tx + L.scale * sh.pts[k + 1].first,

@@ -24,6 +24,16 @@ shot() {  # shot URL FILE WIDTH HEIGHT: a headless Chromium screenshot
 "$kinergy" draw derivations/energy/atwood_pulley.yaml --state all -o "$out/cords.png"
 "$kinergy" draw derivations/energy/meshed_gears.yaml --state 1 -o "$out/gears_in_mesh.png"
 "$kinergy" draw derivations/impact/pendulum_strikes_block.yaml --state 1 -o "$out/bob_and_floor.png"
+"$kinergy" draw derivations/impact/bouncing_ball.yaml --state all -o "$out/ball_as_circle.png"
+"$kinergy" draw derivations/energy/torsion_spring_bar.yaml --state 1 -o "$out/torsion_spring_at_pin.png"
+"$kinergy" draw derivations/momentum/collar_rod_pin_reaction.yaml --figure 3 -o "$out/coupled_support.png"
+"$kinergy" draw derivations/momentum/disk_axle_reaction.yaml --figure 2 -o "$out/reaction_labels.png"
+"$kinergy" draw derivations/momentum/block_slides_on_cart.yaml --figure 3 -o "$out/arrow_on_its_body.png"
+"$kinergy" draw derivations/momentum/gears_time_tooth_force.yaml --figure 2 -o "$out/tooth_impulse_on_rim.png"
+# a page of the PDF with a figure, at the size it prints (its labels at 8 pt)
+"$kinergy" derive derivations/energy/atwood_pulley.yaml --pdf "$tmp/atwood.pdf"
+pdftoppm -f 2 -l 2 -r 90 -png "$tmp/atwood.pdf" "$tmp/page"
+mv "$tmp"/page*.png "$out/pdf_page.png"
 "$kinergy" simulate derivations/impact/bouncing_ball.yaml --until 1.5 --samples 300 --animate "$tmp/ball.html" >/dev/null
 shot "file://$tmp/ball.html#frame=106" "$out/animation_frame.png" 760 760
 "$kinergy" derive derivations/momentum/disk_axle_reaction.yaml --html "$tmp/page.html"
