@@ -99,8 +99,10 @@ std::string tex_at(const std::string& base, const std::string& state) {
   return base + "_{" + s + "}";
 }
 
-std::string plain_name(const std::string& full) {
-  std::string name = full.substr(0, std::min(full.find('@'), full.find('[')));
+namespace {
+
+/// A name's parts between its '_' (omega_A → omega, A).
+std::vector<std::string> underscore_parts(const std::string& name) {
   std::vector<std::string> parts;
   std::string cur;
   for (char c : name) {
@@ -112,6 +114,14 @@ std::string plain_name(const std::string& full) {
     }
   }
   parts.push_back(cur);
+  return parts;
+}
+
+}  // namespace
+
+std::string plain_name(const std::string& full) {
+  std::string name = full.substr(0, std::min(full.find('@'), full.find('[')));
+  const std::vector<std::string> parts = underscore_parts(name);
   if (parts[0].empty()) return name;
   // (a head of one Latin letter and a rest, as tex_name splits it: Rx → R, x)
   auto [base, rest] = head_parts(parts[0]);
@@ -137,17 +147,7 @@ std::string tex_name(const std::string& full) {
     dot = true;
     name = name.substr(0, name.size() - 4);
   }
-  std::vector<std::string> parts;
-  std::string cur;
-  for (char c : name) {
-    if (c == '_') {
-      parts.push_back(cur);
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  parts.push_back(cur);
+  const std::vector<std::string> parts = underscore_parts(name);
   if (parts[0].empty()) return "\\mathrm{" + tex_text(full) + "}";
   auto [base, rest] = head_parts(parts[0]);
   std::vector<std::string> subs;
