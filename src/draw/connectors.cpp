@@ -324,7 +324,8 @@ struct Reader {
         continue;
       }
       // a bob (a particle) whose centre keeps its distance from a fixed point, held by nothing named
-      if (held(m, b) || !m.bodies[static_cast<std::size_t>(b)].inertia.is_zero()) continue;
+      // and moved with no other body (a ball at a rod's end is held by the rod)
+      if (held(m, b) || !m.bodies[static_cast<std::size_t>(b)].inertia.is_zero() || coupled(b)) continue;
       if (auto c = circle_centre(m, m.bodies[static_cast<std::size_t>(b)])) {
         const double cx = at(c->first), cy = at(c->second);
         if (std::isfinite(cx) && std::isfinite(cy)) out.hangs.push_back({b, cx, cy});
@@ -402,15 +403,21 @@ bool shown(const std::vector<int>* bodies, std::initializer_list<int> bs) {
 void draw_implied(const model::Model& m, const At& at, const Implied& imp, Figure& f, const std::vector<int>* bodies) {
   const double g = f.glyph();
   auto owner = [&](int b) { return "body " + m.bodies[static_cast<std::size_t>(b)].name; };
+  // the edge of body b's drawing toward (x, y): where a cord to it ends
+  auto edge = [&](int b, double x, double y) {
+    const double bx = at(m.bodies[static_cast<std::size_t>(b)].x), by = at(m.bodies[static_cast<std::size_t>(b)].y), d = std::hypot(x - bx, y - by);
+    if (!(d > 0)) return std::pair{bx, by};
+    const double o = std::min(d, f.reach(owner(b), bx, by, (x - bx) / d, (y - by) / d));
+    return std::pair{bx + o * (x - bx) / d, by + o * (y - by) / d};
+  };
   for (auto& c : imp.cords) {
     if (!shown(bodies, {c.drum, c.body})) continue;
     f.owned_by("cord");
     // the drum the cord winds on, where the drum's own outline is not that circle
     if (!f.has_circle(c.cx, c.cy, c.r)) f.circle(c.cx, c.cy, c.r, Ink::Body);
     // to the body's edge facing the drum
-    const double bx = at(m.bodies[static_cast<std::size_t>(c.body)].x), by = at(m.bodies[static_cast<std::size_t>(c.body)].y);
-    const double d = std::hypot(c.tx - bx, c.ty - by), o = d > 0 ? std::min(d, f.reach(owner(c.body), bx, by, (c.tx - bx) / d, (c.ty - by) / d)) : 0;
-    f.line(c.tx, c.ty, bx + o * (c.tx - bx) / std::max(d, 1e-300), by + o * (c.ty - by) / std::max(d, 1e-300), Ink::Cord);
+    const auto [ex_, ey] = edge(c.body, c.tx, c.ty);
+    f.line(c.tx, c.ty, ex_, ey, Ink::Cord);
   }
   for (auto& w : imp.meshes) {
     if (!shown(bodies, {w.a, w.b})) continue;
@@ -438,7 +445,9 @@ void draw_implied(const model::Model& m, const At& at, const Implied& imp, Figur
   for (auto& h : imp.hangs) {
     if (!shown(bodies, {h.body})) continue;
     f.owned_by("hang");
-    f.line(h.cx, h.cy, at(m.bodies[static_cast<std::size_t>(h.body)].x), at(m.bodies[static_cast<std::size_t>(h.body)].y), Ink::Cord);
+    // to the bob's edge facing the point
+    const auto [ex_, ey] = edge(h.body, h.cx, h.cy);
+    f.line(h.cx, h.cy, ex_, ey, Ink::Cord);
     f.circle(h.cx, h.cy, g * 0.45, Ink::Support);
     f.ground(h.cx, h.cy, 0, 1);
   }

@@ -167,6 +167,8 @@ TEST_CASE("a pendulum's bob with no pin: a cord from the fixed point it swings a
   const int ball = body_of(m, "ball");
   const double bx = d.at(m.bodies[ball].x), by = d.at(m.bodies[ball].y);
   CHECK(lines_along(d.f, "hang", 0, 0, bx / std::hypot(bx, by), by / std::hypot(bx, by), 1e-9) == 1);
+  // a ball at the end of a rod pinned at O keeps its distance from O too, but the rod holds it: no cord
+  CHECK(drawn("derivations/kinetics/ball_on_light_rod.yaml", 0).imp.hangs.empty());
   // the block it strikes rests on a floor (its weight presses it down): hatched below it
   bool floor = false;
   for (const auto& l : d.imp.lines) floor = floor || (l.body == body_of(m, "block") && std::fabs(l.uy) < 1e-12);
