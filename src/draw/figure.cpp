@@ -165,6 +165,23 @@ void Figure::round_surface(double cx, double cy, double r, bool outside) {
   }
 }
 
+double Figure::ring(double cx, double cy, double r) {
+  // out past each ring it comes within 0.4 glyph of (within 0.399, so that one just placed 0.4 out
+  // is clear: r only grows, and each ring moves it once at most)
+  const double g = glyph();
+  for (std::size_t pass = 0; pass <= rings_.size(); ++pass) {
+    bool moved = false;
+    for (auto& [x, y, taken] : rings_)
+      if (std::hypot(x - cx, y - cy) < 0.1 * g && std::fabs(taken - r) < 0.399 * g && taken + 0.4 * g > r) {
+        r = taken + 0.4 * g;
+        moved = true;
+      }
+    if (!moved) break;
+  }
+  rings_.push_back({cx, cy, r});
+  return r;
+}
+
 bool Figure::has_circle(double cx, double cy, double r) const {
   for (const Shape& s : shapes_)
     if (s.kind == Shape::Circle && std::fabs(s.r - r) <= 1e-3 * r && std::hypot(s.pts[0].first - cx, s.pts[0].second - cy) <= 1e-3 * r) return true;
@@ -877,7 +894,7 @@ Figure drawing(const model::Model& m, const At& at, double g, const std::vector<
         break;
       }
       if (std::isfinite(dphi) && std::fabs(dphi) > 1e-12) {
-        const double a0 = dphi > 0 ? 0.6 : 2.6, a1 = dphi > 0 ? 2.6 : 0.6, r = 1.8 * g;
+        const double a0 = dphi > 0 ? 0.6 : 2.6, a1 = dphi > 0 ? 2.6 : 0.6, r = f.ring(gx, gy, 1.8 * g);
         f.arc_arrow(gx, gy, r, a0, a1, Ink::Sense);
         f.label(gx + r * std::cos(a1), gy + r * std::sin(a1), "+" + c.name);
         break;

@@ -160,7 +160,7 @@ inline void draw_turning(const Model& m, const At& at, Figure& f, int body, doub
                          double glyphs = 1.6, bool at_pin = false) {
   const auto& B = m.bodies[static_cast<std::size_t>(body)];
   const auto pin = at_pin ? fixed_pin(m, at, body) : std::nullopt;
-  const double x = pin ? pin->first : at(B.x), y = pin ? pin->second : at(B.y), r = f.glyph() * glyphs;
+  const double x = pin ? pin->first : at(B.x), y = pin ? pin->second : at(B.y), r = f.ring(x, y, f.glyph() * glyphs);
   if (sense > 0) f.arc_arrow(x, y, r, -0.6, 3.6, ink);
   else if (sense < 0) f.arc_arrow(x, y, r, 3.6, -0.6, ink);
   else {

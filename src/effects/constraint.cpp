@@ -30,7 +30,7 @@ public:
   std::string normal;     ///< the track effect whose normal force N presses the parties together
   SourcePos limit_pos;
 
-  // the relation: a dashed link between its parties' places (a mesh, a cord), named
+  // the relation: its parties' places (a mesh's pitch circles, a cord between them), named
   void draw(const Model& m, const At& at, Figure& f) const override {
     // a party that is a body's material point at a place (a mesh's pitch point, a rolling contact):
     // the circle round that body's centre through it — a gear's pitch circle, a wheel's rolling circle
@@ -46,9 +46,10 @@ public:
         f.label(px, py, name);
       }
     }
+    // between two places of the parties (a cord from a drum's rim to a block): the cord, solid
     if (auto p = joined(m, at, a, b)) {
       const auto [x1, y1, x2, y2] = *p;
-      f.line(x1, y1, x2, y2, Ink::Hidden);
+      f.line(x1, y1, x2, y2, Ink::Cord);
       f.label((x1 + x2) / 2, (y1 + y2) / 2, name);
     }
   }

@@ -99,7 +99,7 @@ struct Diagram {
   // a curved arrow round (x, y) in the sense of w (counterclockwise when positive), labelled
   void turning(draw::Figure& f, double x, double y, double w, draw::Ink ink, const std::string& text, const std::string& tex) const {
     if (!(std::fabs(w) > 0) || !std::isfinite(w) || !std::isfinite(x) || !std::isfinite(y)) return;
-    const double r = 2.2 * g, pi = 3.14159265358979323846;
+    const double r = f.ring(x, y, 2.2 * g), pi = 3.14159265358979323846;
     const double a0 = w > 0 ? -pi / 4 : pi, a1 = w > 0 ? pi : -pi / 4;
     f.arc_arrow(x, y, r, a0, a1, ink);
     f.label(x + r * std::cos(a1), y + r * std::sin(a1), text, tex);

@@ -223,3 +223,18 @@ TEST_CASE("a ladder's ends kept on lines by the coordinates: the wall and the tr
   CHECK(lines_along(d.f, "support", 0, -0.6, 0, 1, 1e-9) == 1);
   CHECK(lines_along(d.f, "support", 1.0392, 0, 1, 0, 1e-9) == 1);
 }
+
+TEST_CASE("curved arrows round one hub: each at a radius of its own, clear of the others", "[draw][connectors]") {
+  // three arrows asked at 1.0, 1.2 and 1.2 glyphs round the origin, and one round another point:
+  // 1.0, then 1.4 (1.2 is within 0.4 of 1.0), then 1.8; the other centre's keeps its 1.2
+  kinergy::draw::Figure f;
+  f.set_glyph(1);
+  CHECK(f.ring(0, 0, 1.0) == Approx(1.0));
+  CHECK(f.ring(0, 0, 1.2) == Approx(1.4));
+  CHECK(f.ring(0, 0, 1.2) == Approx(1.8));
+  CHECK(f.ring(5, 0, 1.2) == Approx(1.2));
+  // many at one radius: each 0.4 further out, and it ends (a ring just 0.4 out is clear)
+  double last = 0;
+  for (int i = 0; i < 50; ++i) last = f.ring(0, 0, 1.0);
+  CHECK(last == Approx(1.8 + 0.4 * 50));
+}

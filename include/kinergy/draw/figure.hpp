@@ -1,6 +1,7 @@
 /// @file figure.hpp  A figure in world coordinates (metres, y up), fitted to a page and written
 /// as SVG: the scene's bodies, points and effects drawn at a state.
 #pragma once
+#include <array>
 #include <map>
 #include <string>
 #include <utility>
@@ -73,6 +74,10 @@ public:
   /// How far the shapes of `owner` reach from (x, y) along the unit vector (nx, ny) (0 when none
   /// do): where a body's edge is, for the floor under it.
   double reach(const std::string& owner, double x, double y, double nx, double ny) const;
+  /// A radius for one more curved arrow round (cx, cy), at least r: clear by 0.4 glyph of those
+  /// already taken round that centre (a couple, a bearing's friction and the sense of the
+  /// coordinate at one hub), and taken.
+  double ring(double cx, double cy, double r);
   /// Is there a circle of radius r round (cx, cy) already (within a thousandth of r)?
   bool has_circle(double cx, double cy, double r) const;
   /// A label at (x, y); not repeated where one with the same text is already within a quarter
@@ -102,6 +107,7 @@ private:
   std::vector<Label> labels_;
   double glyph_ = 0.05;
   std::string owner_;
+  std::vector<std::array<double, 3>> rings_;  ///< the curved arrows' centres and radii (ring())
   void push(Shape s);
 };
 
