@@ -136,7 +136,7 @@ struct PyScene {
   }
   // (in the core) the scene at a state ("" the first) as SVG; a parameter without a value at a
   // sample value, said in `samples`
-  std::string draw(const std::string& state, std::vector<std::string>& samples) const {
+  std::string draw(const std::string& state, std::string& samples) const {
     model::Model m = model::Model::build(def);
     int st = 0;
     if (!state.empty()) {
@@ -741,12 +741,10 @@ PYBIND11_MODULE(_kinergy, m) {
           "draw",
           [](const PyScene& s, const py::object& state) {
             const std::string st = state.is_none() ? std::string() : py::str(state).cast<std::string>();
-            std::vector<std::string> samples;
+            std::string samples;
             std::string svg = in_core([&] { return s.draw(st, samples); });
             if (!samples.empty()) {
-              std::string list;
-              for (auto& v : samples) list += (list.empty() ? "" : ", ") + v;
-              py::module_::import("warnings").attr("warn")("drawn with sample values for the parameters that have none: " + list +
+              py::module_::import("warnings").attr("warn")("drawn with sample values for the parameters that have none: " + samples +
                                                            " (give them with scene.set(NAME, VALUE))");
             }
             return svg;
@@ -769,7 +767,7 @@ PYBIND11_MODULE(_kinergy, m) {
             // and as that SVG inline in HTML, which a notebook shows first (an exported notebook
             // keeps it: nbconvert strips an image/svg+xml output's elements, not an HTML output's)
             std::string svg;
-            std::vector<std::string> samples;  // (said under the picture in the HTML)
+            std::string samples;  // (said under the picture in the HTML)
             try {
               svg = in_core([&] { return s.draw("", samples); });
             } catch (const std::exception&) {
@@ -777,9 +775,7 @@ PYBIND11_MODULE(_kinergy, m) {
             }
             py::dict out;
             out["image/svg+xml"] = svg;
-            std::string note;
-            for (auto& v : samples) note += (note.empty() ? "" : ", ") + v;
-            if (!note.empty()) note = "<p><i>Drawn with sample values for the parameters that have none: " + note + ".</i></p>";
+            const std::string note = samples.empty() ? "" : "<p><i>Drawn with sample values for the parameters that have none: " + samples + ".</i></p>";
             out["text/html"] = "<div class=\"kinergy-scene\">" + svg + note + "</div>";
             return out;
           },

@@ -27,15 +27,11 @@ void section(emit::Sections& w, int k, const model::Analysis& a, const principle
   try {
     const std::string names = listed(b.working);
     std::vector<std::string> drawn = b.working, supports;
-    auto in = [&](int x) { return x >= 0 && std::find(a.bodies.begin(), a.bodies.end(), x) != a.bodies.end(); };
-    for (auto& e : m.effects) {
-      const auto r = e.reaction(m);
-      if (!r || r->kind == model::Reaction::Kind::Contact || std::find(drawn.begin(), drawn.end(), e.name) != drawn.end()) continue;
-      if (in(r->a.body) != in(r->b.body)) {
-        drawn.push_back(e.name);
-        supports.push_back(e.name);
+    for (const std::string& e : emit::outside_supports(m, a.bodies))
+      if (std::find(drawn.begin(), drawn.end(), e) == drawn.end()) {
+        drawn.push_back(e);
+        supports.push_back(e);
       }
-    }
     w.figure(draw::positions_with(m, s.branch.sol, emit::figure_values(s), a.from, a.to, a.bodies, drawn),
              "Positions at " + S1 + " and " + S2 + (names.empty() ? ", with no effect doing work" : ", with the effects that do work: " + names) +
                  (supports.empty() ? "" : "; and the supports, which do none: " + listed(supports)) + ".");

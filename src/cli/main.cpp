@@ -270,13 +270,10 @@ struct DrawCommand {
       const auto& sol = in.sol;
       if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to draw", "add a state with every coordinate");
       // a parameter without a value: drawn at a sample value, said
-      std::vector<std::string> samples;
+      std::string samples;
       const GiNaC::exmap values = kinergy::draw::with_samples(m, sol ? kinergy::simulate::simulation_values(*sol) : m.parameter_values(), &samples);
-      if (!samples.empty()) {
-        std::string list;
-        for (auto& v : samples) list += (list.empty() ? "" : ", ") + v;
-        std::cerr << scene << ": drawn with sample values for the parameters that have none: " << list << " (give them with --set NAME=VALUE)\n";
-      }
+      if (!samples.empty())
+        std::cerr << scene << ": drawn with sample values for the parameters that have none: " << samples << " (give them with --set NAME=VALUE)\n";
       if (draw_figure > 0) {
         // the derivation's own figures, numbered as in its LaTeX
         if (!sol) throw kinergy::SceneError({scene, 1, 1}, "the scene has no analyses, so its worked solution has no figures", "draw it with --state");

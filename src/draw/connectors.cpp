@@ -156,6 +156,14 @@ struct Reader {
   Implied out;
 
   double gx(int b) const { return at(m.bodies[static_cast<std::size_t>(b)].x); }
+  // the state's values with each coordinate moved by 0.3 s (|q| + 0.1): other values of the
+  // coordinates, for a property that must hold at all of them (s = 0: the state itself)
+  static constexpr double kSamples[] = {0.0, 1.0, -1.3, 0.7};
+  At perturbed(double s) const {
+    At other = at;
+    for (auto& co : m.coords) other.values[co.q] = at(co.q) + 0.3 * s * (std::fabs(at(co.q)) + 0.1);
+    return other;
+  }
   double gy(int b) const { return at(m.bodies[static_cast<std::size_t>(b)].y); }
 
   // a cord off drum a to body b: b moves along its line u through Ḡ_b, tangent to the circle of
@@ -238,9 +246,8 @@ struct Reader {
     const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
     for (auto& [c, pos] : m.constraints) {
       std::vector<Eigen::RowVector3d> rows;
-      for (double s : {0.0, 1.0, -1.3, 0.7}) {
-        At other = at;
-        for (auto& co : m.coords) other.values[co.q] = at(co.q) + 0.3 * s * (std::fabs(at(co.q)) + 0.1);
+      for (double s : kSamples) {
+        const At other = perturbed(s);
         for (auto& co : m.coords) {
           const Eigen::RowVector3d row(other(B.x.diff(co.q)), other(B.y.diff(co.q)), -other(c.diff(co.q)));
           if (row.allFinite()) rows.push_back(row / std::max(row.norm(), 1e-300));
@@ -268,9 +275,8 @@ struct Reader {
       const ex px = B.x + cos(B.angle) * lp.first - sin(B.angle) * lp.second, py = B.y + sin(B.angle) * lp.first + cos(B.angle) * lp.second;
       double ux = 0, uy = 0;
       bool line = true, moves = false;
-      for (double s : {0.0, 1.0, -1.3, 0.7}) {
-        At other = at;
-        for (auto& co : m.coords) other.values[co.q] = at(co.q) + 0.3 * s * (std::fabs(at(co.q)) + 0.1);
+      for (double s : kSamples) {
+        const At other = perturbed(s);
         for (auto& co : m.coords) {
           const double dx = other(px.diff(co.q)), dy = other(py.diff(co.q)), d = std::hypot(dx, dy);
           if (!std::isfinite(d) || d < 1e-12) continue;

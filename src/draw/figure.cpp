@@ -684,7 +684,7 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
   return o.str();
 }
 
-exmap with_samples(const model::Model& m, exmap values, std::vector<std::string>* stated) {
+exmap with_samples(const model::Model& m, exmap values, std::string* stated) {
   auto number = [](const ex& e) {
     try {
       return is_a<numeric>(e.evalf());
@@ -698,7 +698,7 @@ exmap with_samples(const model::Model& m, exmap values, std::vector<std::string>
     if (it != values.end() && number(it->second.subs(values))) continue;
     if (it != values.end() && p.unknown) continue;  // solved in terms of others: follows their samples
     samples[p.sym] = 1;
-    if (stated) stated->push_back(p.name + " = 1" + (units::si_name(p.dim).empty() ? "" : " " + units::si_name(p.dim)));
+    if (stated) *stated += (stated->empty() ? "" : ", ") + p.name + " = 1" + (units::si_name(p.dim).empty() ? "" : " " + units::si_name(p.dim));
   }
   for (auto& [k, v] : values) v = v.subs(samples);
   for (auto& [k, v] : samples) values[k] = v;

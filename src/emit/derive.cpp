@@ -49,9 +49,7 @@ public:
       : s_(s), m_(s.model), def_(def), o_(o), given_(s.model.given_values()), tag_of_(s.equations.size()) {
     // the figures of a scene whose parameters have no values are drawn at sample values: each
     // caption says which
-    std::vector<std::string> samples;
-    figure_values(s, &samples);
-    for (auto& v : samples) samples_ += (samples_.empty() ? "" : ", ") + v;
+    figure_values(s, &samples_);
     if (!samples_.empty()) samples_ = " Drawn with sample values for the parameters that have none: " + samples_ + ".";
   }
 

@@ -12,7 +12,7 @@ namespace kinergy::emit {
 
 using namespace GiNaC;
 
-exmap figure_values(const Solution& s, std::vector<std::string>* samples) { return draw::with_samples(s.model, parameter_values(s), samples); }
+exmap figure_values(const Solution& s, std::string* samples) { return draw::with_samples(s.model, parameter_values(s), samples); }
 
 std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string>& left_out) {
   const model::Model& m = s.model;
@@ -269,8 +269,8 @@ struct Diagram {
   }
 };
 
-// the supports that act on the set from outside it: a pin, a track or a relation with a party in
-// the set and the other not (the ground, a fixed point, a body left out)
+}  // namespace
+
 std::vector<std::string> outside_supports(const model::Model& m, const std::vector<int>& bodies) {
   auto in = [&](int b) { return b >= 0 && std::find(bodies.begin(), bodies.end(), b) != bodies.end(); };
   std::vector<std::string> out;
@@ -281,8 +281,6 @@ std::vector<std::string> outside_supports(const model::Model& m, const std::vect
   }
   return out;
 }
-
-}  // namespace
 
 void check_diagram(const draw::Sheet& sheet, std::size_t panel, const std::vector<std::string>& held, const std::string& what) {
   std::string missing;

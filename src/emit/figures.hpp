@@ -16,7 +16,7 @@ namespace kinergy::emit {
 /// The values a worked solution's figures are drawn with: the parameters' and the solved
 /// unknowns', and a sample value for each parameter without one (draw::with_samples), said in
 /// `samples`.
-GiNaC::exmap figure_values(const Solution& s, std::vector<std::string>* samples = nullptr);
+GiNaC::exmap figure_values(const Solution& s, std::string* samples = nullptr);
 
 /// The scene at each of its states, at most three to a sheet; `left_out` gets the states that do
 /// not fix every coordinate.
@@ -29,6 +29,10 @@ std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string
 std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Analysis& a, const std::vector<int>& bodies,
                                           const std::vector<principles::Shown>& shown, const std::vector<std::string>& held,
                                           const TexSymbols* names);
+
+/// The supports that act on the set `bodies` from outside it: a pin, a track or a relation with a
+/// party in the set and the other not (the ground, a fixed point, a body left out).
+std::vector<std::string> outside_supports(const model::Model& m, const std::vector<int>& bodies);
 
 /// A diagram and its equations cannot disagree: panel `panel` of `sheet` draws each effect of
 /// `held` (the effects whose terms its equations hold, and the supports that act on its bodies

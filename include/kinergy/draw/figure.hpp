@@ -161,8 +161,9 @@ private:
 
 /// The values to draw with: `values` (the parameters', the solved unknowns') and, for each
 /// parameter that has no number there (a scene solved in closed form), the sample value 1 in SI
-/// units, each said in `stated` ("L = 1 m") so that the drawing says what it shows.
-GiNaC::exmap with_samples(const model::Model& m, GiNaC::exmap values, std::vector<std::string>* stated);
+/// units, said in `stated` ("L = 1 m, s = 1 m"; empty when none) so that the drawing says what it
+/// shows.
+GiNaC::exmap with_samples(const model::Model& m, GiNaC::exmap values, std::string* stated);
 
 /// The values of a state for drawing: its coordinates and rates (given, or solved in `solved`),
 /// its time, and the parameters. A coordinate the state does not fix takes its value in
