@@ -161,6 +161,7 @@ struct Selector {
         if (continuous(b, true)) cont.push_back(b);
       if (!cont.empty()) ok = cont;
     }
+    if (ok.size() > 1) ok = first_along_motion(ok);
     if (ok.size() > 1) {
       for (auto& f : m.finds) {
         auto v0 = find_value(f, ok[0]);
@@ -179,6 +180,81 @@ struct Selector {
       }
     }
     return ok.front();
+  }
+
+  /// A state defined by a condition (`where`) is the first along the motion at which it holds:
+  /// of branches that differ only in where such a state lies, the one the motion meets first —
+  /// the least time after the analysis' first state where its time is solved, else the least
+  /// way along the coordinate that moves most (each branch's state already reached: the kinetic
+  /// energy ≥ 0 on the way, and on the side the motion goes). Branches the rule cannot order
+  /// are all kept (the caller says they differ).
+  std::vector<solve::Branch> first_along_motion(const std::vector<solve::Branch>& bs) const {
+    auto val = [&](const solve::Branch& b, const ex& s) -> std::optional<numeric> {
+      try {
+        auto v = numerics::evaluate(s.subs(given_).subs(b.sol), env, 30);
+        if (v && v->is_real()) return v;
+      } catch (const std::exception&) {
+      }
+      return std::nullopt;
+    };
+    std::vector<solve::Branch> out = bs;
+    for (auto& a : m.analyses) {
+      const model::State &S1 = m.states[a.from], &S2 = m.states[a.to];
+      if (S2.where.empty() || a.type->impulsive() || out.size() < 2) continue;
+      // the measure of how far along the motion state 2 lies, on each branch
+      std::vector<std::optional<numeric>> way;
+      std::vector<ex> way_form;  // (each in the parameters, for a sweep's notes)
+      auto form = [&](const solve::Branch& b, const ex& s) {
+        try {
+          return s.subs(given_).subs(b.sol);
+        } catch (const std::exception&) {
+          return s;
+        }
+      };
+      if (!given_.count(S2.t)) {
+        for (auto& b : out) {
+          way.push_back(val(b, S2.t - S1.t));
+          way_form.push_back(form(b, S2.t - S1.t));
+        }
+      }
+      if (std::any_of(way.begin(), way.end(), [](const auto& w) { return !w; })) {
+        // no time solved: by the way the coordinates go
+        way.clear();
+        way_form.clear();
+        // the coordinate that changes most between the states, relative to its size
+        std::size_t p = 0;
+        numeric best = -1;
+        for (std::size_t i = 0; i < m.coords.size(); ++i)
+          for (auto& b : out) {
+            const auto& [q1, v1] = S1.sym.at(m.coords[i].name);
+            const auto& [q2, v2] = S2.sym.at(m.coords[i].name);
+            auto x1 = val(b, q1), x2 = val(b, q2);
+            if (!x1 || !x2) continue;
+            const numeric d = abs(*x2 - *x1) / std::max({abs(*x1), abs(*x2), numerics::tenth(30)});
+            if (d > best) best = d, p = i;
+          }
+        const auto& [q1, v1] = S1.sym.at(m.coords[p].name);
+        const auto& [q2, v2] = S2.sym.at(m.coords[p].name);
+        for (auto& b : out) {
+          auto d = val(b, q2 - q1);
+          way.push_back(d ? std::optional<numeric>(abs(*d)) : std::nullopt);
+          way_form.push_back(abs(form(b, q2 - q1)));
+        }
+      }
+      if (std::any_of(way.begin(), way.end(), [](const auto& w) { return !w || w->is_negative(); })) continue;
+      std::size_t at_least = 0;
+      for (std::size_t i = 1; i < way.size(); ++i)
+        if (*way[i] < *way[at_least]) at_least = i;
+      const numeric least = *way[at_least], tol = numerics::tenth(20) * (abs(least) + 1);
+      // (the same place within 1e-20 relative: branches that differ elsewhere stay for the caller)
+      std::vector<solve::Branch> first;
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        if (numerics::tracing()) numerics::note(way_form[i] - way_form[at_least] - tol, *way[i] - least - tol);
+        if (*way[i] - least <= tol) first.push_back(out[i]);
+      }
+      out = first;
+    }
+    return out;
   }
 
   std::string values(const std::vector<solve::Branch>& bs, const model::Find& f) const {
@@ -383,6 +459,9 @@ public:
     const principles::FrictionLimits limits = principles::static_friction_limits(m);
     sol_.friction_limits = limits.at_states;
     sol_.friction_along = limits.along;
+    // the surfaces that can only push, at the states and along the way of the analyses they act in
+    one_sided_ = principles::one_sided_limits(m);
+    sol_.one_sided_unchecked = one_sided_.unchecked;
     // states that results name but no analysis uses still obey the constraints
     for (auto& f : m.finds)
       for (std::size_t s = 0; s < m.states.size(); ++s)
@@ -409,6 +488,7 @@ private:
   std::map<ex, std::pair<ex, ex>, ex_is_less> ranges;  ///< root ranges of results that are one unknown
   std::set<int> states_in;
   int fewer_switches_ = 0;  ///< see principles::Knowledge::fewer_switches
+  principles::OneSidedLimits one_sided_;  ///< N ≥ 0 of the surfaces that only push
 
   // the constraints evaluated at the values given may be undefined there (x/tan(theta), theta = pi/2)
   static SceneError undefined(const SourcePos& pos, const std::string& what, const std::exception& err) {
@@ -662,10 +742,12 @@ private:
     try {
       sol_.branch = Selector{m, env, given}.pick(reached);  // (one branch too: its root choices are checked)
     } catch (const SceneError&) {
-      // the root choice asked for a solution the motion does not reach: say why
+      // the root choice asked for a solution the motion does not reach: say why (where no root
+      // was asked for, the choice among those reached stands as it is)
       const Selector sel{m, env, given};
+      const bool asked = std::any_of(m.finds.begin(), m.finds.end(), [](const model::Find& f) { return f.root.kind != model::RootSpec::Kind::None; });
       for (auto& [b, why] : unreached) {
-        bool meets = true;
+        bool meets = asked;
         for (auto& f : m.finds) {
           if (f.root.kind == model::RootSpec::Kind::None) continue;
           auto v = sel.find_value(f, b);
@@ -682,7 +764,6 @@ private:
     }
     // static friction is a verdict on the solution chosen, not a choice between roots
     for (const principles::FrictionLimit& l : sol_.friction_limits) {
-      if (l.pushes) hold(*l.pushes, sol_.branch);
       hold(l.holds, sol_.branch);
     }
     valid_where();
@@ -773,8 +854,14 @@ private:
       if (!energy) continue;
       const auto& bal = *energy;
       if (std::any_of(bal.works.begin(), bal.works.end(), [](const principles::Work& w) { return w.ends_only; })) continue;
-      if (!unvalued(bal.equation.residual().subs(given))) principles::check_reached(m, a, bal, values);
+      if (unvalued(bal.equation.residual().subs(given))) continue;
+      static const std::vector<principles::PushAlong> none;
+      auto along = one_sided_.along.find(static_cast<int>(ai));
+      principles::check_reached(m, a, bal, values, along == one_sided_.along.end() ? none : along->second);
     }
+    // a surface that can only push does so at every state where it acts (a state past the place
+    // the body leaves it is not reached)
+    for (const principles::OneSidedLimit& l : one_sided_.at_states) hold(l.pushes, b);
   }
 
   /// Does e hold a parameter without a value (a symbolic one, not an unknown)?
@@ -789,11 +876,11 @@ private:
   void valid_where() {
     std::vector<principles::Condition> all;
     for (const principles::FrictionLimit& l : sol_.friction_limits) {
-      if (l.pushes) all.push_back(*l.pushes);
       all.push_back(l.holds);
     }
     for (auto& bal : sol_.balances)
       for (const principles::Condition& c : bal->conditions()) all.push_back(c);
+    for (const principles::OneSidedLimit& l : one_sided_.at_states) all.push_back(l.pushes);
     for (const principles::Condition& c : all) {
       ex e;
       try {
@@ -817,6 +904,9 @@ private:
     if (unvalued(c.e.subs(given).subs(b.sol))) return;
     auto v = numerics::evaluate(c.e.subs(given).subs(b.sol), env, 30);
     if (!v || !v->is_negative()) return;
+    // a value at the edge, left negative by rounding alone (a normal force that is zero where
+    // the state is defined by it vanishing), holds
+    if (numerics::negligible(c.e.subs(given).subs(b.sol), env, 30).value_or(false)) return;
     std::string what = c.what;
     what.replace(what.find("{}"), 2, numerics::format(-*v, 6));
     if (auto at = what.find("{v}"); at != std::string::npos) {

@@ -122,6 +122,10 @@ struct Solution {
   /// The analyses over an interval along which that friction changes with the motion: the
   /// confirmation checks them along the simulated motion.
   std::vector<int> friction_along;
+  /// Surfaces that can only push whose normal force Newton's law does not give in closed form
+  /// (principles::one_sided_limits): "'floor' during …: why". N ≥ 0 is then not checked at
+  /// the states, only along the motion where a simulation confirms it.
+  std::vector<std::string> one_sided_unchecked;
 };
 
 /// Every parameter's number: the given values, and the solved values of unknown parameters (for

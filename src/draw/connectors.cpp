@@ -478,7 +478,7 @@ namespace kinergy::draw {
 
 std::map<int, double> wheel_rims(const model::Model& m, const At& at) { return detail::implied(m, at).rim; }
 
-void line_support(const model::Model& m, const At& at, Figure& f, int b, double px, double py, double ux, double uy, double offset) {
+void line_support(const model::Model& m, const At& at, Figure& f, int b, double px, double py, double ux, double uy, double offset, int pushes) {
   const double g = f.glyph(), nx = -uy, ny = ux;
   const std::string owner = b >= 0 ? "body " + m.bodies[static_cast<std::size_t>(b)].name : "";
   const double L = std::max(4 * g, 1.6 * f.reach(owner, px, py, ux, uy));
@@ -487,6 +487,12 @@ void line_support(const model::Model& m, const At& at, Figure& f, int b, double 
   // a round body at `offset` on the normal's side of its surface: the foot P − offset n̂, the
   // ground beyond it
   if (offset != 0) return surface(px - offset * nx, py - offset * ny, offset > 0 ? -1 : 1);
+  // a surface that pushes along σ n̂: at the body's edge the other way (a rod's end: the point
+  // itself), its ground behind it
+  if (pushes != 0) {
+    const double s = -pushes, o = b >= 0 ? f.reach(owner, px, py, s * nx, s * ny) : 0;
+    return surface(px + o * s * nx, py + o * s * ny, s);
+  }
   // its weight presses the body across the line, and all its given loads to the same side
   // (Σ F·n̂ of the same sign as W·n̂): it rests on a surface at its edge on that side; else a
   // guide holds it (a collar's rod: a spring or a cord pulling it across)

@@ -4,6 +4,12 @@
 // no work, and in a momentum analysis across it its reaction along the track's normal n̂ is an
 // unknown N (the impulse N n̂).
 //
+// One-sided or both ways: a surface can only push (a floor, a wall, a dome, an incline under a
+// block: `pushes: up`, `pushes: outward`), a guide holds both ways (a slot, a collar on a rod, a
+// bead on a wire: `holds: both`); a round body at an `offset` rests on the surface on its side.
+// The scene says which: no default turns a dome into a guide. A one-sided track's N is positive
+// when it pushes (its direction n̂ is the way it pushes), and N ≥ 0 is checked wherever it acts.
+//
 // Checked: the point's distance to the track, d = (r_P − r_0)·n̂ for a line through r_0, or
 // |r_P − c| − R for a circle, less the declared offset (`offset: r`: the centre of a round body
 // of radius r touching the surface — a wheel on a floor, a ball inside a bowl with offset −r),
@@ -11,7 +17,10 @@
 // constraints, and at every state once the states are solved.
 
 #include "common.hpp"
+#include <map>
+
 #include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/numeric/roots.hpp"
 #include "kinergy/numeric/trace.hpp"
 
 namespace kinergy::effects {
@@ -26,16 +35,21 @@ public:
   ex tx = 0, ty = 0;  ///< the line's direction (unit)
   ex R = 0;           ///< the circle's radius
   ex offset = 0;      ///< the point's distance from the surface (on the normal's side; circle: outward)
-  int side = 0;       ///< the sign of the offset: the side of the surface the round body is on (0: a guide)
+  int side = 0;       ///< the sign of the offset: the side of the surface the round body is on
+  /// One-sided: the sign σ of the way it pushes against the geometric normal (k × t̂ of a line,
+  /// outward for a circle); 0: a guide that holds both ways.
+  int pushes = 0;
   std::string shape;  ///< "the line through [..] along [..]", "the circle of centre [..] and radius R"
   SourcePos arg_pos;  ///< where its point is named
 
 
-  // N n̂ on the point: the coordinates keep it on the track
+  // N n̂ on the point: the coordinates keep it on the track; one-sided, n̂ = σ × the geometric
+  // normal, the way the surface pushes (N ≥ 0)
   std::optional<model::Reaction> reaction(const Model& m) const override {
     auto [nx, ny] = normal(m);
-    model::Reaction r = model::Reaction::track(p, nx, ny);
-    r.side = side;
+    const int s = pushes ? pushes : 1;
+    model::Reaction r = model::Reaction::track(p, s * nx, s * ny);
+    r.side = pushes ? 1 : 0;
     return r;
   }
 
@@ -63,10 +77,10 @@ public:
     const double off = at(offset);
     if (circle) {
       const double cx = at(x0), cy = at(y0), r = at(R);
-      if (off == 0 || !std::isfinite(off)) f.circle(cx, cy, r, Ink::Support);
-      else f.round_surface(cx, cy, r, off < 0);
+      if (!pushes) f.circle(cx, cy, r, Ink::Support);
+      else f.round_surface(cx, cy, r, pushes < 0);  // pushing inward: the body inside, the ground outside
     } else {
-      draw::line_support(m, at, f, p.body, px, py, at(tx), at(ty), std::isfinite(off) ? off : 0);
+      draw::line_support(m, at, f, p.body, px, py, at(tx), at(ty), std::isfinite(off) ? off : 0, pushes);
     }
     f.label(px, py, name);
   }
@@ -143,10 +157,84 @@ public:
 
 }  // namespace
 
+namespace {
+
+/// `pushes:` or `holds: both` (or, with an `offset`, the side the round body is on): what the
+/// track can do, as the sign σ of its push against the geometric normal n̂ (0: both ways).
+void read_sidedness(EffectReader& r, const EffectDef& ed, Track& e) {
+  const scene::Node* pushes = ed.options.get("pushes");
+  const scene::Node* holds = ed.options.get("holds");
+  const std::string fix = e.circle ? "write 'pushes: outward' (a surface the body is on: a dome), 'pushes: inward' (a surface the body is in: a "
+                                     "bowl, a loop) or 'holds: both' (a guide: a bead on a wire, a pin in a curved slot)"
+                                   : "write 'pushes: up' (or down, left, right, or a direction [nx, ny] across the line: the way the surface "
+                                     "pushes the body) or 'holds: both' (a guide: a collar on a rod, a pin in a slot)";
+  if (pushes && holds)
+    throw SceneError(holds->pos, "track '" + ed.name + "' says both 'pushes' and 'holds'", "keep one: " + fix);
+  if (holds) {
+    if (!holds->is_scalar() || holds->scalar != "both")
+      throw SceneError(holds->pos, "'holds' of track '" + ed.name + "' is 'both' (a guide that holds both ways), not '" + holds->scalar + "'",
+                       "write 'holds: both', or 'pushes: ...' for a surface that can only push");
+    e.pushes = 0;
+    return;
+  }
+  if (!pushes) {
+    // a round body at an offset rests on the surface on its side (it can only push it away)
+    if (e.side != 0) {
+      e.pushes = e.side;
+      return;
+    }
+    throw SceneError(ed.pos, "track '" + ed.name + "' does not say whether it can only push (a surface) or holds both ways (a guide)", fix);
+  }
+  int sigma = 0;
+  if (e.circle) {
+    if (!pushes->is_scalar() || (pushes->scalar != "outward" && pushes->scalar != "inward"))
+      throw SceneError(pushes->pos, "a circular track pushes 'outward' (away from its centre) or 'inward', not " +
+                                        (pushes->is_scalar() ? "'" + pushes->scalar + "'" : std::string("a direction")),
+                       fix);
+    sigma = pushes->scalar == "outward" ? 1 : -1;
+  } else {
+    // up, down, left, right, or [nx, ny]: along the line's normal n̂ = k × t̂ or against it
+    ex dx, dy;
+    static const std::map<std::string, std::pair<int, int>> words{{"up", {0, 1}}, {"down", {0, -1}}, {"left", {-1, 0}}, {"right", {1, 0}}};
+    if (pushes->is_scalar()) {
+      auto w = words.find(pushes->scalar);
+      if (w == words.end())
+        throw SceneError(pushes->pos, "'pushes' of track '" + ed.name + "' is up, down, left, right or a direction [nx, ny], not '" +
+                                          pushes->scalar + "'",
+                         fix);
+      dx = w->second.first;
+      dy = w->second.second;
+    } else {
+      std::tie(dx, dy) = r.vec(*pushes, "pushes", units::Dimension{}, false, "a direction is a pair of pure numbers: [0, 1]");
+    }
+    const ex nx = -e.ty, ny = e.tx;
+    const ex cross = model::trig_simplify(dx * ny - dy * nx), dot = model::trig_simplify(dx * nx + dy * ny);
+    auto c = r.value_of(cross, pushes->pos, "the direction the track pushes");
+    auto d = r.value_of(dot, pushes->pos, "the direction the track pushes");
+    // across the line: |d × n̂| small against |d|
+    auto len = r.value_of(model::trig_simplify(dx * dx + dy * dy), pushes->pos, "the direction the track pushes");
+    if (!c || !d || !len || len->is_zero())
+      throw SceneError(pushes->pos, "the direction track '" + ed.name + "' pushes needs a value (its parameters have none)",
+                       "give the direction as up, down, left or right, or in parameters that have values");
+    if (!cross.is_zero() && GiNaC::abs(*c) > GiNaC::sqrt(*len) * numerics::tenth(9))
+      throw SceneError(pushes->pos, "track '" + ed.name + "' pushes along its line's normal, and " +
+                                        (pushes->is_scalar() ? "'" + pushes->scalar + "'" : std::string("this direction")) + " is not across " + e.shape,
+                       "give the direction across the line, the way the surface pushes the body");
+    sigma = d->is_positive() ? 1 : -1;
+  }
+  // a round body at an offset rests on its own side: the surface pushes it that way
+  if (e.side != 0 && sigma != e.side)
+    throw SceneError(pushes->pos, "track '" + ed.name + "' pushes the round body toward the surface, but its offset puts the body on the other side",
+                     "the surface pushes the body away from itself: turn 'pushes' round, or leave it out (the offset says it)");
+  e.pushes = sigma;
+}
+
+}  // namespace
+
 std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
   auto e = make<Track>(ed);
   e->has_potential = true;  // V = 0: a smooth track does no work
-  r.only(ed, {"line", "circle", "offset"});
+  r.only(ed, {"line", "circle", "offset", "pushes", "holds"});
   e->p = r.point_ref(ed.arg, ed.kind);
   e->arg_pos = ed.arg.pos;
   if (e->p.body < 0)
@@ -195,6 +283,7 @@ std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
                          "a ball of radius r inside a bowl of radius R has offset -r with r < R");
     }
   }
+  read_sidedness(r, ed, *e);
   return e;
 }
 

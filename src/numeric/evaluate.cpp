@@ -81,7 +81,14 @@ std::optional<bool> negligible(const ex& e, const exmap& values, int digits) {
   if (is_a<add>(x))
     for (const ex& t : x)
       if (auto tv = evaluate(t, values, digits)) scale = std::max(scale, abs(*tv));
-  return abs(*v) <= scale * pow(numeric(10), 12 - digits);
+  if (abs(*v) <= scale * pow(numeric(10), 12 - digits)) return true;
+  // A value left by rounding alone, where the terms' sizes do not show it (a product of a
+  // difference of two forms of one number, sin(acos z) − √(1 − z²)): at twice the digits it
+  // shrinks with the working precision, where a value that is really there stays as it is.
+  //   noise: |v(2d + 10)| ≤ |v(d)| · 10^(−d/2)
+  auto finer = evaluate(e, values, 2 * digits + 10);
+  if (!finer) return false;
+  return abs(*finer) <= abs(*v) * pow(numeric(10), -(digits / 2));
 }
 
 namespace {

@@ -449,17 +449,9 @@ FrictionLimits static_friction_limits(const Model& m) {
                   "abs(F(" + e.name + ")@" + st + "/N(" + r->normal + ")@" + st + "), which a result can ask for",
                   r->limit_pos, "'" + e.name + "' holds without slipping at state '" + st + "', |F| <= mu_s |N(" + r->normal + ")| with mu_s = " + mu};
       c.shown = abs(Fs) / pressed;
-      // σN ≥ 0: the surface pushes (it cannot pull a body resting on it)
-      std::optional<Condition> pushes;
-      if (side)
-        pushes = Condition{side * Ns,
-                           "at state '" + st + "' the surface of '" + r->normal + "' would have to pull on the rolling body ({} N): it leaves the "
-                               "surface there, and the rolling '" + e.name + "' takes for granted does not hold",
-                           "check the loads at state '" + st + "' (a pull that lifts the body), or take the states while it still presses",
-                           r->limit_pos, "the surface of '" + r->normal + "' presses on the rolling body at state '" + st + "'"};
       // one per state (a kinetics analysis and an energy analysis ending there say the same)
       if (std::none_of(out.at_states.begin(), out.at_states.end(), [&](const FrictionLimit& x) { return x.effect == e.name && x.state == S; }))
-        out.at_states.push_back({e.name, r->normal, mu, S, c, pushes});
+        out.at_states.push_back({e.name, r->normal, mu, S, c});
     };
     for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
       const model::Analysis& a = m.analyses[ai];
@@ -500,6 +492,70 @@ FrictionLimits static_friction_limits(const Model& m) {
       const ex ratio = model::trig_simplify(FN[0] / FN[1]);
       if ((!motion_free(m, ratio) || ratio.has(m.t)) && std::find(out.along.begin(), out.along.end(), static_cast<int>(ai)) == out.along.end())
         out.along.push_back(static_cast<int>(ai));
+    }
+  }
+  return out;
+}
+
+OneSidedLimits one_sided_limits(const Model& m) {
+  OneSidedLimits out;
+  for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
+    const model::Effect& e = m.effects[ei];
+    const auto r = e.reaction(m);
+    if (!r || r->kind != Reaction::Kind::Track || r->side == 0) continue;
+    const std::string body = r->a.body >= 0 ? m.bodies[static_cast<std::size_t>(r->a.body)].name : r->a.text;
+    const ex N = m.instant_reactions.at(e.name)[0];
+    // N ≥ 0 at state S: the surface pushes there (it cannot pull a body resting on it)
+    auto at_state = [&](const ex& Ns, int S) {
+      const std::string st = m.states[static_cast<std::size_t>(S)].name;
+      if (std::any_of(out.at_states.begin(), out.at_states.end(), [&](const OneSidedLimit& x) { return x.effect == e.name && x.state == S; })) return;
+      out.at_states.push_back({e.name, S,
+                               Condition{Ns,
+                                         "at state '" + st + "' the surface of '" + e.name + "' would have to pull on " + body + " ({} N): " + body +
+                                             " leaves it before that state, and a surface can only push",
+                                         "ask for the state where it leaves, where: [\"N(" + e.name + ") = 0\"], or take state '" + st + "' before it",
+                                         e.pos, "the surface of '" + e.name + "' pushes on " + body + " at state '" + st + "' (N >= 0)"}});
+    };
+    for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
+      const model::Analysis& a = m.analyses[ai];
+      if (a.instant()) continue;  // an impact's reaction is an impulse (its sign: the impact's own check)
+      const bool instant = a.type && a.type->at_state();
+      if (instant ? e.at_state(a.from) != model::Effect::AtState::Acts : e.activity(a) != model::Effect::Activity::Whole) continue;
+      const auto has = [&](const ex& x) { return std::any_of(a.unknowns.begin(), a.unknowns.end(), [&](const ex& u) { return u.is_equal(x); }); };
+      if (instant && has(m.bind(N, a.from))) {
+        at_state(m.bind(N, a.from), a.from);  // the force the kinetics solves for
+        continue;
+      }
+      // over a duration across the set: its impulse pushes too, ∫N dt ≥ 0
+      if (auto it = a.reactions.find(e.name); !instant && it != a.reactions.end() && !it->second.empty()) {
+        const std::string S1 = m.states[static_cast<std::size_t>(a.from)].name, S2 = m.states[static_cast<std::size_t>(a.to)].name;
+        out.at_states.push_back({e.name, -1,
+                                 Condition{it->second[0],
+                                           "the impulse of '" + e.name + "' on " + body + " from state '" + S1 + "' to '" + S2 + "' would pull ({} N*s): " +
+                                               body + " leaves the surface on the way, and a surface can only push",
+                                           "check the loads and states: the motion keeps " + body + " on '" + e.name + "' only while the surface pushes",
+                                           e.pos, "the surface of '" + e.name + "' pushes on " + body + " from state '" + S1 + "' to '" + S2 + "'"}});
+      }
+      // N in closed form from Newton–Euler over the motion (or at the state), for the states'
+      // values and the way between them
+      std::vector<bool> on, held;
+      for (auto& x : m.effects) on.push_back(instant ? x.at_state(a.from) == model::Effect::AtState::Acts : x.activity(a) == model::Effect::Activity::Whole);
+      for (std::size_t k = 0; k < m.constraints.size(); ++k)
+        held.push_back(instant ? m.constraint_at(k, a.from, true) : m.constraint_activity(k, a) == model::Effect::Activity::Whole);
+      const std::string what = "the " + a.kind + " analysis" + (instant ? " at state '" + m.states[a.from].name + "'"
+                                                                         : " from state '" + m.states[a.from].name + "' to '" + m.states[a.to].name + "'");
+      ex Ng;
+      try {
+        Ng = support_forces(m, on, held, r->bodies(), {N}, what, e.pos)[0];
+      } catch (const SceneError& err) {
+        const std::string why = "'" + e.name + "' during " + what + ": " + err.problem();
+        if (std::find(out.unchecked.begin(), out.unchecked.end(), why) == out.unchecked.end()) out.unchecked.push_back(why);
+        continue;
+      }
+      at_state(m.bind(Ng, a.from), a.from);
+      if (instant) continue;
+      at_state(m.bind(Ng, a.to), a.to);
+      out.along[static_cast<int>(ai)].push_back({e.name, body, Ng, e.pos});
     }
   }
   return out;

@@ -92,15 +92,20 @@ const std::vector<Row> kTable = {
   {"constraint", "at", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]]}", true, ""},
   // static friction: the block on its rail, pushed, drives the wheel on its hub (F = m a/2 = F0/3, N = m g)
   {"constraint", "mu_s", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_s: mu, normal: rail}\n"
-                                   "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}}\n  w: {gravity: g}\n  p: {force: block, F: [F0, 0]}\n  hub: {pin: [C, wheel]}", true, ""},
+                                   "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n  w: {gravity: g}\n  p: {force: block, F: [F0, 0]}\n  hub: {pin: [C, wheel]}", true, ""},
   {"constraint", "normal", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_s: mu/10, normal: rail}\n"
-                                     "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}}\n  w: {gravity: g}\n  p: {force: block, F: [F0, 0]}\n  hub: {pin: [C, wheel]}", false, "'e' slips at state '1'"},
+                                     "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n  w: {gravity: g}\n  p: {force: block, F: [F0, 0]}\n  hub: {pin: [C, wheel]}", false, "'e' slips at state '1'"},
   {"constraint", "mu_s", "impact", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_s: mu, normal: rail}\n"
-                                   "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}}", false, "where kinergy does not check static friction"},
-  {"track", "line", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}}", true, ""},
-  {"track", "circle", "energy", "e: {track: block, circle: {centre: [0, 0], radius: R}}", false, "off the circle"},
+                                   "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}", false, "where kinergy does not check static friction"},
+  {"track", "line", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}", true, ""},
+  {"track", "circle", "energy", "e: {track: block, circle: {centre: [0, 0], radius: R}, holds: both}", false, "off the circle"},
   {"track", "offset", "energy", "e: {track: block, line: {through: [0, -r/5], along: [1, 0]}, offset: r/5}", true, ""},
-  {"track", "line", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}}", true, ""},
+  {"track", "line", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, holds: both}", true, ""},
+  // one-sided or both ways: a surface pushing the block up while a field lifts it would have to
+  // pull (refused, at the state and over the duration); a guide holds it either way
+  {"track", "pushes", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n  w: {gravity: g}", true, ""},
+  {"track", "pushes", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n  w: {gravity: g, direction: [0, 1]}", false, "would have to pull"},
+  {"track", "holds", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, holds: both}\n  w: {gravity: g, direction: [0, 1]}", true, ""},
   // on and off, every kind's: switched where the analysis does not reach it, the effect is not
   // there (the simulation runs without it too); switched inside an energy analysis, its work is
   // taken over its part (no one simulation stands for that: residuals); inside a momentum
@@ -128,8 +133,8 @@ const std::vector<Row> kTable = {
   {"cord_pull", "off", "energy", "e: {cord_pull: [block, A], P: F0, off: 2}", true, ""},
   {"constraint", "off", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], off: 2}", false, "nonlinear in several unknowns"},
   {"constraint", "off", "across", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], off: 2}", false, "switched off at state '2', inside this energy analysis"},
-  {"track", "off", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, off: 2}", true, ""},
-  {"track", "on", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, on: 2}", true, ""},
+  {"track", "off", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, holds: both, off: 2}", true, ""},
+  {"track", "on", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up, on: 2}", true, ""},
   // least values and extremes (no one motion to simulate: confirmed by the residuals)
   {"friction", "mu", "least", "e: {friction: block, mu: mu, normal: m*g}", true, "residuals"},
   {"friction", "off", "least", "e: {friction: block, mu: mu, normal: m*g, off: 1}", false, "is reached for every value of 'u0'"},

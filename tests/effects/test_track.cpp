@@ -16,22 +16,22 @@ using kt::solve_text;
 TEST_CASE("tracks that hold: the sliding rod's slots, the bowl's circle", "[effects][track]") {
   // A = (l cos theta, 0) and B = (0, -l sin theta) for every theta: on y = 0 and x = 0
   auto rod = edit(derivation("energy/sliding_rod.yaml"), "effects:\n",
-                  "effects:\n  slotA: {track: rod.A, line: {through: [0, 0], along: [1, 0]}}\n"
-                  "  slotB: {track: rod.B, line: {through: [0, 0], along: [0, 1]}}\n");
+                  "effects:\n  slotA: {track: rod.A, line: {through: [0, 0], along: [1, 0]}, holds: both}\n"
+                  "  slotB: {track: rod.B, line: {through: [0, 0], along: [0, 1]}, holds: both}\n");
   auto s = solve_text(rod);
   CHECK(kinergy::numerics::format(*kt::result(s, "omega2").si, 4) == "3.502");
   // the sphere's centre is on the circle of radius R - r about O; checked at the states (a constraint).
   // The derivation declares the bowl itself with offset -r (the sphere touches it); the same circle
   // without the offset:
-  auto bowl = edit(derivation("energy/sphere_in_bowl.yaml"), "bowl: {track: ball, circle: {centre: [0, 0], radius: R}, offset: -r}",
-                   "bowl: {track: ball, circle: {centre: [0, 0], radius: R - r}}");
+  auto bowl = edit(derivation("energy/sphere_in_bowl.yaml"), "bowl: {track: ball, circle: {centre: [0, 0], radius: R}, offset: -r, pushes: inward}",
+                   "bowl: {track: ball, circle: {centre: [0, 0], radius: R - r}, pushes: inward}");
   CHECK_NOTHROW(solve_text(bowl));
   REQUIRE_THROWS_WITH(solve_text(edit(bowl, "radius: R - r}", "radius: R}")),
                       Catch::Contains("track 'bowl': ball is 0.1 m off the circle of centre [0, 0] and radius R at state '1'"));
   // a wheel on an incline, its centre at distance r on the normal's side: the other side is 2 r off
   auto wheel = derivation("energy/rolling_disk_incline.yaml");
   CHECK_NOTHROW(solve_text(wheel));
-  REQUIRE_THROWS_WITH(solve_text(edit(wheel, "offset: r}", "offset: -r}")),
+  REQUIRE_THROWS_WITH(solve_text(edit(wheel, "offset: r, pushes: [sin(beta), cos(beta)]}", "offset: -r}")),
                       Catch::Contains("track 'incline': disk is 0.3 m off the line through [0, 0] along [cos(beta), -sin(beta)] at distance -r"));
 }
 
@@ -67,7 +67,7 @@ TEST_CASE("a track is written with one shape, a point and a direction or a centr
                       Catch::Contains("'circle' is given by its centre and radius"));
   REQUIRE_THROWS_WITH(solve_text(with("{track: rod.A, circle: {centre: [0, 0], radius: -l}}")), Catch::Contains("radius"));
   auto fixed = edit(rod, "coordinates:\n", "points:\n  O: [0, 0]\ncoordinates:\n");
-  REQUIRE_THROWS_WITH(solve_text(edit(fixed, "effects:\n", "effects:\n  slot: {track: O, line: {through: [0, 0], along: [1, 0]}}\n")),
+  REQUIRE_THROWS_WITH(solve_text(edit(fixed, "effects:\n", "effects:\n  slot: {track: O, line: {through: [0, 0], along: [1, 0]}, holds: both}\n")),
                       Catch::Contains("a track holds a point of a body, but 'O' is a fixed point"));
 }
 
@@ -85,7 +85,7 @@ coordinates:
 bodies:
   bead: {mass: m, inertia: particle, position: [R*cos(th), R*sin(th)]}
 effects:
-  ring: {track: bead, circle: {centre: [0, 0], radius: R}}
+  ring: {track: bead, circle: {centre: [0, 0], radius: R}, holds: both}
 states:
   1: {th: 0, th_dot: v0/R, t: 0}
   2: {th: pi/2, t: 1 s}
@@ -98,4 +98,40 @@ find:
   CHECK(kt::symbolically_zero(kt::result(s, "w2").closed - kt::param(s.model, "v0") / kt::param(s.model, "R")));
   REQUIRE_THROWS_WITH(solve_text(ring + "  J: \"impulse_x(ring, 1, 2)\"\n"),
                       Catch::Contains("the normal of track 'ring' turns with the motion"));
+}
+
+TEST_CASE("a track says whether it can only push or holds both ways", "[effects][track][errors]") {
+  // the sliding rod's end A on y = 0 (normal k x t = +y) and the dome of ball_leaves_dome
+  auto rod = derivation("energy/sliding_rod.yaml");
+  auto with = [&](const std::string& track) { return edit(rod, "effects:\n", "effects:\n  slot: " + track + "\n"); };
+  const std::string line = "{track: rod.A, line: {through: [0, 0], along: [1, 0]}";
+  REQUIRE_THROWS_WITH(solve_text(with(line + "}")), Catch::Contains("track 'slot' does not say whether it can only push (a surface) or holds both ways") &&
+                                                         Catch::Contains("'pushes: up'") && Catch::Contains("'holds: both'"));
+  REQUIRE_THROWS_WITH(solve_text(with(line + ", pushes: up, holds: both}")), Catch::Contains("says both 'pushes' and 'holds'"));
+  REQUIRE_THROWS_WITH(solve_text(with(line + ", holds: one}")), Catch::Contains("'holds' of track 'slot' is 'both'"));
+  REQUIRE_THROWS_WITH(solve_text(with(line + ", pushes: sideways}")), Catch::Contains("is up, down, left, right or a direction [nx, ny], not 'sideways'"));
+  REQUIRE_THROWS_WITH(solve_text(with(line + ", pushes: left}")), Catch::Contains("is not across the line through [0, 0] along [1, 0]"));
+  REQUIRE_THROWS_WITH(solve_text(with(line + ", pushes: [1, 1]}")), Catch::Contains("this direction is not across"));
+  REQUIRE_THROWS_WITH(solve_text(with(line + ", pushes: outward}")), Catch::Contains("not 'outward'"));
+  CHECK_NOTHROW(solve_text(with(line + ", pushes: [0, 3]}")));
+  CHECK_NOTHROW(solve_text(with(line + ", pushes: down}")));
+  auto dome = derivation("kinetics/ball_leaves_dome.yaml");
+  REQUIRE_THROWS_WITH(solve_text(edit(dome, "pushes: outward}", "pushes: up}")), Catch::Contains("a circular track pushes 'outward'"));
+  REQUIRE_THROWS_WITH(solve_text(edit(dome, "pushes: outward}", "pushes: [0, 1]}")), Catch::Contains("not a direction"));
+  // a round body at an offset is on its side of the surface: pushed away from it
+  auto wheel = derivation("energy/rolling_disk_incline.yaml");
+  REQUIRE_THROWS_WITH(solve_text(edit(wheel, "pushes: [sin(beta), cos(beta)]", "pushes: [-sin(beta), -cos(beta)]")),
+                      Catch::Contains("pushes the round body toward the surface"));
+  CHECK_NOTHROW(solve_text(edit(wheel, ", pushes: [sin(beta), cos(beta)]", "")));  // the offset says it
+}
+
+TEST_CASE("a one-sided track's N is positive when it pushes, a guide's along its normal", "[effects][track][kinetics]") {
+  // the bar of bar_slides_on_floor with its floor written as pushing up, and as a guide whose
+  // normal k x t points down (along [-1, 0]): N = m g/(1 + 3 cos^2(theta0)) = 4 m g/7 by hand
+  auto bar = derivation("kinetics/bar_slides_on_floor.yaml");
+  auto N = [&](const std::string& text) { return *kt::result(solve_text(text), "N1").si; };
+  const GiNaC::numeric up = N(bar);
+  CHECK(kinergy::numerics::format(up, 4) == "28.03");
+  CHECK(N(edit(bar, "along: [1, 0]}, pushes: up}", "along: [-1, 0]}, holds: both}")) == -up);
+  CHECK(N(edit(bar, "along: [1, 0]}, pushes: up}", "along: [-1, 0]}, pushes: up}")) == up);
 }

@@ -145,7 +145,7 @@ TEST_CASE("static friction: what is refused, naming what would be needed", "[kin
   REQUIRE_THROWS_WITH(with(", mu_s: mus, normal: [incline]"), Catch::Contains("'normal' names a track effect"));
   SECTION("a track that holds another body") {
     std::string two = kt::edit(base, "bodies:\n", "bodies:\n  block:\n    mass: m\n    inertia: particle\n    position: [x + r, 2*r]\n");
-    two = kt::edit(two, "  incline: {", "  rail: {track: block, line: {through: [0, 2*r], along: [1, 0]}}\n  incline: {");
+    two = kt::edit(two, "  incline: {", "  rail: {track: block, line: {through: [0, 2*r], along: [1, 0]}, pushes: up}\n  incline: {");
     two = kt::edit(two, "normal: incline}", "normal: rail}");
     REQUIRE_THROWS_WITH(solve_text(two), Catch::Contains("track 'rail' holds block, which is not a party of 'rolling'"));
   }
@@ -171,8 +171,8 @@ TEST_CASE("static friction: a surface that would have to pull, and a friction fo
   // Newton with (7/5) m (R + r) theta_ddot = m g sin(theta)). At theta = 1, theta_dot = 2.4623727572:
   // N = 2 (9.81 cos 1 - 1.1 * 2.4623727572^2) = -2.73848 N
   REQUIRE_THROWS_WITH(solve_text(ball_on_circle(false, "1 m", "5 rad/s", "2", "{theta: 1 rad, theta_dot: 2.4623727572 rad/s}", kKinetics)),
-                      Catch::Contains("at state '1' the surface of 'dome' would have to pull on the rolling body (2.73848 N)") &&
-                          Catch::Contains("it leaves the surface there"));
+                      Catch::Contains("at state '1' the surface of 'dome' would have to pull on ball (2.73848 N)") &&
+                          Catch::Contains("ball leaves it before that state, and a surface can only push"));
   // theta_dot^2 = g cos(1)/(R + r): N = 0, F = (2/7)(2)(9.81) sin 1 = 4.71705 N
   const std::string at_zero = ball_on_circle(false, "1 m", "5 rad/s", "2", "{theta: 1 rad, theta_dot: sqrt(g*cos(1)/(R + r))}", kKinetics);
   std::string err;

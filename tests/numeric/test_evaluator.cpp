@@ -7,6 +7,7 @@
 #include <cln/cln.h>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/evaluator.hpp"
@@ -206,4 +207,21 @@ TEST_CASE("native code: the tape compiled to machine code gives the tape's doubl
   CHECK_THROWS_WITH(kinergy::numerics::NativeFunction::build(t), Catch::Contains("KINERGY_CACHE"));
   CHECK(t(x.data() + 1) == std::sqrt(9.81));
   unsetenv("KINERGY_CACHE");
+}
+
+// A residual at the noise floor (issue 43, finding 2): c·(sin(acos z) − √(1 − z²)) is zero, and a
+// product shows no terms whose size would tell; at 30 digits it evaluates to ~1e-31 · c. It is
+// zero because it shrinks with the working precision; a small value that is there stays.
+TEST_CASE("negligible: rounding noise shrinks with the digits, a small value does not", "[numeric]") {
+  symbol z("z"), c("c");
+  const exmap at{{z, numeric(2, 3) + numeric(1, 7)}, {c, numeric(12)}};
+  const ex noise = c * (sin(acos(z)) - sqrt(1 - pow(z, 2)));
+  auto v = kinergy::numerics::evaluate(noise, at, 30);
+  REQUIRE(v);
+  CHECK(kinergy::numerics::negligible(noise, at, 30) == std::optional<bool>(true));
+  // the same product with a real 1e-40 in it is not zero, however small
+  const ex small = c * (sin(acos(z)) - sqrt(1 - pow(z, 2)) + numeric(1, 10) * pow(numeric(10), -39));
+  CHECK(kinergy::numerics::negligible(small, at, 30) == std::optional<bool>(false));
+  const ex couple = c * numeric(1, 1000000000000);  // 1e-12 N·m is a couple
+  CHECK(kinergy::numerics::negligible(couple, at, 30) == std::optional<bool>(false));
 }

@@ -181,8 +181,10 @@ void body(const model::Model& m, const At& at, int b, Figure& f, bool points = t
 /// coordinates imply): with `offset` ≠ 0 a round body's surface, at the foot (px, py) − offset n̂
 /// (n̂ = k × u), its ground beyond; at offset 0 the surface its weight presses it onto (and its
 /// other given loads to the same side), at its edge there; else a guide through the point (a
-/// collar's rod).
-void line_support(const model::Model& m, const At& at, Figure& f, int b, double px, double py, double ux, double uy, double offset);
+/// collar's rod). `pushes` (±1): a surface that pushes the body along ±n̂, through the point
+/// (or at the body's edge the other way), its ground behind it; 0: as the loads say.
+void line_support(const model::Model& m, const At& at, Figure& f, int b, double px, double py, double ux, double uy, double offset,
+                  int pushes = 0);
 
 /// The rim of each wheel known only by its radius of gyration, where the kinematics give it one
 /// at `at` (a cord's drum, a mesh's pitch circle): for drawing it as the scene drawing does.

@@ -2,6 +2,7 @@
 /// q̈ and the forces the supports exert there, from Newton–Euler for each body with the supports'
 /// reactions as unknowns, the rates at the state from the other analyses or as given.
 #pragma once
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -96,12 +97,29 @@ struct FrictionLimit {
   std::string effect, normal, mu;  ///< the relation, its track, μ_s as written (and its value)
   int state = -1;
   Condition holds;  ///< μ_s σN − |F| ≥ 0 at the state, `shown`: |F|/(σN) (σN: as the surface presses, |N| for a guide)
-  std::optional<Condition> pushes;  ///< σN ≥ 0: a surface under a round body cannot pull it (none for a guide)
 };
 struct FrictionLimits {
   std::vector<FrictionLimit> at_states;  ///< one per relation and state, in order
   std::vector<int> along;
 };
 FrictionLimits static_friction_limits(const model::Model& m);
+
+/// Surfaces that can only push (a one-sided track, model::Reaction::side): N ≥ 0 wherever each
+/// acts — at the state of a kinetics analysis (the N it solves for), at both ends of an analysis
+/// over an interval (N in closed form from Newton–Euler over its motion: support_forces), and
+/// over a momentum analysis across it its impulse ∫N dt ≥ 0; for an energy analysis, N itself
+/// for following it along the way (check_reached). Where Newton's law does not give N in closed
+/// form (a force the scene does not declare on the body), `unchecked` says so and why.
+struct OneSidedLimit {
+  std::string effect;
+  int state = -1;  ///< −1: over an analysis (its impulse)
+  Condition pushes;
+};
+struct OneSidedLimits {
+  std::vector<OneSidedLimit> at_states;
+  std::map<int, std::vector<PushAlong>> along;  ///< by analysis over an interval (an energy analysis follows them)
+  std::vector<std::string> unchecked;
+};
+OneSidedLimits one_sided_limits(const model::Model& m);
 
 }  // namespace kinergy::principles

@@ -129,7 +129,19 @@ Work friction_work(const model::Model& m, const model::Effect& e, std::optional<
 /// from s₁ to s₂, the other coordinates following by Newton's method on the constraints.
 /// Nothing is decided where the forms cannot be had in doubles (a held integral) or the path
 /// cannot be followed. @throws SceneError naming where K turns negative.
-void check_reached(const model::Model& m, const model::Analysis& a, const EnergyBalance& bal, const GiNaC::exmap& values);
+///
+/// `pushes`: surfaces that can only push (one-sided tracks) acting over the analysis, each with
+/// its normal force N(q, q̇) in closed form, positive while it pushes: N ≥ 0 is followed along the
+/// same samples (the rates from K along the path's tangent), and where it turns negative the
+/// place the body leaves the surface is found by bisection. @throws SceneError naming it.
+struct PushAlong {
+  std::string effect;  ///< the track
+  std::string body;    ///< what it holds ("the ball"), for the message
+  ex N;                ///< generic (q, q̇, parameters): positive while it pushes
+  SourcePos pos;       ///< where the track is declared
+};
+void check_reached(const model::Model& m, const model::Analysis& a, const EnergyBalance& bal, const GiNaC::exmap& values,
+                   const std::vector<PushAlong>& pushes = {});
 
 /// Constraint equations at a state (positions and velocities) and its `where` conditions.
 std::vector<Equation> state_equations(const model::Model& m, int state);
