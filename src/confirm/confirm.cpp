@@ -136,6 +136,45 @@ void friction_along(const Solution& s, const Confirmed& c, const std::string& be
                    "states with kinetics analyses");
 }
 
+/// Leg `leg` simulated and compared (simulate::check_leg): once more at 1e-13 where the first
+/// run differs — a difference may be the integration's (a motion of 1e-11 rad/s among rates of
+/// 1), and where doubles cannot tell more (a rate of 6e-6 rad/s from positions of 1.57 rad, near
+/// a turning point) it stays put at that level: accepted up to kConfirmFloor, and said so.
+/// Nothing where the simulator cannot run the scene (a drive from rest, a singular mass matrix, a
+/// stiff spring beyond the steps allowed: no second opinion, not a disagreement; c.note says
+/// why). @throws SceneError where the simulated motion breaks what the analysis takes for
+/// granted: a body leaves a surface that only pushes, a rolling contact slips.
+std::optional<simulate::LegCheck> simulated(const Solution& s, const simulate::Leg& leg, const simulate::Options& o, const simulate::Options& fine,
+                                            const std::string& between, Confirmed& c) {
+  const model::Model& m = s.model;
+  const model::Analysis& a = m.analyses[static_cast<std::size_t>(leg.analysis)];
+  const std::string S2 = m.states[static_cast<std::size_t>(a.to)].name;
+  std::optional<simulate::LegCheck> run;
+  try {
+    run = simulate::check_leg(s, leg, o, kConfirmSimulation);
+    if (!run->ok && std::isfinite(run->worst)) {
+      try {
+        auto again = simulate::check_leg(s, leg, fine, kConfirmSimulation);
+        if (again.ok || again.worst < run->worst) run = again;
+      } catch (const std::exception&) {
+        // more steps than allowed at 1e-13: the first run stands
+      }
+      if (!run->ok && run->worst <= kConfirmFloor && run->worst_what.rfind("the simulation does not reach", 0) != 0) {
+        run->ok = true;
+        run->note = (run->note.empty() ? "" : run->note + "; ") + "integrated at 1e-13, the difference stays at the double's limit for this motion";
+      }
+    }
+  } catch (const simulate::ReleaseError& err) {  // a body leaves a surface the analysis keeps it on
+    throw SceneError(err.pos(), between + " keeps the body on '" + err.effect() + "', but in the simulated motion it leaves it before state '" + S2 + "': " + err.what(),
+                     "ask for the state where it leaves, where: [\"N(" + err.effect() + ") = 0\"], or take state '" + S2 + "' before it");
+  } catch (const simulate::SlipError& err) {  // a contact the analysis takes as rolling slips on the way
+    throw SceneError(err.pos(), between + " takes the contact as rolling, but the simulated motion slips: " + err.what(), err.fix());
+  } catch (const std::exception& err) {
+    c.note = std::string("not simulated: ") + err.what();
+  }
+  return run;
+}
+
 }  // namespace
 
 void confirm(Solution& s) {
@@ -183,33 +222,7 @@ void confirm(Solution& s) {
     } else if (!leg.why_not.empty()) {
       c.note = "not simulated: " + leg.why_not;
     } else {
-      std::optional<simulate::LegCheck> run;
-      try {
-        run = simulate::check_leg(s, leg, o, kConfirmSimulation);
-        // a difference may be the integration's (a motion of 1e-11 rad/s among rates of 1): once
-        // more at a tighter tolerance, where the closed form's right value is met more closely;
-        // where doubles cannot tell more (a rate of 6e-6 rad/s from positions of 1.57 rad, near a
-        // turning point) the difference stays put at that level: accepted up to kConfirmFloor,
-        // and said so
-        if (!run->ok && std::isfinite(run->worst)) {
-          try {
-            auto again = simulate::check_leg(s, leg, fine, kConfirmSimulation);
-            if (again.ok || again.worst < run->worst) run = again;
-          } catch (const std::exception&) {
-            // more steps than allowed at 1e-13: the first run stands
-          }
-          if (!run->ok && run->worst <= kConfirmFloor && run->worst_what.rfind("the simulation does not reach", 0) != 0) {
-            run->ok = true;
-            run->note = (run->note.empty() ? "" : run->note + "; ") + "integrated at 1e-13, the difference stays at the double's limit for this motion";
-          }
-        }
-      } catch (const simulate::SlipError& err) {  // a contact the analysis takes as rolling slips on the way
-        throw SceneError(err.pos(), between + " takes the contact as rolling, but the simulated motion slips: " + err.what(), err.fix());
-      } catch (const std::exception& err) {
-        // the simulator cannot run this scene (a drive from rest, a singular mass matrix, a stiff
-        // spring beyond the steps allowed): no second opinion from it, which is not a disagreement
-        c.note = std::string("not simulated: ") + err.what();
-      }
+      std::optional<simulate::LegCheck> run = simulated(s, leg, o, fine, between, c);
       if (run && run->ok) {
         c.by = Confirmed::By::Simulation;
         c.difference = run->worst;

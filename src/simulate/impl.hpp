@@ -97,6 +97,15 @@ struct Simulator::Impl {
     return limits[k].mu * pressed - f;
   }
   std::size_t a_lim = 0;  ///< F, N of each limit in the auxiliary kernel
+  // --- surfaces that can only push (one-sided tracks): N ≥ 0 along the run ---
+  struct Release {
+    std::string effect, body;
+    ex N;  ///< in closed form (t, q, q̇), positive while it pushes: Newton–Euler for the body it holds
+    SourcePos pos;
+  };
+  std::vector<Release> releases;
+  std::size_t a_rel = 0;  ///< N of each release in the auxiliary kernel
+  double release_N(std::size_t k) const { return aux[a_rel + k]; }
   // --- workspace ---
   Mat M, B;
   Vec f, b, qdd, lambda;
@@ -111,6 +120,7 @@ struct Simulator::Impl {
     if (n == 0) throw SimulationError("the scene has no coordinates: nothing moves", "add coordinates to the bodies");
     doubles_hold_parameters();
     static_friction();
+    one_sided();
     compile();
     fmode.assign(eq.friction.size(), FrictionMode::Slide);
     fdir.assign(eq.friction.size(), {1, 0});
@@ -304,8 +314,36 @@ struct Simulator::Impl {
     }
   }
 
-  // T, V, g, ∂g/∂t, the contact gaps, the impulses, F and N of the friction limits and (last)
-  // the stop expression
+  // The surfaces that can only push among the tracks that act: N at a general instant, from
+  // Newton–Euler for the body each holds (principles::support_forces). Where Newton's law does
+  // not give it in closed form (a force the scene does not declare on the body), not followed.
+  void one_sided() {
+    if (!o.rolling_limits) return;
+    std::vector<bool> on, held;
+    for (std::size_t i = 0; i < m.effects.size(); ++i) on.push_back(o.effects_on.empty() || o.effects_on[i]);
+    for (std::size_t k = 0; k < m.constraints.size(); ++k) {
+      const model::Effect* c = m.carrier(k);
+      held.push_back(!c || on[static_cast<std::size_t>(m.effect_index(c->name))]);
+    }
+    for (std::size_t i = 0; i < m.effects.size(); ++i) {
+      const model::Effect& e = m.effects[i];
+      auto r = e.reaction(m);
+      if (!r || r->kind != model::Reaction::Kind::Track || r->side == 0 || !on[i]) continue;
+      Release l;
+      l.effect = e.name;
+      l.body = r->a.body >= 0 ? m.bodies[static_cast<std::size_t>(r->a.body)].name : r->a.text;
+      l.pos = e.pos;
+      try {
+        l.N = principles::support_forces(m, on, held, r->bodies(), {m.instant_reactions.at(e.name)[0]}, "the simulated motion", e.pos)[0];
+      } catch (const SceneError&) {
+        continue;  // not in closed form: not followed (principles::one_sided_limits says why)
+      }
+      releases.push_back(l);
+    }
+  }
+
+  // T, V, g, ∂g/∂t, the contact gaps, the impulses, F and N of the friction limits, N of the
+  // surfaces that only push and (last) the stop expression
   void build_aux(const std::optional<ex>& when) {
     std::vector<ex> a;
     a_T = a.size();
@@ -326,6 +364,8 @@ struct Simulator::Impl {
       a.push_back(value_of(l.F, values, "the friction that holds '" + l.effect + "'"));
       a.push_back(value_of(l.N, values, "the normal force of '" + l.normal + "'"));
     }
+    a_rel = a.size();
+    for (auto& l : releases) a.push_back(value_of(l.N, values, "the normal force of '" + l.effect + "'"));
     a_stop = a.size();
     has_stop = when.has_value();
     if (when) a.push_back(value_of(*when, values, "the stop condition"));

@@ -289,7 +289,7 @@ private:
   void integrate() {
     double dt = stepper_->adaptive() ? std::min(span_ * 1e-3, 1e-3) : fixed_dt_;
     // a scene without contacts, friction or a stop condition has no events to look for
-    const bool watch = !p_.eq.contacts.empty() || !p_.eq.friction.empty() || !p_.limits.empty() || p_.has_stop;
+    const bool watch = !p_.eq.contacts.empty() || !p_.eq.friction.empty() || !p_.limits.empty() || !p_.releases.empty() || p_.has_stop;
     std::vector<double> ev0 = watch ? events(t_, y_) : std::vector<double>{}, ev1;
     std::vector<double> vn0 = vn_last_;
     state_type y;  // the trial step (a buffer reused: no allocation per step)
@@ -439,14 +439,38 @@ private:
   // each rolling contact with μ_s: |F| ≤ μ_s |N| at the step's end (to a part in 10⁹ of μ_s |N|,
   // the equality of a contact on the point of slipping); past it the body slips, which this
   // simulation does not model
+  // and each surface that can only push: N ≥ 0 (to a part in 10⁹ of the largest N seen, the
+  // equality of a body on the point of leaving)
   void holds_rolling() {
-    if (p_.limits.empty()) return;
+    if (p_.limits.empty() && p_.releases.empty()) return;
     p_.eval_aux(t_, y_.data());
     for (std::size_t k = 0; k < p_.limits.size(); ++k) {
       double F = 0, N = 0;
       const double margin = p_.limit_margin(k, &F, &N);
       if (margin < -1e-9 * p_.limits[k].mu * std::fabs(N)) slips(k);
     }
+    released_scale_.resize(p_.releases.size(), 0.0);
+    for (std::size_t k = 0; k < p_.releases.size(); ++k) {
+      const double N = p_.release_N(k);
+      released_scale_[k] = std::max(released_scale_[k], std::fabs(N));
+      if (N < -1e-9 * released_scale_[k]) leaves(k);
+    }
+  }
+  std::vector<double> released_scale_;  ///< the largest |N| of each surface that only pushes so far
+
+  // the body on surface k leaves it now (N has fallen to zero): the error, with where
+  [[noreturn]] void leaves(std::size_t k) {
+    const auto& l = p_.releases[k];
+    std::string at;
+    for (std::size_t i = 0; i < p_.n; ++i) {
+      const auto& c = p_.m.coords[i];
+      const double q = y_[i];
+      const std::string unit = units::si_name(c.dim).empty() ? "rad" : units::si_name(c.dim);
+      at += (at.empty() ? "" : ", ") + c.name + " = " + numerics::g_text(q, 6) + " " + unit + (unit == "rad" ? " (" + numerics::g_text(q * 180 / M_PI, 6) + " deg)" : "");
+    }
+    throw ReleaseError(l.body + " leaves '" + l.effect + "' at t = " + numerics::g_text(t_, 6) + " s, " + at + ": its normal force falls to zero there (" +
+                           numerics::g_text(p_.release_N(k), 6) + " N), and a surface can only push",
+                       "the body leaves the surface there; the simulation does not go on with it free of it", l.pos, l.effect, t_);
   }
 
   // rolling contact k slips now (its F and N in aux): the error, with both numbers
@@ -554,7 +578,7 @@ private:
   std::vector<double> events(double t, const state_type& y) {
     std::vector<double> ev;
     const bool contacts = !p_.eq.contacts.empty(), friction = !p_.eq.friction.empty();
-    if (!contacts && !friction && p_.limits.empty() && !p_.has_stop) return {1.0};
+    if (!contacts && !friction && p_.limits.empty() && p_.releases.empty() && !p_.has_stop) return {1.0};
     std::vector<double> lam;
     if (contacts || friction) {
       std::vector<double> dydt(y.size());
@@ -577,6 +601,10 @@ private:
     }
     // a rolling contact with μ_s: μ_s |N| − |F|, positive while it holds
     for (std::size_t k = 0; k < p_.limits.size(); ++k) ev.push_back(p_.limit_margin(k));
+    // a surface that can only push: N, positive while it pushes, to a part in 10⁹ of the largest
+    // N seen (so that a state defined by N = 0, where the run is to stop, is reached first)
+    released_scale_.resize(p_.releases.size(), 0.0);
+    for (std::size_t k = 0; k < p_.releases.size(); ++k) ev.push_back(p_.release_N(k) + 1e-9 * released_scale_[k]);
     // a stop condition that is zero at the start (a turning point sought from rest) takes the
     // sign it has as the motion begins: the run ends at its next zero
     if (p_.has_stop && stop_sign_ == 0 && t > t_ && p_.aux[p_.a_stop] != 0) stop_sign_ = p_.aux[p_.a_stop] > 0 ? 1 : -1;
@@ -597,13 +625,14 @@ private:
 
   /// @returns false when the run ends here (the stop condition).
   bool handle(std::size_t i) {
-    const std::size_t nct = p_.eq.contacts.size(), nf = p_.eq.friction.size(), nl = p_.limits.size();
+    const std::size_t nct = p_.eq.contacts.size(), nf = p_.eq.friction.size(), nl = p_.limits.size(), nr = p_.releases.size();
     p_.eval_aux(t_, y_.data());
     if (p_.o.record) record();
-    if (i == nct + nf + nl) {
+    if (i == nct + nf + nl + nr) {
       run_.stopped = true;
       return false;
     }
+    if (i >= nct + nf + nl) leaves(i - nct - nf - nl);
     if (i >= nct + nf) slips(i - nct - nf);
     if (i < nct) {
       if (p_.cmode[i] == ContactMode::Open) {

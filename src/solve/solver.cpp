@@ -384,12 +384,19 @@ private:
     }
     // a product is zero where one of its factors is: sin θ (3 cos θ − 2) = 0 — each factor that
     // holds u solved on its own, one branch each
-    if (factor_step(st, q, u)) return;
-    // trigonometric: polynomial of degree ≤ 2 in sin(u), cos(u) or tan(u) alone
+    auto [arg, rt] = one_trig_argument(r, u);
+    {
+      Equation qn = q;
+      if (!arg.is_equal(u)) qn.lhs = rt, qn.rhs = 0;  // (its trigonometric parts in the one argument, for factoring)
+      if (factor_step(st, qn, u)) return;
+    }
+    // trigonometric: polynomial of degree ≤ 2 in sin(w), cos(w) or tan(w) alone, w = a u + b the
+    // one argument (a, b free of unknowns; sin(−w) = −sin w, cos(−w) = cos w, tan(−w) = −tan w):
+    // a rolling relation that puts θ = −r φ/(R + r) leaves sin(r φ/(R + r)); u = (w − b)/a
     symbol z("z");
     for (int kind = 0; kind < 3; ++kind) {
-      ex f = kind == 0 ? sin(u) : kind == 1 ? cos(u) : tan(u);
-      ex w = r.subs(f == z);
+      ex f = kind == 0 ? sin(arg) : kind == 1 ? cos(arg) : tan(arg);
+      ex w = rt.subs(f == z);
       if (w.has(u) || !w.is_polynomial(z) || w.degree(z) < 1 || w.degree(z) > 2) continue;
       std::vector<ex> zs;
       if (w.degree(z) == 1) {
@@ -408,6 +415,11 @@ private:
         if (kind == 0) roots.insert(roots.end(), {asin(zz), Pi - asin(zz)});
         else if (kind == 1) roots.insert(roots.end(), {acos(zz), -acos(zz)});
         else roots.insert(roots.end(), {atan(zz), atan(zz) + Pi});
+      }
+      if (!arg.is_equal(u)) {
+        // w = a u + b  ⇒  u = (w − b)/a
+        const ex a = arg.diff(u), b = arg.subs(u == 0);
+        for (auto& x : roots) x = model::tidy((x - b) / a);
       }
       if (roots.empty())
         throw SolveError("the " + q.label + " has no real solution for " + model::text(u),
@@ -448,6 +460,38 @@ private:
       }
     }
     return false;
+  }
+
+  /// The one argument w = a u + b of every sin, cos and tan in r that holds u (a, b free of
+  /// unknowns, a ≠ 0), with r rewritten in it (sin(−w) → −sin w, cos(−w) → cos w, tan(−w) →
+  /// −tan w); (u, r) where there is no such one argument.
+  std::pair<ex, ex> one_trig_argument(const ex& r, const symbol& u) const {
+    std::optional<ex> w;
+    for (auto it = r.preorder_begin(); it != r.preorder_end(); ++it) {
+      const ex& x = *it;
+      if (!(is_ex_the_function(x, sin) || is_ex_the_function(x, cos) || is_ex_the_function(x, tan)) || !x.op(0).has(u)) continue;
+      const ex a = x.op(0).expand();
+      if (!w) {
+        const ex d = a.diff(u);
+        if (d.has(u) || !free_of_unknowns(d) || d.is_zero() || !free_of_unknowns(a.subs(u == 0))) return {u, r};
+        w = a;
+      } else if (!(a - *w).expand().is_zero() && !(a + *w).expand().is_zero()) {
+        return {u, r};
+      }
+    }
+    if (!w || w->is_equal(u)) return {u, r};
+    ex out = r;
+    try {
+      const ex mw = (-*w).expand();
+      out = out.subs(lst{sin(mw) == -sin(*w), cos(mw) == cos(*w), tan(mw) == -tan(*w)}, subs_options::no_pattern);
+      for (auto it = out.preorder_begin(); it != out.preorder_end(); ++it)
+        if ((is_ex_the_function(*it, sin) || is_ex_the_function(*it, cos) || is_ex_the_function(*it, tan)) && it->op(0).has(u) &&
+            !it->op(0).is_equal(*w))
+          return {u, r};  // an argument written another way than w: left as it was
+    } catch (const std::exception&) {
+      return {u, r};
+    }
+    return {*w, out};
   }
 
   // u solved from each factor of q's residual that holds it, when it has two or more.

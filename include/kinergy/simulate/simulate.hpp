@@ -44,6 +44,19 @@ public:
   using SimulationError::SimulationError;
 };
 
+/// A body leaves a surface that can only push (a one-sided track): its normal force falls to
+/// zero in the run. The simulator does not go on with the body free of it.
+class ReleaseError : public SimulationError {
+public:
+  ReleaseError(std::string what, std::string fix, SourcePos pos, std::string effect, double t)
+      : SimulationError(std::move(what), std::move(fix), std::move(pos)), effect_(std::move(effect)), t_(t) {}
+  const std::string& effect() const { return effect_; }  ///< the track
+  double t() const { return t_; }                         ///< when, in s
+private:
+  std::string effect_;
+  double t_;
+};
+
 struct Options {
   Method method = Method::Dopri5;
   double tol = 1e-10;        ///< absolute and relative tolerance of the adaptive methods
@@ -54,7 +67,9 @@ struct Options {
   double step = 0;           ///< fixed step of symplectic and rk4 (0: span/10⁴)
   bool native = true;        ///< right-hand side as machine code (else the tape, same doubles)
   bool record = true;        ///< keep samples (every accepted step, or every `sample_dt`)
-  bool rolling_limits = true;  ///< stop where a rolling contact's mu_s no longer holds it (off: its accelerations at one state only)
+  /// stop where a rolling contact's mu_s no longer holds it, or a body leaves a surface that can
+  /// only push (off: its accelerations at one state only)
+  bool rolling_limits = true;
   /// > 0: samples at the regular times t₀ + k·sample_dt, from the integrator's steps by cubic
   /// Hermite interpolation (the state and its rate at both ends of the step: error O(h⁴)), and
   /// at each event exactly (an impact: the states before and after it, at the same time);

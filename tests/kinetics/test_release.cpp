@@ -1,0 +1,73 @@
+// Surfaces that only push (issue 42): a body leaves a one-sided track where its normal force falls
+// to zero. Every angle and speed asserted here is derived independently, from Newton–Euler and
+// energy in sympy/mpmath, by tests/contact/sympy_release.py (which reads the same scene files):
+// the dome's release at 48.1897 deg (cos = 2/3), the rod against the wall at 51.0531 deg (with its
+// starting speed) and 52.8283 deg (from rest, cos = 2 cos(theta0)/3), the block over the quarter
+// circle at 45.1791 deg, the ball in the loop at 123.819 deg.
+#include <catch2/catch.hpp>
+
+#include "../support/helpers.hpp"
+#include "kinergy/confirm/confirm.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+#include "kinergy/simulate/simulate.hpp"
+
+namespace {
+
+std::string contact(const std::string& name) { return kt::read_file(std::filesystem::path(KINERGY_SOURCE_DIR) / "tests/data/contact" / name); }
+
+/// The result's SI value in degrees, to 6 significant figures.
+std::string degrees(const kinergy::Solution& s, const std::string& name) {
+  return kinergy::numerics::format(*kt::result(s, name).si * 180 / GiNaC::ex_to<GiNaC::numeric>(GiNaC::Pi.evalf()), 6);
+}
+
+}  // namespace
+
+TEST_CASE("release: a state past the place a body leaves its surface is refused, naming the place", "[kinetics][release]") {
+  REQUIRE_THROWS_WITH(kt::solve_text(contact("dome_past_release.yaml")),
+                      Catch::Contains("ball leaves 'dome' at theta = 0.841069 rad (48.1897 deg), before state '2'") &&
+                          Catch::Contains("ask for the state where it leaves, where: [\"N(dome) = 0\"]"));
+  // the rod asked at 70 deg from the vertical, past where its top leaves the wall
+  auto rod = kt::derivation("kinetics/rod_leaves_wall.yaml");
+  auto at70 = kt::edit(kt::edit(rod, "  2: {where: [\"N(wall) = 0\"]}", "  2: {theta: 70 deg}"), "  - kinetics: {at: 2}\n", "");
+  REQUIRE_THROWS_WITH(kt::solve_text(at70), Catch::Contains("rod leaves 'wall' at theta = 0.891045 rad (51.0531 deg), before state '2'"));
+  // and the root beyond the first crossing (theta = 180 deg, where N(wall) = 0 too) asked for
+  auto beyond = kt::edit(rod, "theta2: {value: theta@2, unit: deg}", "theta2: {value: theta@2, unit: deg, root: {in: [90 deg, 200 deg]}}");
+  REQUIRE_THROWS_WITH(kt::solve_text(beyond), Catch::Contains("rod leaves 'wall' at theta = 0.891045 rad (51.0531 deg)"));
+}
+
+TEST_CASE("release: a state defined by N = 0 is the first along the motion", "[kinetics][release]") {
+  // N(wall) = 0 also at theta = 0 and 180 deg (a factor sin(theta)): the motion from 20 deg meets 51.05 deg first
+  auto s = kt::solve_text(kt::derivation("kinetics/rod_leaves_wall.yaml"));
+  CHECK(degrees(s, "theta2") == "51.0531");
+  CHECK(degrees(kt::solve_text(contact("rod_leaves_wall_rest.yaml")), "theta2") == "52.8283");
+  CHECK(degrees(kt::solve_text(kt::derivation("kinetics/block_leaves_quarter_circle.yaml")), "theta2") == "45.1791");
+  // the rolling sphere: theta = -r phi/(R + r) puts sin(r phi/(R + r)) in the equations, solved in closed form
+  auto sphere = kt::solve_text(kt::derivation("kinetics/sphere_rolls_off_sphere.yaml"));
+  const GiNaC::ex theta2 = kt::result(sphere, "theta2").closed;
+  INFO("theta2 = " << theta2 << " = " << kt::value(theta2, sphere.model.numeric_environment(), 40));
+  CHECK(kt::close(kt::value(theta2, sphere.model.numeric_environment(), 40), kt::value(GiNaC::acos(GiNaC::ex(GiNaC::numeric(10, 17))), {}, 40), kt::tol(35)));
+}
+
+TEST_CASE("release: the confirming simulation follows the push between the states", "[kinetics][release][simulate]") {
+  // two coordinates with no constraint between them: the closed form does not follow N along the
+  // way; it is positive at both states, and the simulation finds where it falls to zero
+  const std::string loop = contact("loop_two_bodies.yaml");
+  auto s = kt::solve_text(loop);  // solved: the states alone do not show it
+  REQUIRE_THROWS_WITH(kinergy::confirm(s), Catch::Contains("keeps the body on 'loop', but in the simulated motion it leaves it before state '2'") &&
+                                               Catch::Contains("theta = 2.16105 rad (123.819 deg)"));
+}
+
+TEST_CASE("release: simulate stops where the body leaves, the instant and place reported", "[simulate][release]") {
+  auto s = kt::solve_text(kt::derivation("kinetics/block_leaves_quarter_circle.yaml"));
+  kinergy::simulate::Options o;
+  o.native = false;
+  kinergy::simulate::Simulator sim(s.model, kinergy::parameter_values(s), o);
+  kinergy::simulate::State s0{0, {0}, {1.5 / 2}};  // theta = 0, theta_dot = v0/R
+  try {
+    sim.run(s0, {2.0, std::nullopt, true});
+    FAIL("the run went past the release");
+  } catch (const kinergy::simulate::ReleaseError& e) {
+    CHECK(e.effect() == "surface");
+    CHECK_THAT(std::string(e.what()), Catch::Contains("block leaves 'surface' at t = ") && Catch::Contains("theta = 0.788524 rad (45.1791 deg)"));
+  }
+}
