@@ -415,6 +415,22 @@ std::string body_names(const Model& m, const std::vector<int>& bodies) {
   return out;
 }
 
+/// The effects that act (by index) and the constraints that hold over analysis a — throughout
+/// it, or at its state (`at_state`: a kinetics analysis) — and how messages name it.
+struct Acting {
+  std::vector<bool> on, held;
+  std::string what;
+};
+Acting acting_in(const Model& m, const model::Analysis& a, bool at_state) {
+  Acting out;
+  for (auto& x : m.effects) out.on.push_back(at_state ? x.at_state(a.from) == model::Effect::AtState::Acts : x.activity(a) == model::Effect::Activity::Whole);
+  for (std::size_t k = 0; k < m.constraints.size(); ++k)
+    out.held.push_back(at_state ? m.constraint_at(k, a.from, true) : m.constraint_activity(k, a) == model::Effect::Activity::Whole);
+  out.what = "the " + a.kind + " analysis" + (at_state ? " at state '" + m.states[a.from].name + "'"
+                                                        : " from state '" + m.states[a.from].name + "' to '" + m.states[a.to].name + "'");
+  return out;
+}
+
 /// Does e hold a parameter without a value?
 bool mu_unvalued(const Model& m, const ex& e) {
   for (auto& p : m.params)
@@ -470,12 +486,7 @@ FrictionLimits static_friction_limits(const Model& m) {
       }
       // over the motion of the analysis (or at a state the kinetics' bodies do not cover), F and
       // N in closed form from Newton–Euler for every body
-      std::vector<bool> on, held;
-      for (auto& x : m.effects) on.push_back(at_state ? x.at_state(a.from) == model::Effect::AtState::Acts : x.activity(a) == model::Effect::Activity::Whole);
-      for (std::size_t k = 0; k < m.constraints.size(); ++k)
-        held.push_back(at_state ? m.constraint_at(k, a.from, true) : m.constraint_activity(k, a) == model::Effect::Activity::Whole);
-      const std::string what = "the " + a.kind + " analysis" + (at_state ? " at state '" + m.states[a.from].name + "'"
-                                                                          : " from state '" + m.states[a.from].name + "' to '" + m.states[a.to].name + "'");
+      const auto [on, held, what] = acting_in(m, a, at_state);
       std::vector<ex> FN;
       try {
         FN = support_forces(m, on, held, friction_bodies(m, *r), {F, N}, what, a.pos);
@@ -538,12 +549,7 @@ OneSidedLimits one_sided_limits(const Model& m) {
       }
       // N in closed form from Newton–Euler over the motion (or at the state), for the states'
       // values and the way between them
-      std::vector<bool> on, held;
-      for (auto& x : m.effects) on.push_back(instant ? x.at_state(a.from) == model::Effect::AtState::Acts : x.activity(a) == model::Effect::Activity::Whole);
-      for (std::size_t k = 0; k < m.constraints.size(); ++k)
-        held.push_back(instant ? m.constraint_at(k, a.from, true) : m.constraint_activity(k, a) == model::Effect::Activity::Whole);
-      const std::string what = "the " + a.kind + " analysis" + (instant ? " at state '" + m.states[a.from].name + "'"
-                                                                         : " from state '" + m.states[a.from].name + "' to '" + m.states[a.to].name + "'");
+      const auto [on, held, what] = acting_in(m, a, instant);
       ex Ng;
       try {
         Ng = support_forces(m, on, held, r->bodies(), {N}, what, e.pos)[0];

@@ -274,16 +274,23 @@ struct Simulator::Impl {
     xa.resize(1 + 2 * n);
   }
 
-  // The relations held by static friction (a rolling contact with mu_s) among the effects that
-  // act: F and N at a general instant, from Newton–Euler for every body (principles::support_forces).
-  void static_friction() {
-    if (!o.rolling_limits) return;
+  // The effects that act in the run (by index) and the constraints that hold (a constraint
+  // effect's, while it acts)
+  std::pair<std::vector<bool>, std::vector<bool>> acting() const {
     std::vector<bool> on, held;
     for (std::size_t i = 0; i < m.effects.size(); ++i) on.push_back(o.effects_on.empty() || o.effects_on[i]);
     for (std::size_t k = 0; k < m.constraints.size(); ++k) {
       const model::Effect* c = m.carrier(k);
       held.push_back(!c || on[static_cast<std::size_t>(m.effect_index(c->name))]);
     }
+    return {on, held};
+  }
+
+  // The relations held by static friction (a rolling contact with mu_s) among the effects that
+  // act: F and N at a general instant, from Newton–Euler for every body (principles::support_forces).
+  void static_friction() {
+    if (!o.rolling_limits) return;
+    const auto [on, held] = acting();
     for (std::size_t i = 0; i < m.effects.size(); ++i) {
       const model::Effect& e = m.effects[i];
       auto r = e.reaction(m);
@@ -319,12 +326,7 @@ struct Simulator::Impl {
   // not give it in closed form (a force the scene does not declare on the body), not followed.
   void one_sided() {
     if (!o.rolling_limits) return;
-    std::vector<bool> on, held;
-    for (std::size_t i = 0; i < m.effects.size(); ++i) on.push_back(o.effects_on.empty() || o.effects_on[i]);
-    for (std::size_t k = 0; k < m.constraints.size(); ++k) {
-      const model::Effect* c = m.carrier(k);
-      held.push_back(!c || on[static_cast<std::size_t>(m.effect_index(c->name))]);
-    }
+    const auto [on, held] = acting();
     for (std::size_t i = 0; i < m.effects.size(); ++i) {
       const model::Effect& e = m.effects[i];
       auto r = e.reaction(m);
