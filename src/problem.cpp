@@ -1432,7 +1432,7 @@ Solution solve_scene(const scene::SceneDef& def) {
   // first is past every switching point; while it has no solution, one switching point fewer
   std::optional<SceneError> first;
   for (int fewer = 0;; ++fewer) {
-    Solution sol{base, {}, {}, {}, {}, {}, {}, def, {}, {}, {}};
+    Solution sol{base, {}, {}, {}, {}, {}, {}, def, {}, {}, {}, {}};
     try {
       SceneSolver(sol, fewer).run();
       return sol;
