@@ -35,7 +35,6 @@ public:
   ex tx = 0, ty = 0;  ///< the line's direction (unit)
   ex R = 0;           ///< the circle's radius
   ex offset = 0;      ///< the point's distance from the surface (on the normal's side; circle: outward)
-  int side = 0;       ///< the sign of the offset: the side of the surface the round body is on
   /// One-sided: the sign σ of the way it pushes against the geometric normal (k × t̂ of a line,
   /// outward for a circle); 0: a guide that holds both ways.
   int pushes = 0;
@@ -49,7 +48,7 @@ public:
     auto [nx, ny] = normal(m);
     const int s = pushes ? pushes : 1;
     model::Reaction r = model::Reaction::track(p, s * nx, s * ny);
-    r.side = pushes ? 1 : 0;
+    r.one_sided = pushes != 0;
     return r;
   }
 
@@ -161,7 +160,8 @@ namespace {
 
 /// `pushes:` or `holds: both` (or, with an `offset`, the side the round body is on): what the
 /// track can do, as the sign σ of its push against the geometric normal n̂ (0: both ways).
-void read_sidedness(EffectReader& r, const EffectDef& ed, Track& e) {
+/// `side`: the sign of the offset (the side of the surface a round body is on), 0 without one.
+void read_sidedness(EffectReader& r, const EffectDef& ed, Track& e, int side) {
   const scene::Node* pushes = ed.options.get("pushes");
   const scene::Node* holds = ed.options.get("holds");
   const std::string fix = e.circle ? "write 'pushes: outward' (a surface the body is on: a dome), 'pushes: inward' (a surface the body is in: a "
@@ -179,8 +179,8 @@ void read_sidedness(EffectReader& r, const EffectDef& ed, Track& e) {
   }
   if (!pushes) {
     // a round body at an offset rests on the surface on its side (it can only push it away)
-    if (e.side != 0) {
-      e.pushes = e.side;
+    if (side != 0) {
+      e.pushes = side;
       return;
     }
     throw SceneError(ed.pos, "track '" + ed.name + "' does not say whether it can only push (a surface) or holds both ways (a guide)", fix);
@@ -223,7 +223,7 @@ void read_sidedness(EffectReader& r, const EffectDef& ed, Track& e) {
     sigma = d->is_positive() ? 1 : -1;
   }
   // a round body at an offset rests on its own side: the surface pushes it that way
-  if (e.side != 0 && sigma != e.side)
+  if (side != 0 && sigma != side)
     throw SceneError(pushes->pos, "track '" + ed.name + "' pushes the round body toward the surface, but its offset puts the body on the other side",
                      "the surface pushes the body away from itself: turn 'pushes' round, or leave it out (the offset says it)");
   e.pushes = sigma;
@@ -270,11 +270,12 @@ std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
     r.positive(e->R, rn.pos, "the radius of track '" + ed.name + "'");
     e->shape = "the circle of centre " + text_of_vec(*circle->get("centre")) + " and radius " + rn.scalar;
   }
+  int side = 0;  // the sign of the offset: the side of the surface a round body is on
   if (auto* o = ed.options.get("offset")) {
     e->offset = r.quantity(r.text_of(*o, "offset", "r"), false, L, "offset", "an offset is a length (the radius of the round body)");
     e->shape += " at distance " + o->scalar;
     // a round body on the offset's side: the surface can only push it that way
-    if (auto v = numerics::evaluate(e->offset, r.model().numeric_environment(), 30); v && !v->is_zero()) e->side = v->is_positive() ? 1 : -1;
+    if (auto v = numerics::evaluate(e->offset, r.model().numeric_environment(), 30); v && !v->is_zero()) side = v->is_positive() ? 1 : -1;
     if (e->circle) {
       auto rv = r.value_of(e->R + e->offset, o->pos, "the radius of the circle the point keeps to");
       if (rv && !rv->is_positive())
@@ -283,7 +284,7 @@ std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
                          "a ball of radius r inside a bowl of radius R has offset -r with r < R");
     }
   }
-  read_sidedness(r, ed, *e);
+  read_sidedness(r, ed, *e, side);
   return e;
 }
 

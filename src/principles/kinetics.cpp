@@ -451,13 +451,13 @@ FrictionLimits static_friction_limits(const Model& m) {
     std::string mu = model::text(r->mu_s);
     if (!is_a<numeric>(r->mu_s))
       if (auto v = numerics::evaluate(r->mu_s, m.numeric_environment(), 30); v && !mu_unvalued(m, r->mu_s)) mu += " = " + numerics::format(*v, 6);
-    // the track's normal force as the surface presses the body: σ N for a round body on one side
-    // of it (a floor, a dome, a bowl: σ the side, it cannot pull), |N| for a guide that holds both ways
-    const int side = track.reaction(m)->side;
+    // the track's normal force as the surface presses the body: N for a surface that only pushes
+    // (a floor, a dome, a bowl: N along the way it pushes), |N| for a guide that holds both ways
+    const bool one_sided = track.reaction(m)->one_sided;
     auto limit = [&](const ex& Fs, const ex& Ns, int S) {
       const std::string st = m.states[static_cast<std::size_t>(S)].name;
-      const ex pressed = side ? side * Ns : abs(Ns);
-      // |F| ≤ μ_s σN
+      const ex pressed = one_sided ? Ns : abs(Ns);
+      // |F| ≤ μ_s N (N as the surface presses)
       Condition c{r->mu_s * pressed - abs(Fs),
                   "'" + e.name + "' slips at state '" + st + "': holding it takes |F|/|N| = {v} of the normal force of '" + r->normal +
                       "', more than mu_s = " + mu + " allows (short by {} N)",
@@ -513,7 +513,7 @@ OneSidedLimits one_sided_limits(const Model& m) {
   for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
     const model::Effect& e = m.effects[ei];
     const auto r = e.reaction(m);
-    if (!r || r->kind != Reaction::Kind::Track || r->side == 0) continue;
+    if (!r || r->kind != Reaction::Kind::Track || !r->one_sided) continue;
     const std::string body = r->a.body >= 0 ? m.bodies[static_cast<std::size_t>(r->a.body)].name : r->a.text;
     const ex N = m.instant_reactions.at(e.name)[0];
     // N ≥ 0 at state S: the surface pushes there (it cannot pull a body resting on it)

@@ -84,14 +84,14 @@ struct Simulator::Impl {
   struct Limit {
     std::string effect, normal;
     double mu = 0;
-    int side = 0;  ///< the track's side (model::Reaction::side): N as the surface presses is side·N, |N| for a guide
+    bool one_sided = false;  ///< its track only pushes (model::Reaction::one_sided): N as the surface presses is N, |N| for a guide
     ex F, N;  ///< in closed form (t, q, q̇), from Newton–Euler for the rolling body
     SourcePos pos;
   };
   std::vector<Limit> limits;
-  /// Rolling contact k's margin μ_s σN − |F| and its F, σN from the auxiliary kernel's last values.
+  /// Rolling contact k's margin μ_s N − |F| and its F, N (as the surface presses) from the auxiliary kernel's last values.
   double limit_margin(std::size_t k, double* F = nullptr, double* N = nullptr) const {
-    const double f = std::fabs(aux[a_lim + 2 * k]), n = aux[a_lim + 2 * k + 1], pressed = limits[k].side ? limits[k].side * n : std::fabs(n);
+    const double f = std::fabs(aux[a_lim + 2 * k]), n = aux[a_lim + 2 * k + 1], pressed = limits[k].one_sided ? n : std::fabs(n);
     if (F) *F = f;
     if (N) *N = pressed;
     return limits[k].mu * pressed - f;
@@ -301,7 +301,7 @@ struct Simulator::Impl {
       l.effect = e.name;
       l.normal = r->normal;
       l.pos = r->limit_pos;
-      l.side = m.effects[static_cast<std::size_t>(m.effect_index(r->normal))].reaction(m)->side;
+      l.one_sided = m.effects[static_cast<std::size_t>(m.effect_index(r->normal))].reaction(m)->one_sided;
       const ex mu = value_of(r->mu_s, values, "mu_s of '" + e.name + "'").evalf();
       l.mu = is_a<numeric>(mu) ? ex_to<numeric>(mu).to_double() : 0;
       try {
@@ -330,7 +330,7 @@ struct Simulator::Impl {
     for (std::size_t i = 0; i < m.effects.size(); ++i) {
       const model::Effect& e = m.effects[i];
       auto r = e.reaction(m);
-      if (!r || r->kind != model::Reaction::Kind::Track || r->side == 0 || !on[i]) continue;
+      if (!r || r->kind != model::Reaction::Kind::Track || !r->one_sided || !on[i]) continue;
       Release l;
       l.effect = e.name;
       l.body = r->a.body >= 0 ? m.bodies[static_cast<std::size_t>(r->a.body)].name : r->a.text;

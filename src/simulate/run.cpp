@@ -478,7 +478,7 @@ private:
     const auto& l = p_.limits[k];
     double F = 0, N = 0;
     p_.limit_margin(k, &F, &N);
-    if (N <= 0 && l.side)
+    if (N <= 0 && l.one_sided)
       throw SlipError("'" + l.effect + "' loses its contact at t = " + numerics::g_text(t_, 6) + " s: the surface of '" + l.normal + "' would have to pull on the body (" +
                           numerics::g_text(N, 6) + " N as it presses), and holding it rolling takes a friction force of " + numerics::g_text(F, 6) + " N",
                       "the body leaves the surface there; the simulation does not go on with it free of it", l.pos);

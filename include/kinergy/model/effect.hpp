@@ -95,9 +95,9 @@ struct Reaction {
   /// `normal`. μ_s = 0: no limit stated.
   ex mu_s = 0;
   std::string normal;
-  /// A track under a round body (`offset`): +1 when the surface can only push along n̂ (the body
-  /// on the normal's side), −1 against it; 0 for a guide that holds both ways.
-  int side = 0;
+  /// A track that can only push (a surface: N ≥ 0, n̂ the way it pushes); false for a guide that
+  /// holds both ways.
+  bool one_sided = false;
   SourcePos limit_pos;  ///< where `mu_s` is written
   /// The names of its unknowns over a duration: Rx, Ry (pin), N (track), J (relation); a
   /// contact has none (it acts in impacts only).

@@ -96,7 +96,7 @@ std::vector<int> friction_bodies(const model::Model& m, const model::Reaction& r
 struct FrictionLimit {
   std::string effect, normal, mu;  ///< the relation, its track, μ_s as written (and its value)
   int state = -1;
-  Condition holds;  ///< μ_s σN − |F| ≥ 0 at the state, `shown`: |F|/(σN) (σN: as the surface presses, |N| for a guide)
+  Condition holds;  ///< μ_s N − |F| ≥ 0 at the state, `shown`: |F|/N (N as the surface presses; |N| for a guide)
 };
 struct FrictionLimits {
   std::vector<FrictionLimit> at_states;  ///< one per relation and state, in order
@@ -104,7 +104,7 @@ struct FrictionLimits {
 };
 FrictionLimits static_friction_limits(const model::Model& m);
 
-/// Surfaces that can only push (a one-sided track, model::Reaction::side): N ≥ 0 wherever each
+/// Surfaces that can only push (a one-sided track, model::Reaction::one_sided): N ≥ 0 wherever each
 /// acts — at the state of a kinetics analysis (the N it solves for), at both ends of an analysis
 /// over an interval (N in closed form from Newton–Euler over its motion: support_forces), and
 /// over a momentum analysis across it its impulse ∫N dt ≥ 0; for an energy analysis, N itself
