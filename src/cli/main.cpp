@@ -567,21 +567,23 @@ struct SimulateCommand {
                                       start, s0, until, o, impulses);
       double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
       if (shown) std::cerr << "\n";
+      // the model the run integrated: the scene's, with the gaps of the surfaces its bodies may leave
+      const kinergy::model::Model& rm = r.model ? *r.model : m;
       std::cout << m.title << "\n"
                 << "method " << sim::method_name(o.method) << ", tol " << tol << ", right-hand side " << (o.native ? "compiled" : "tape")
                 << "; from state '" << m.states[static_cast<std::size_t>(start)].name << "' at t = " << s0.t << " s\n"
                 << r.steps << " steps (" << r.rejected << " rejected), " << r.rhs_calls << " right-hand side evaluations, "
                 << secs * 1e3 << " ms\n"
-                << sim::text(m, r);
+                << sim::text(rm, r);
       if (!csv_out.empty()) {
         std::ofstream out(csv_out);
-        out << sim::csv(m, r);
+        out << sim::csv(rm, r);
         if (!out) throw kinergy::InputError("cannot write the CSV file '" + csv_out + "'", "check the free space and the file's permissions");
       }
-      if (!plot_out.empty()) sim::plot(m, r, plot_out);
+      if (!plot_out.empty()) sim::plot(rm, r, plot_out);
       if (!animate_out.empty()) {
         // the same samples, each drawn; every impact marked at its instant
-        kinergy::draw::write_animation(m, sol ? sim::simulation_values(*sol) : m.parameter_values(), sim::motion_of(r, m.title), animate_out);
+        kinergy::draw::write_animation(rm, sol ? sim::simulation_values(*sol) : m.parameter_values(), sim::motion_of(r, m.title), animate_out);
       }
       return 0;
     });

@@ -272,6 +272,8 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
   // only the effects that act over this analysis
   Options own = o;
   own.effects_on.clear();
+  // an analysis keeps its bodies on their surfaces: the first release refutes it (ReleaseError)
+  own.follow_releases = false;
   // (a blow only where it strikes: at the first state of the analysis that takes it)
   for (auto& e : m.effects)
     own.effects_on.push_back(e.blow() ? e.strikes_in(m, m.analyses[leg.analysis]) : e.activity(m.analyses[leg.analysis]) != model::Effect::Activity::None);
@@ -454,6 +456,29 @@ namespace {
 // an effect acts after state `st` when it is switched on at or before it and not off by then
 bool acts_after(const model::Effect& e, int st) { return (e.on < 0 || e.on <= st) && (e.off < 0 || e.off > st); }
 
+// The state a run ended in, for the next run's simulator: the same coordinates (the scene's, and
+// the gaps of the surfaces its bodies may leave), or the scene's alone where every gap the next
+// one does not have is closed. @throws SimulationError where a body is off a surface the next run
+// cannot free it from.
+State carried(const Run& all, const Simulator& next, const model::Model& scene) {
+  State x{all.end.t, all.end.q, all.end.qd};
+  const model::Model& was = all.model ? *all.model : scene;
+  const model::Model& will = next.model();
+  if (was.coords.size() == will.coords.size()) return x;
+  for (std::size_t i = scene.coords.size(); i < was.coords.size(); ++i)
+    if (std::fabs(x.q[i]) > 1e-12 * std::max(1.0, std::fabs(x.q[i])) || x.qd[i] != 0)
+      throw SimulationError("at t = " + numerics::g_text(x.t, 6) + " s a body is off a surface (" + was.coords[i].name + " = " + numerics::g_text(x.q[i], 6) +
+                                " m), and the effects that act from here on hold it there",
+                            "end the run before the switch (--until)");
+  x.q.resize(scene.coords.size());
+  x.qd.resize(scene.coords.size());
+  if (will.coords.size() > x.q.size()) {
+    x.q.resize(will.coords.size(), 0.0);
+    x.qd.resize(will.coords.size(), 0.0);
+  }
+  return x;
+}
+
 // r appended to all: one run in time (works summed by effect, the drift weighted by each scale)
 void append(Run& all, Run r, bool first) {
   if (first) {
@@ -474,6 +499,8 @@ void append(Run& all, Run r, bool first) {
   all.energy_scale = scale;
   all.end = r.end;
   all.stopped = r.stopped;
+  all.switches.insert(all.switches.end(), r.switches.begin(), r.switches.end());
+  if (r.model) all.model = r.model;
   all.E1 = r.E1;
   all.impact_loss += r.impact_loss;
   all.conservative = all.conservative && r.conservative;
@@ -525,6 +552,7 @@ Run run_following(const model::Model& m, const exmap& solved, const exmap& param
     }
     if (!(stop.until > x.t) && !first) break;
     Simulator sim(m, params, own);
+    if (!first) x = carried(all, sim, m);
     Run r = sim.run(x, stop);
     const bool reached = next >= 0 && (r.stopped || (!stop.when && r.end.t == stop.until && stop.until < until));
     append(all, std::move(r), first);

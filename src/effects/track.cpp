@@ -38,6 +38,10 @@ public:
   /// One-sided: the sign σ of the way it pushes against the geometric normal (k × t̂ of a line,
   /// outward for a circle); 0: a guide that holds both ways.
   int pushes = 0;
+  /// The restitution when a body that has left the surface strikes it again (`e:`; only a
+  /// simulation has such a strike): without it, such a strike is an error that asks for it.
+  ex e = 0;
+  bool e_given = false;
   std::string shape;  ///< "the line through [..] along [..]", "the circle of centre [..] and radius R"
   SourcePos arg_pos;  ///< where its point is named
 
@@ -49,6 +53,10 @@ public:
     const int s = pushes ? pushes : 1;
     model::Reaction r = model::Reaction::track(p, s * nx, s * ny);
     r.one_sided = pushes != 0;
+    if (r.one_sided) {
+      r.gap = s * distance(m);
+      r.e = e_given ? e : ex(-1);
+    }
     return r;
   }
 
@@ -74,6 +82,18 @@ public:
   void draw(const Model& m, const At& at, Figure& f) const override {
     auto [px, py] = at.point(m.position(p));
     const double off = at(offset);
+    // a body off the surface (a simulation that has let it go): the surface and its name where
+    // the coordinates would keep the point, its foot, not at the body
+    if (const double d = at(distance(m)); std::isfinite(d) && std::fabs(d) > 1e-9 * (1 + std::hypot(px, py))) {
+      if (circle) {
+        const double cx = at(x0), cy = at(y0), k = (at(R) + off) / std::hypot(px - cx, py - cy);
+        px = cx + k * (px - cx);
+        py = cy + k * (py - cy);
+      } else {
+        px -= d * -at(ty);
+        py -= d * at(tx);
+      }
+    }
     if (circle) {
       const double cx = at(x0), cy = at(y0), r = at(R);
       if (!pushes) f.circle(cx, cy, r, Ink::Support);
@@ -234,7 +254,7 @@ void read_sidedness(EffectReader& r, const EffectDef& ed, Track& e, int side) {
 std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
   auto e = make<Track>(ed);
   e->has_potential = true;  // V = 0: a smooth track does no work
-  r.only(ed, {"line", "circle", "offset", "pushes", "holds"});
+  r.only(ed, {"line", "circle", "offset", "pushes", "holds", "e"});
   e->p = r.point_ref(ed.arg, ed.kind);
   e->arg_pos = ed.arg.pos;
   if (e->p.body < 0)
@@ -285,6 +305,18 @@ std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
     }
   }
   read_sidedness(r, ed, *e, side);
+  if (auto* en = ed.options.get("e")) {
+    // e: how a body that has left the surface rebounds when it strikes it again, v_n⁺ = −e v_n⁻
+    if (!e->pushes)
+      throw SceneError(en->pos, "track '" + ed.name + "' holds both ways, so a body never leaves it to strike it again: 'e' has no use here",
+                       "leave 'e' out, or say 'pushes: ...' for a surface that can only push");
+    e->e = r.quantity(r.text_of(*en, "e", "0.5"), false, units::Dimension{}, "e", "a coefficient of restitution is a pure number from 0 to 1");
+    auto v = r.value_of(e->e, en->pos, "the coefficient of restitution");
+    if (v && (v->is_negative() || *v > 1))
+      throw SceneError(en->pos, "the coefficient of restitution of track '" + ed.name + "' is " + numerics::format(*v, 6) + ", not from 0 to 1",
+                       "give e from 0 (the body lands and stays) to 1 (it rebounds with its speed)");
+    e->e_given = true;
+  }
   return e;
 }
 

@@ -14,6 +14,7 @@
 #include "kinergy/numeric/tape.hpp"
 #include "kinergy/principles/kinetics.hpp"
 #include "kinergy/simulate/simulate.hpp"
+#include "freed.hpp"
 
 namespace kinergy::simulate {
 
@@ -46,7 +47,11 @@ enum class ContactMode { Open, Rest };
 using namespace detail;
 
 struct Simulator::Impl {
-  model::Model m;  ///< a copy: the simulator outlives the caller's model
+  model::Model m;  ///< a copy: the simulator outlives the caller's model (freed: with the gaps)
+  std::size_t scene_n = 0;  ///< the scene's coordinates (the first of m's)
+  std::shared_ptr<const model::Model> freed_model;  ///< m, when it has gaps (a run's `model`)
+  std::vector<int> freed;   ///< the surfaces whose bodies may leave them (effects), as contacts
+  std::vector<std::pair<int, std::string>> kept;  ///< one-sided surfaces not freed, and why
   Options o;
   exmap values;  ///< parameter symbol → exact value
   Equations eq;
@@ -102,6 +107,7 @@ struct Simulator::Impl {
     std::string effect, body;
     ex N;  ///< in closed form (t, q, q̇), positive while it pushes: Newton–Euler for the body it holds
     SourcePos pos;
+    std::string why_kept;  ///< why the run cannot go on with the body free of it ("": not asked to)
   };
   std::vector<Release> releases;
   std::size_t a_rel = 0;  ///< N of each release in the auxiliary kernel
@@ -114,7 +120,23 @@ struct Simulator::Impl {
   double rest_time = 0;
 
   Impl(const model::Model& mm, const exmap& vals, const Options& opt) : m(mm), o(opt), values(vals) {
-    eq = equations_of_motion(m, o.effects_on);
+    scene_n = m.coords.size();
+    {
+      // the surfaces that only push whose bodies may leave them: m with a gap for each
+      // (the symplectic method has no events to switch at: it stops where a body leaves)
+      const bool follow = o.rolling_limits && o.follow_releases && o.method != Method::Symplectic;
+      const Freed fr = follow ? free_surfaces(mm, o.effects_on, values) : Freed{mm, {}, {}};
+      kept = fr.kept;
+      if (!fr.surfaces.empty()) {
+        m = fr.m;
+        freed_model = std::make_shared<const model::Model>(m);
+      }
+      eq = equations_of_motion(m, o.effects_on);
+      for (auto& sf : fr.surfaces) {
+        eq.contacts.push_back(surface_contact(fr, sf));
+        freed.push_back(sf.effect);
+      }
+    }
     n = eq.q.size();
     nc = eq.g.size();
     if (n == 0) throw SimulationError("the scene has no coordinates: nothing moves", "add coordinates to the bodies");
@@ -331,7 +353,10 @@ struct Simulator::Impl {
       const model::Effect& e = m.effects[i];
       auto r = e.reaction(m);
       if (!r || r->kind != model::Reaction::Kind::Track || !r->one_sided || !on[i]) continue;
+      if (std::find(freed.begin(), freed.end(), static_cast<int>(i)) != freed.end()) continue;  // a contact: its gap may open
       Release l;
+      for (auto& [k, why] : kept)
+        if (k == static_cast<int>(i)) l.why_kept = why;
       l.effect = e.name;
       l.body = r->a.body >= 0 ? m.bodies[static_cast<std::size_t>(r->a.body)].name : r->a.text;
       l.pos = e.pos;

@@ -228,6 +228,32 @@ private:
   std::string contact_name(std::size_t k) const { return p_.m.effects[p_.eq.contacts[k].effect].name; }
   std::string friction_name(std::size_t k) const { return p_.m.effects[p_.eq.friction[k].effect].name; }
   void note(const std::string& s) { run_.log.push_back("t = " + numerics::g_text(t_, 6) + " s: " + s); }
+  /// A switch of effect `effect` (kind: leaves, strikes, rests, lets go, slips, sticks), logged.
+  void note(const std::string& s, const std::string& effect, const std::string& kind) {
+    note(s);
+    run_.switches.push_back(Switch{t_, effect, kind, run_.log.back()});
+  }
+  /// The scene's coordinates now, "theta = 0.841069 rad (48.1897 deg), ..." (not the gaps).
+  std::string place() const {
+    std::string at;
+    for (std::size_t i = 0; i < p_.scene_n; ++i) {
+      const auto& c = p_.m.coords[i];
+      const double q = y_[i];
+      const std::string unit = units::si_name(c.dim).empty() ? "rad" : units::si_name(c.dim);
+      at += (at.empty() ? "" : ", ") + c.name + " = " + numerics::g_text(q, 6) + " " + unit + (unit == "rad" ? " (" + numerics::g_text(q * 180 / M_PI, 6) + " deg)" : "");
+    }
+    return at;
+  }
+  /// The body a freed surface (contact k) holds.
+  std::string surface_body(std::size_t k) const {
+    const auto r = p_.m.effects[p_.eq.contacts[k].effect].reaction(p_.m);
+    return r && r->a.body >= 0 ? p_.m.bodies[static_cast<std::size_t>(r->a.body)].name : "the body";
+  }
+  /// Contact k, a freed surface, opens now: the body leaves it.
+  void leaves_surface(std::size_t k) {
+    note(surface_body(k) + " leaves '" + contact_name(k) + "' at " + place() + ": its normal force has fallen to zero, and it goes on free of it",
+         contact_name(k), "leaves");
+  }
 
   // ---------------------------------------------------------------- the start
   void start() {
@@ -457,20 +483,16 @@ private:
     }
   }
   std::vector<double> released_scale_;  ///< the largest |N| of each surface that only pushes so far
+  std::vector<double> surface_scale_;   ///< the same for each contact (a freed surface's)
 
   // the body on surface k leaves it now (N has fallen to zero): the error, with where
   [[noreturn]] void leaves(std::size_t k) {
     const auto& l = p_.releases[k];
-    std::string at;
-    for (std::size_t i = 0; i < p_.n; ++i) {
-      const auto& c = p_.m.coords[i];
-      const double q = y_[i];
-      const std::string unit = units::si_name(c.dim).empty() ? "rad" : units::si_name(c.dim);
-      at += (at.empty() ? "" : ", ") + c.name + " = " + numerics::g_text(q, 6) + " " + unit + (unit == "rad" ? " (" + numerics::g_text(q * 180 / M_PI, 6) + " deg)" : "");
-    }
-    throw ReleaseError(l.body + " leaves '" + l.effect + "' at t = " + numerics::g_text(t_, 6) + " s, " + at + ": its normal force falls to zero there (" +
+    const std::string fix = l.why_kept.empty() ? "the body leaves the surface there"
+                                               : "the body leaves the surface there; the simulation cannot go on with it free of it: " + l.why_kept;
+    throw ReleaseError(l.body + " leaves '" + l.effect + "' at t = " + numerics::g_text(t_, 6) + " s, " + place() + ": its normal force falls to zero there (" +
                            numerics::g_text(p_.release_N(k), 6) + " N), and a surface can only push",
-                       "the body leaves the surface there; the simulation does not go on with it free of it", l.pos, l.effect, t_);
+                       fix, l.pos, l.effect, t_);
   }
 
   // rolling contact k slips now (its F and N in aux): the error, with both numbers
@@ -588,8 +610,22 @@ private:
       for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) vn_last_.push_back(p_.rate_v(p_.o_cont[k].first));
     }
     p_.eval_aux(t, y.data());
-    for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k)
-      ev.push_back(p_.cmode[k] == ContactMode::Open ? p_.aux[p_.a_gap + k] : lam[p_.contact_row(k)]);
+    // (a surface that only pushes, resting: its N to a part in 10⁹ of the largest N it has had, as
+    // for a release below, so that a state defined by N = 0 is reached first)
+    surface_scale_.resize(p_.eq.contacts.size(), 0.0);
+    for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
+      if (p_.cmode[k] == ContactMode::Open) {
+        ev.push_back(p_.aux[p_.a_gap + k]);
+        continue;
+      }
+      const double N = lam[p_.contact_row(k)];
+      if (!p_.eq.contacts[k].surface) {
+        ev.push_back(N);
+        continue;
+      }
+      surface_scale_[k] = std::max(surface_scale_[k], std::fabs(N));
+      ev.push_back(N + 1e-9 * surface_scale_[k]);
+    }
     for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
       if (p_.fmode[k] == FrictionMode::Slide) {
         auto [vx, vy] = p_.slip(k);
@@ -649,7 +685,8 @@ private:
         settle_contacts();
       } else {
         p_.cmode[i] = ContactMode::Open;
-        note("contact '" + contact_name(i) + "' lets go (its normal force reached zero)");
+        if (p_.eq.contacts[i].surface) leaves_surface(i);
+        else note("contact '" + contact_name(i) + "' lets go (its normal force reached zero)", contact_name(i), "lets go");
       }
       return true;
     }
@@ -664,7 +701,7 @@ private:
       double mag = std::hypot(F[0], F[1]);
       p_.fmode[k] = FrictionMode::Slide;
       p_.fdir[k] = {-F[0] / mag, -F[1] / mag};
-      note("friction '" + friction_name(k) + "' slips (the load exceeds " + numerics::g_text(p_.flimit[k], 6) + ")");
+      note("friction '" + friction_name(k) + "' slips (the load exceeds " + numerics::g_text(p_.flimit[k], 6) + ")", friction_name(k), "slips");
     }
     return true;
   }
@@ -710,12 +747,16 @@ private:
     auto F = stick_force(k, std::vector<double>(p_.lambda.data(), p_.lambda.data() + p_.lambda.size()));
     double mag = std::hypot(F[0], F[1]);
     if (mag <= p_.flimit[k]) {
-      if (stopped) note("friction '" + friction_name(k) + "' sticks: the slip has stopped and " + numerics::g_text(mag, 6) + " <= " + numerics::g_text(p_.flimit[k], 6) + " holds it");
+      if (stopped)
+        note("friction '" + friction_name(k) + "' sticks: the slip has stopped and " + numerics::g_text(mag, 6) + " <= " + numerics::g_text(p_.flimit[k], 6) + " holds it",
+             friction_name(k), "sticks");
       return;
     }
     p_.fmode[k] = FrictionMode::Slide;
     p_.fdir[k] = {-F[0] / mag, -F[1] / mag};
-    if (stopped) note("friction '" + friction_name(k) + "' reverses: the slip stopped, but holding it takes " + numerics::g_text(mag, 6) + " > " + numerics::g_text(p_.flimit[k], 6));
+    if (stopped)
+      note("friction '" + friction_name(k) + "' reverses: the slip stopped, but holding it takes " + numerics::g_text(mag, 6) + " > " + numerics::g_text(p_.flimit[k], 6),
+           friction_name(k), "slips");
   }
 
   // ---------------------------------------------------------------- impacts
@@ -776,6 +817,11 @@ private:
       im.T_before = p_.T();
       std::vector<double> e, vt_before;
       for (std::size_t k : strike) {
+        if (p_.ce[k] < 0)
+          throw SimulationError(surface_body(k) + " strikes '" + contact_name(k) + "' again at t = " + numerics::g_text(t_, 6) + " s, " + place() +
+                                    ", and the track does not say how it rebounds",
+                                "give the track its coefficient of restitution, 'e: 0' (it lands and stays) to 'e: 1'",
+                                p_.m.effects[p_.eq.contacts[k].effect].pos);
         e.push_back(p_.ce[k]);
         im.contacts.push_back(contact_name(k));
         im.vn_before.push_back(p_.rate_v(p_.o_cont[k].first));
@@ -816,6 +862,9 @@ private:
       }
       run_.impact_loss += im.loss;
       run_.impacts.push_back(im);
+      for (std::size_t k : strike)
+        if (p_.eq.contacts[k].surface)
+          note(surface_body(k) + " strikes '" + contact_name(k) + "' at " + place() + " (e = " + numerics::g_text(p_.ce[k], 6) + ")", contact_name(k), "strikes");
       // what follows: rest (e = 0, or a bounce too short to resolve), or a flight
       for (std::size_t j = 0; j < strike.size(); ++j) {
         std::size_t k = strike[j];
@@ -874,6 +923,7 @@ private:
         if (p_.lambda(static_cast<Eigen::Index>(row[k])) < 0) {
           p_.cmode[k] = ContactMode::Open;
           changed = true;
+          if (p_.eq.contacts[k].surface) leaves_surface(k);
         }
       }
       if (!changed) return;
@@ -1017,7 +1067,15 @@ Run Simulator::Impl::run(const State& s0, const Stop& stop) {
   fmode.assign(eq.friction.size(), FrictionMode::Slide);
   cmode.assign(eq.contacts.size(), ContactMode::Open);
   Runner r(*this, stop);
-  return r.go(s0);
+  // a start in the scene's coordinates: every gap closed (the bodies on their surfaces)
+  State s = s0;
+  if (s.q.size() == scene_n && s.qd.size() == scene_n && n > scene_n) {
+    s.q.resize(n, 0.0);
+    s.qd.resize(n, 0.0);
+  }
+  Run run = r.go(s);
+  run.model = freed_model;
+  return run;
 }
 
 }  // namespace kinergy::simulate

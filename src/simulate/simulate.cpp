@@ -36,6 +36,7 @@ Simulator::Simulator(const model::Model& m, const exmap& values, const Options& 
 Simulator::~Simulator() = default;
 Simulator::Simulator(Simulator&&) noexcept = default;
 const Equations& Simulator::equations() const { return p_->eq; }
+const model::Model& Simulator::model() const { return p_->m; }
 std::size_t Simulator::size() const { return 2 * p_->n + p_->nw; }
 void Simulator::rhs(const double* y, double t, double* dydt) { p_->rhs(y, t, dydt); }
 Run Simulator::run(const State& s0, const Stop& stop) { return p_->run(s0, stop); }

@@ -105,6 +105,10 @@ const std::vector<Row> kTable = {
   // pull (refused, at the state and over the duration); a guide holds it either way
   {"track", "pushes", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n  w: {gravity: g}", true, ""},
   {"track", "pushes", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n  w: {gravity: g, direction: [0, 1]}", false, "would have to pull"},
+  // e: how a body that has left the surface strikes it again (only a simulation has that): read
+  // where the surface pushes, refused on a guide, which no body leaves
+  {"track", "e", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up, e: 0.5}\n  w: {gravity: g, direction: [0, -1]}", true, ""},
+  {"track", "e", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, holds: both, e: 0.5}", false, "a body never leaves it"},
   {"track", "holds", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, holds: both}\n  w: {gravity: g, direction: [0, 1]}", true, ""},
   // on and off, every kind's: switched where the analysis does not reach it, the effect is not
   // there (the simulation runs without it too); switched inside an energy analysis, its work is

@@ -98,6 +98,11 @@ struct Reaction {
   /// A track that can only push (a surface: N ≥ 0, n̂ the way it pushes); false for a guide that
   /// holds both ways.
   bool one_sided = false;
+  /// A surface that only pushes: how far its point is off it, along n̂ (> 0: apart, on the side
+  /// it pushes toward; 0 wherever the coordinates keep the point on it), for a simulation that
+  /// lets the body leave it (simulate/freed.cpp); and `e`, the restitution when the body strikes
+  /// it again (−1: not said).
+  ex gap = 0;
   SourcePos limit_pos;  ///< where `mu_s` is written
   /// The names of its unknowns over a duration: Rx, Ry (pin), N (track), J (relation); a
   /// contact has none (it acts in impacts only).

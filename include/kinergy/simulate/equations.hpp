@@ -50,6 +50,9 @@ struct ContactTerm {
   LinearRate normal, tangent;  ///< n̂·(v_b − v_a), t̂·(v_b − v_a) with t̂ = (−n_y, n_x)
   ex e;                         ///< coefficient of restitution
   bool stick = false;           ///< rough: no tangential slip after an impact
+  /// A surface that only pushes (a one-sided track), its body freed to leave it: the gap opens
+  /// where the surface's push falls to zero (simulate/freed.cpp)
+  bool surface = false;
 };
 
 /// A given impulse J at a point (acts once, at the first instant).

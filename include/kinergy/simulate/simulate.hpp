@@ -70,6 +70,11 @@ struct Options {
   /// stop where a rolling contact's mu_s no longer holds it, or a body leaves a surface that can
   /// only push (off: its accelerations at one state only)
   bool rolling_limits = true;
+  /// With rolling_limits: a body that leaves a surface that can only push goes on free of it (a
+  /// gap coordinate for each such surface whose body can be freed: the run's `model`), and strikes
+  /// it again with the track's e; off, the run stops there with a ReleaseError (a check of an
+  /// analysis that keeps the body on the surface: its first release already refutes it).
+  bool follow_releases = true;
   /// > 0: samples at the regular times t₀ + k·sample_dt, from the integrator's steps by cubic
   /// Hermite interpolation (the state and its rate at both ends of the step: error O(h⁴)), and
   /// at each event exactly (an impact: the states before and after it, at the same time);
@@ -114,7 +119,21 @@ struct Impact {
   bool comes_to_rest = false;  ///< the last bounce was too short to resolve: the contact rests
 };
 
+/// A switch of the run's contacts and friction at an instant: a body leaves a surface
+/// ("leaves"), strikes one ("strikes"), comes to rest on it ("rests"), a contact lets go
+/// ("lets go"), friction slips or sticks ("slips", "sticks").
+struct Switch {
+  double t = 0;
+  std::string effect, kind;
+  std::string text;  ///< as the log says it
+};
+
 struct Run {
+  /// The model the run integrated when it is not the scene's own: the scene with a gap
+  /// coordinate for each surface its bodies may leave (after the scene's coordinates, in each
+  /// sample's q and q̇). Null: the scene's model.
+  std::shared_ptr<const model::Model> model;
+  std::vector<Switch> switches;    ///< in time order (also in `log`)
   std::vector<Sample> samples;     ///< accepted steps (when recording), and the end
   std::vector<Impact> impacts;
   std::vector<std::string> log;    ///< what switched and when (rest, stick, slip, release)
@@ -140,6 +159,9 @@ public:
   Simulator(Simulator&&) noexcept;
 
   const Equations& equations() const;
+  /// The model it integrates: the scene's, or with a gap coordinate for each surface that only
+  /// pushes whose body it lets go (Options::follow_releases), after the scene's coordinates.
+  const model::Model& model() const;
   /// State vector size (q, q̇, and the work of each non-conservative effect).
   std::size_t size() const;
 

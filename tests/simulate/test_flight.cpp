@@ -1,0 +1,82 @@
+// A body that leaves a surface that can only push goes on free of it (issue 42): the simulator
+// integrates the scene with a gap coordinate for the surface, closed while the surface pushes and
+// open after. The instants, angles and states after the release asserted here are derived
+// independently of kinergy by tests/contact/sympy_flight.py (energy and Newton–Euler up to the
+// release, a projectile or Lagrange's equations in sympy, integrated by mpmath, after it).
+#include <catch2/catch.hpp>
+
+#include "../support/helpers.hpp"
+#include "kinergy/confirm/check.hpp"
+#include "kinergy/simulate/simulate.hpp"
+
+namespace {
+
+namespace sim = kinergy::simulate;
+
+std::string contact(const std::string& name) { return kt::read_file(std::filesystem::path(KINERGY_SOURCE_DIR) / "tests/data/contact" / name); }
+
+/// The coordinate named `name` of the run's model, its index.
+std::size_t coordinate(const sim::Run& r, const std::string& name) {
+  REQUIRE(r.model);
+  for (std::size_t i = 0; i < r.model->coords.size(); ++i)
+    if (r.model->coords[i].name == name) return i;
+  FAIL("no coordinate " << name);
+  return 0;
+}
+
+sim::Run run(const std::string& text, double until) {
+  const kinergy::model::Model m = kt::model_of(text);
+  sim::Options o;
+  o.native = false;
+  o.record = false;
+  sim::Simulator s(m, m.parameter_values(), o);
+  return s.run(sim::state_values(m, {}, m.parameter_values(), 0), {until, std::nullopt, true});
+}
+
+}  // namespace
+
+TEST_CASE("flight: the ball leaves the dome where its push falls to zero and falls free of it", "[simulate][release]") {
+  // released at rest at 0.2 rad: leaves at t = 0.843453923349726 s, 49.2032458521461 deg; 0.25 s later
+  // at polar angle 1.51806416518665 rad, 0.144318779909857 m off the dome (sympy_flight.py, case 1)
+  const sim::Run r = run(contact("dome_flight.yaml"), 0.843453923349726 + 0.25);
+  REQUIRE(r.switches.size() == 1);
+  CHECK(r.switches[0].kind == "leaves");
+  CHECK(r.switches[0].effect == "dome");
+  CHECK(std::fabs(r.switches[0].t - 0.843453923349726) < 1e-8);
+  CHECK_THAT(r.switches[0].text, Catch::Contains("ball leaves 'dome' at theta = 0.858759 rad (49.2032 deg)"));
+  CHECK(r.model->coords.size() == 2);
+  CHECK(std::fabs(r.end.q[0] - 1.51806416518665) < 1e-8);
+  CHECK(std::fabs(r.end.q[coordinate(r, "dome_gap")] - 0.144318779909857) < 1e-8);
+  CHECK(std::fabs(r.drift) < 1e-9);  // the dome does no work, on it or off it
+}
+
+TEST_CASE("flight: the ladder goes on with its top free of the wall, its foot on the floor", "[simulate][release]") {
+  // from theta0 = 20 deg with vA0 = 0.5 m/s: B leaves the wall at t = 0.635987033526879 s, 51.0531254544615
+  // deg; 0.2 s later theta = 1.31472706779781 rad, theta_dot = 2.47935197384411 rad/s, B 0.0466367038593675 m
+  // from the wall (sympy_flight.py, case 2)
+  const sim::Run r = run(kt::derivation("kinetics/rod_leaves_wall.yaml"), 0.635987033526879 + 0.2);
+  REQUIRE(r.switches.size() == 1);
+  CHECK(r.switches[0].effect == "wall");
+  CHECK(std::fabs(r.switches[0].t - 0.635987033526879) < 1e-8);
+  CHECK(std::fabs(r.end.q[0] - 1.31472706779781) < 1e-8);
+  CHECK(std::fabs(r.end.qd[0] - 2.47935197384411) < 1e-8);
+  CHECK(std::fabs(r.end.q[coordinate(r, "wall_gap")] - 0.0466367038593675) < 1e-8);
+  CHECK(std::fabs(r.end.q[coordinate(r, "floor_gap")]) < 1e-12);  // the floor still pushes
+}
+
+TEST_CASE("flight: a body that strikes its surface again needs the track's e", "[simulate][release][errors]") {
+  // a ball thrown up off a floor that only pushes comes down on it: without e the run says so
+  const std::string ball =
+      "title: thrown up\nparameters: {m: 1 kg, g: 9.81 m/s^2, t1: 0.1 s}\ncoordinates: {x: m}\n"
+      "bodies:\n  ball: {mass: m, inertia: particle, position: [x, 0]}\n"
+      "effects:\n  gravity: {g: g}\n  floor: {track: ball, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n"
+      "  lift: {force: ball, F: [0, \"3*m*g*max(1 - t/t1, 0)\"]}\n"
+      "states:\n  1: {t: 0, x: 0, x_dot: 1 m/s}\n";
+  REQUIRE_THROWS_WITH(run(ball, 2.0), Catch::Contains("ball strikes 'floor' again at t = ") && Catch::Contains("does not say how it rebounds"));
+  // with e = 0 it lands and slides on
+  const sim::Run r = run(kt::edit(ball, "pushes: up}", "pushes: up, e: 0}"), 2.0);
+  REQUIRE(r.switches.size() == 2);
+  CHECK(r.switches[0].kind == "leaves");
+  CHECK(r.switches[1].kind == "strikes");
+  CHECK(std::fabs(r.end.qd[0] - 1) < 1e-9);  // smooth: its sliding speed is kept
+}
