@@ -165,8 +165,8 @@ std::optional<simulate::LegCheck> simulated(const Solution& s, const simulate::L
       }
     }
   } catch (const simulate::ReleaseError& err) {  // a body leaves a surface the analysis keeps it on
-    throw SceneError(err.pos(), between + " keeps the body on '" + err.effect() + "', but in the simulated motion it leaves it before state '" + S2 + "': " + err.what(),
-                     "ask for the state where it leaves, where: [\"N(" + err.effect() + ") = 0\"], or take state '" + S2 + "' before it");
+    throw SceneError(err.pos(), between + " " + err.keeps() + ", but in the simulated motion it " + err.verb() + " before state '" + S2 + "': " + err.what(),
+                     "ask for the state where it " + err.verb() + ", " + err.ask() + ", or take state '" + S2 + "' before it");
   } catch (const simulate::SlipError& err) {  // a contact the analysis takes as rolling slips on the way
     throw SceneError(err.pos(), between + " takes the contact as rolling, but the simulated motion slips: " + err.what(), err.fix());
   } catch (const std::exception& err) {

@@ -17,6 +17,7 @@
   X(pin)                        \
   X(constraint)                 \
   X(track)                      \
+  X(cord)                       \
   X(contact)                    \
   X(impulse)                    \
   X(cord_pull)

@@ -38,6 +38,9 @@ public:
   /// One-sided: the sign σ of the way it pushes against the geometric normal (k × t̂ of a line,
   /// outward for a circle); 0: a guide that holds both ways.
   int pushes = 0;
+  /// A cord from a fixed point (`cord: [O, bob]`, `length: l`): the circle of radius l about O,
+  /// pulling the point inward (pushes = −1), its N the cord's tension.
+  bool cord = false;
   /// The restitution when a body that has left the surface strikes it again (`e:`; only a
   /// simulation has such a strike): without it, such a strike is an error that asks for it.
   ex e = 0;
@@ -53,6 +56,7 @@ public:
     const int s = pushes ? pushes : 1;
     model::Reaction r = model::Reaction::track(p, s * nx, s * ny);
     r.one_sided = pushes != 0;
+    r.pulls = cord;
     if (r.one_sided) {
       r.gap = s * distance(m);
       r.e = e_given ? e : ex(-1);
@@ -82,6 +86,12 @@ public:
   void draw(const Model& m, const At& at, Figure& f) const override {
     auto [px, py] = at.point(m.position(p));
     const double off = at(offset);
+    if (cord) {
+      // the cord itself, from its anchor to the point (straight while taut)
+      f.line(at(x0), at(y0), px, py, Ink::Cord);
+      f.label(0.5 * (at(x0) + px), 0.5 * (at(y0) + py), name);
+      return;
+    }
     // a body off the surface (a simulation that has let it go): the surface and its name where
     // the coordinates would keep the point, its foot, not at the body
     if (const double d = at(distance(m)); std::isfinite(d) && std::fabs(d) > 1e-9 * (1 + std::hypot(px, py))) {
@@ -315,6 +325,42 @@ std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
     if (v && (v->is_negative() || *v > 1))
       throw SceneError(en->pos, "the coefficient of restitution of track '" + ed.name + "' is " + numerics::format(*v, 6) + ", not from 0 to 1",
                        "give e from 0 (the body lands and stays) to 1 (it rebounds with its speed)");
+    e->e_given = true;
+  }
+  return e;
+}
+
+// A cord from a fixed point O to a point of a body, of length l: while taut it keeps the point on
+// the circle of radius l about O and pulls it toward O with its tension N ≥ 0; it goes slack where
+// N falls to zero (a bob whirled too slowly in a vertical circle). A track that can only pull.
+std::shared_ptr<Effect> read_cord(EffectReader& r, const EffectDef& ed) {
+  auto e = make<Track>(ed);
+  e->has_potential = true;  // V = 0: a taut cord of fixed length does no work
+  r.only(ed, {"length", "e"});
+  auto [anchor, p] = two_points(r, ed, "a cord runs from a fixed point to a point of a body", "write 'cord: [O, bob]' (the fixed point, then the body's point)");
+  if (anchor.body >= 0 || anchor.world_place)
+    throw SceneError(ed.arg.pos, "cord '" + ed.name + "' is tied to a moving body at '" + anchor.text + "'; a cord here runs from a fixed point",
+                     "write the fixed point first: 'cord: [O, bob]'");
+  if (p.body < 0 || p.world_place)
+    throw SceneError(ed.arg.pos, "cord '" + ed.name + "' holds a point of a body, but '" + p.text + "' is not one", "name body.point or a body (its mass centre)");
+  e->p = p;
+  e->arg_pos = ed.arg.pos;
+  e->circle = true;
+  e->cord = true;
+  e->pushes = -1;  // its pull is toward the anchor
+  e->x0 = anchor.wx;
+  e->y0 = anchor.wy;
+  const scene::Node& ln = r.option(ed, "length", "l");
+  e->R = r.quantity(r.text_of(ln, "length", "l"), false, units::Dimension::length(), "length", "a cord's length is a length");
+  r.positive(e->R, ln.pos, "the length of cord '" + ed.name + "'");
+  e->shape = "the circle of radius " + ln.scalar + " about " + anchor.text + " (the cord taut)";
+  if (auto* en = ed.options.get("e")) {
+    // e: how the point rebounds when the slack cord snaps taut again, v_n⁺ = −e v_n⁻ (0: it stays taut)
+    e->e = r.quantity(r.text_of(*en, "e", "0"), false, units::Dimension{}, "e", "a coefficient of restitution is a pure number from 0 to 1");
+    auto v = r.value_of(e->e, en->pos, "the coefficient of restitution");
+    if (v && (v->is_negative() || *v > 1))
+      throw SceneError(en->pos, "the coefficient of restitution of cord '" + ed.name + "' is " + numerics::format(*v, 6) + ", not from 0 to 1",
+                       "give e from 0 (the cord stays taut when it straightens) to 1");
     e->e_given = true;
   }
   return e;

@@ -120,6 +120,10 @@ public:
     };
     if (f == "T") {
       if (args.empty()) return m_.kinetic_energy();
+      // T(string): the tension of a cord (no body has the name), as N(string)
+      if (args.size() == 1 && m_.body_index(args[0]) < 0)
+        if (int e = m_.effect_index(args[0]); e >= 0)
+          if (auto r = m_.effects[e].reaction(m_); r && r->pulls) return reaction("N", args[0]);
       return m_.kinetic_energy(body(one("body")));
     }
     if (f == "V") {

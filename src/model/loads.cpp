@@ -156,6 +156,16 @@ Reaction Reaction::relation(PointRef a, PointRef b, ex ux, ex uy, ex fx, ex fy, 
   return r;
 }
 
+OneWay one_way(bool pulls, const std::string& body, const std::string& effect) {
+  if (pulls)
+    return {"cord '" + effect + "' goes slack", "tension", "a cord can only pull", "cord '" + effect + "' pulls on " + body,
+            "cord '" + effect + "' would have to push on " + body, "keeps cord '" + effect + "' taut", "the cord", "goes slack",
+            "where: [\"T(" + effect + ") = 0\"]"};
+  return {body + " leaves '" + effect + "'", "normal force", "a surface can only push", "the surface of '" + effect + "' pushes on " + body,
+          "the surface of '" + effect + "' would have to pull on " + body, "keeps " + body + " on '" + effect + "'", "the surface", "leaves",
+          "where: [\"N(" + effect + ") = 0\"]"};
+}
+
 Reaction Reaction::contact(PointRef a, PointRef b, ex nx, ex ny, ex e, bool stick) {
   Reaction r = pin(std::move(a), std::move(b));
   r.kind = Kind::Contact;

@@ -515,6 +515,7 @@ OneSidedLimits one_sided_limits(const Model& m) {
     const auto r = e.reaction(m);
     if (!r || r->kind != Reaction::Kind::Track || !r->one_sided) continue;
     const std::string body = r->a.body >= 0 ? m.bodies[static_cast<std::size_t>(r->a.body)].name : r->a.text;
+    const model::OneWay w = model::one_way(r->pulls, body, e.name);
     const ex N = m.instant_reactions.at(e.name)[0];
     // N ≥ 0 at state S: the surface pushes there (it cannot pull a body resting on it)
     auto at_state = [&](const ex& Ns, int S) {
@@ -522,10 +523,10 @@ OneSidedLimits one_sided_limits(const Model& m) {
       if (std::any_of(out.at_states.begin(), out.at_states.end(), [&](const OneSidedLimit& x) { return x.effect == e.name && x.state == S; })) return;
       out.at_states.push_back({e.name, S,
                                Condition{Ns,
-                                         "at state '" + st + "' the surface of '" + e.name + "' would have to pull on " + body + " ({} N): " + body +
-                                             " leaves it before that state, and a surface can only push",
-                                         "ask for the state where it leaves, where: [\"N(" + e.name + ") = 0\"], or take state '" + st + "' before it",
-                                         e.pos, "the surface of '" + e.name + "' pushes on " + body + " at state '" + st + "' (N >= 0)"}});
+                                         "at state '" + st + "' " + w.would + " ({} N): " + (r->pulls ? "it goes slack" : body + " leaves it") +
+                                             " before that state, and " + w.only,
+                                         "ask for the state where it " + w.verb + ", " + w.ask + ", or take state '" + st + "' before it",
+                                         e.pos, w.acts + " at state '" + st + "' (N >= 0)"}});
     };
     for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
       const model::Analysis& a = m.analyses[ai];
@@ -542,10 +543,10 @@ OneSidedLimits one_sided_limits(const Model& m) {
         const std::string S1 = m.states[static_cast<std::size_t>(a.from)].name, S2 = m.states[static_cast<std::size_t>(a.to)].name;
         out.at_states.push_back({e.name, -1,
                                  Condition{it->second[0],
-                                           "the impulse of '" + e.name + "' on " + body + " from state '" + S1 + "' to '" + S2 + "' would pull ({} N*s): " +
-                                               body + " leaves the surface on the way, and a surface can only push",
-                                           "check the loads and states: the motion keeps " + body + " on '" + e.name + "' only while the surface pushes",
-                                           e.pos, "the surface of '" + e.name + "' pushes on " + body + " from state '" + S1 + "' to '" + S2 + "'"}});
+                                           "the impulse of '" + e.name + "' on " + body + " from state '" + S1 + "' to '" + S2 + "' would " +
+                                               (r->pulls ? "push" : "pull") + " ({} N*s): " + w.lets_go + " on the way, and " + w.only,
+                                           "check the loads and states: the motion " + w.keeps + " only while " + w.is + (r->pulls ? " pulls" : " pushes"),
+                                           e.pos, w.acts + " from state '" + S1 + "' to '" + S2 + "'"}});
       }
       // N in closed form from Newton–Euler over the motion (or at the state), for the states'
       // values and the way between them
@@ -561,7 +562,7 @@ OneSidedLimits one_sided_limits(const Model& m) {
       at_state(m.bind(Ng, a.from), a.from);
       if (instant) continue;
       at_state(m.bind(Ng, a.to), a.to);
-      out.along[static_cast<int>(ai)].push_back({e.name, body, Ng, e.pos});
+      out.along[static_cast<int>(ai)].push_back({e.name, body, Ng, e.pos, r->pulls});
     }
   }
   return out;

@@ -268,10 +268,11 @@ void check_pushes(Way& w, const model::Analysis& a, const std::vector<PushAlong>
       const std::string name = m.coords[w.p].name, unit = units::si_name(m.coords[w.p].dim).empty() ? "rad" : units::si_name(m.coords[w.p].dim);
       const double where = 0.5 * (lo + hi);
       const std::string deg = unit == "rad" ? " (" + numerics::g_text(where * 180 / M_PI, 6) + " deg)" : "";
-      throw SceneError(push.pos, push.body + " leaves '" + push.effect + "' at " + name + " = " + numerics::g_text(where, 6) + " " + unit + deg +
-                                     ", before state '" + S2.name + "': there its normal force falls to zero, and a surface can only push, so the motion "
-                                     "the " + a.kind + " analysis from state '" + S1.name + "' takes (on the surface up to state '" + S2.name + "') does not happen",
-                       "ask for the state where it leaves, where: [\"N(" + push.effect + ") = 0\"], or take state '" + S2.name + "' before it");
+      const model::OneWay ow = model::one_way(push.pulls, push.body, push.effect);
+      throw SceneError(push.pos, ow.lets_go + " at " + name + " = " + numerics::g_text(where, 6) + " " + unit + deg + ", before state '" + S2.name +
+                                     "': there its " + ow.force + " falls to zero, and " + ow.only + ", so the motion the " + a.kind + " analysis from state '" +
+                                     S1.name + "' takes (" + (push.pulls ? "the cord taut" : "on the surface") + " up to state '" + S2.name + "') does not happen",
+                       "ask for the state where it " + ow.verb + ", " + ow.ask + ", or take state '" + S2.name + "' before it");
     }
 }
 

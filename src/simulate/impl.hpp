@@ -108,6 +108,7 @@ struct Simulator::Impl {
     ex N;  ///< in closed form (t, q, q̇), positive while it pushes: Newton–Euler for the body it holds
     SourcePos pos;
     std::string why_kept;  ///< why the run cannot go on with the body free of it ("": not asked to)
+    bool pulls = false;    ///< a cord (N its tension)
   };
   std::vector<Release> releases;
   std::size_t a_rel = 0;  ///< N of each release in the auxiliary kernel
@@ -355,6 +356,7 @@ struct Simulator::Impl {
       if (!r || r->kind != model::Reaction::Kind::Track || !r->one_sided || !on[i]) continue;
       if (std::find(freed.begin(), freed.end(), static_cast<int>(i)) != freed.end()) continue;  // a contact: its gap may open
       Release l;
+      l.pulls = r->pulls;
       for (auto& [k, why] : kept)
         if (k == static_cast<int>(i)) l.why_kept = why;
       l.effect = e.name;

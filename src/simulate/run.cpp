@@ -249,10 +249,16 @@ private:
     const auto r = p_.m.effects[p_.eq.contacts[k].effect].reaction(p_.m);
     return r && r->a.body >= 0 ? p_.m.bodies[static_cast<std::size_t>(r->a.body)].name : "the body";
   }
-  /// Contact k, a freed surface, opens now: the body leaves it.
+  /// How contact k, a freed surface or cord, is spoken of.
+  model::OneWay words(std::size_t k) const {
+    const auto r = p_.m.effects[p_.eq.contacts[k].effect].reaction(p_.m);
+    return model::one_way(r && r->pulls, surface_body(k), contact_name(k));
+  }
+  /// Contact k, a freed surface, opens now: the body leaves it (a cord goes slack).
   void leaves_surface(std::size_t k) {
-    note(surface_body(k) + " leaves '" + contact_name(k) + "' at " + place() + ": its normal force has fallen to zero, and it goes on free of it",
-         contact_name(k), "leaves");
+    const model::OneWay w = words(k);
+    note(w.lets_go + " at " + place() + ": its " + w.force + " has fallen to zero, and " + surface_body(k) + " goes on free of it", contact_name(k),
+         w.verb == "leaves" ? "leaves" : "slack");
   }
 
   // ---------------------------------------------------------------- the start
@@ -488,11 +494,12 @@ private:
   // the body on surface k leaves it now (N has fallen to zero): the error, with where
   [[noreturn]] void leaves(std::size_t k) {
     const auto& l = p_.releases[k];
-    const std::string fix = l.why_kept.empty() ? "the body leaves the surface there"
-                                               : "the body leaves the surface there; the simulation cannot go on with it free of it: " + l.why_kept;
-    throw ReleaseError(l.body + " leaves '" + l.effect + "' at t = " + numerics::g_text(t_, 6) + " s, " + place() + ": its normal force falls to zero there (" +
-                           numerics::g_text(p_.release_N(k), 6) + " N), and a surface can only push",
-                       fix, l.pos, l.effect, t_);
+    const model::OneWay w = model::one_way(l.pulls, l.body, l.effect);
+    const std::string fix = l.why_kept.empty() ? "the motion goes on there without it"
+                                               : "the simulation cannot go on with " + l.body + " free of it: " + l.why_kept;
+    throw ReleaseError(w.lets_go + " at t = " + numerics::g_text(t_, 6) + " s, " + place() + ": its " + w.force + " falls to zero there (" +
+                           numerics::g_text(p_.release_N(k), 6) + " N), and " + w.only,
+                       fix, l.pos, l.effect, t_, w);
   }
 
   // rolling contact k slips now (its F and N in aux): the error, with both numbers
@@ -818,8 +825,9 @@ private:
       std::vector<double> e, vt_before;
       for (std::size_t k : strike) {
         if (p_.ce[k] < 0)
-          throw SimulationError(surface_body(k) + " strikes '" + contact_name(k) + "' again at t = " + numerics::g_text(t_, 6) + " s, " + place() +
-                                    ", and the track does not say how it rebounds",
+          throw SimulationError((words(k).verb == "leaves" ? surface_body(k) + " strikes '" + contact_name(k) + "' again"
+                                                           : "cord '" + contact_name(k) + "' snaps taut") +
+                                    " at t = " + numerics::g_text(t_, 6) + " s, " + place() + ", and the track does not say how it rebounds",
                                 "give the track its coefficient of restitution, 'e: 0' (it lands and stays) to 'e: 1'",
                                 p_.m.effects[p_.eq.contacts[k].effect].pos);
         e.push_back(p_.ce[k]);
@@ -864,7 +872,9 @@ private:
       run_.impacts.push_back(im);
       for (std::size_t k : strike)
         if (p_.eq.contacts[k].surface)
-          note(surface_body(k) + " strikes '" + contact_name(k) + "' at " + place() + " (e = " + numerics::g_text(p_.ce[k], 6) + ")", contact_name(k), "strikes");
+          note(words(k).verb == "leaves" ? surface_body(k) + " strikes '" + contact_name(k) + "' at " + place() + " (e = " + numerics::g_text(p_.ce[k], 6) + ")"
+                                         : "cord '" + contact_name(k) + "' snaps taut at " + place() + " (e = " + numerics::g_text(p_.ce[k], 6) + ")",
+               contact_name(k), words(k).verb == "leaves" ? "strikes" : "taut");
       // what follows: rest (e = 0, or a bounce too short to resolve), or a flight
       for (std::size_t j = 0; j < strike.size(); ++j) {
         std::size_t k = strike[j];

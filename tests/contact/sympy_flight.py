@@ -24,6 +24,13 @@ asserted by tests/simulate/test_flight.cpp are printed and asserted here (15 sig
      theta_dot^2/2 + (m L^2/12) theta_dot^2/2, V = m g (L/2) cos theta. At t* + 0.2 s: theta and
      B's distance from the wall x_B = x_G - (L/2) sin(theta) (kinergy's wall_gap), the floor still
      pushing (N_A = m (y_G_ddot + g) > 0 checked along the way).
+  3. derivations/kinetics/bob_cord_slack.yaml -- a bob (m = 0.5 kg) on a cord of length l = 1.2 m
+     from the bottom at v0 = 6 m/s, theta from the downward vertical. Taut: theta_dot^2 = (v0^2 -
+     2 g l (1 - cos theta))/l^2, the tension m v^2/l + m g cos(theta) = 0 at cos(theta*) =
+     -(v0^2 - 2 g l)/(3 g l). Then a projectile from l (sin, -cos)(theta*) with velocity
+     l theta_dot* (cos, sin)(theta*), until its distance from O is l again (mpmath findroot): the cord
+     snaps taut with e = 0, taking the velocity along the cord (v_n, the approach along the inward
+     normal, is asserted) and keeping the part across it (T after = m v_t^2/2).
 """
 import mpmath as mp
 import sympy as sp
@@ -89,4 +96,29 @@ check("ladder theta_leave_deg", ths * 180 / mp.pi, "51.0531254544615")
 check("ladder theta(t_leave + 0.2)", th1, "1.31472706779781")
 check("ladder theta_dot(t_leave + 0.2)", w1, "2.47935197384411")
 check("ladder wall_gap(t_leave + 0.2)", xG - L / 2 * mp.sin(th1), "0.0466367038593675")
+
+# 3. the bob whirled too slowly
+m, l, v0 = mp.mpf("0.5"), mp.mpf("1.2"), mp.mpf(6)
+ths = mp.acos(-(v0**2 - 2 * g * l) / (3 * g * l))
+rate = lambda th: mp.sqrt(v0**2 - 2 * g * l * (1 - mp.cos(th))) / l
+t_slack = mp.quad(lambda th: 1 / rate(th), [0, ths])
+P = mp.matrix([l * mp.sin(ths), -l * mp.cos(ths)])
+V = l * rate(ths) * mp.matrix([mp.cos(ths), mp.sin(ths)])
+at = lambda tau: (P[0] + V[0] * tau, P[1] + V[1] * tau - g * tau**2 / 2)
+# the first return to |r| = l: |r| < l just after the release (the bob falls inside the circle)
+assert mp.hypot(*at(mp.mpf("0.01"))) < l
+grid = [mp.mpf(k) / 1000 for k in range(10, 3000)]
+k = next(i for i, tau in enumerate(grid) if mp.hypot(*at(tau)) >= l)
+tau = mp.findroot(lambda tau: mp.hypot(*at(tau)) - l, (grid[k - 1], grid[k]), solver="anderson")
+x, y = at(tau)
+vx, vy = V[0], V[1] - g * tau
+n_in = (-x / l, -y / l)  # the cord's pull, toward O
+vn = vx * n_in[0] + vy * n_in[1]  # the gap's rate (the gap opens inward): < 0 as the cord straightens
+vt = vx * (-y / l) + vy * (x / l)  # across the cord, (cos, sin)(theta) with (x, y) = l (sin, -cos)
+check("bob t_slack", t_slack, "0.527529055311618")
+check("bob theta_slack_deg", ths * 180 / mp.pi, "110.652629518225")
+check("bob t_taut", t_slack + tau, "1.30497995964184")
+check("bob theta_taut", mp.atan2(x, -y), "0.489427173932131")
+check("bob vn_taut", vn, "-4.71070275247336")
+check("bob T_after", m * vt**2 / 2, "2.76131703586534")
 print("ok")

@@ -109,6 +109,13 @@ const std::vector<Row> kTable = {
   // where the surface pushes, refused on a guide, which no body leaves
   {"track", "e", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up, e: 0.5}\n  w: {gravity: g, direction: [0, -1]}", true, ""},
   {"track", "e", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, holds: both, e: 0.5}", false, "a body never leaves it"},
+  // a cord from O to the wheel's centre, which the coordinates keep at its length h: it holds, and
+  // pulls no more than nothing holds it against (N = 0 >= 0); the wrong length is off its circle
+  {"cord", "", "energy", "e: {cord: [O, wheel], length: h}", true, ""},
+  {"cord", "length", "energy", "e: {cord: [O, wheel], length: h/2}", false, "off the circle"},
+  {"cord", "e", "energy", "e: {cord: [O, wheel], length: h, e: 0}", true, ""},
+  {"cord", "on", "energy", "e: {cord: [O, wheel], length: h, on: 2}", true, ""},
+  {"cord", "off", "energy", "e: {cord: [O, wheel], length: h, off: 1}", true, ""},
   {"track", "holds", "momentum", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, holds: both}\n  w: {gravity: g, direction: [0, 1]}", true, ""},
   // on and off, every kind's: switched where the analysis does not reach it, the effect is not
   // there (the simulation runs without it too); switched inside an energy analysis, its work is

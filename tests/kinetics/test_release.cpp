@@ -53,7 +53,7 @@ TEST_CASE("release: the confirming simulation follows the push between the state
   // way; it is positive at both states, and the simulation finds where it falls to zero
   const std::string loop = contact("loop_two_bodies.yaml");
   auto s = kt::solve_text(loop);  // solved: the states alone do not show it
-  REQUIRE_THROWS_WITH(kinergy::confirm(s), Catch::Contains("keeps the body on 'loop', but in the simulated motion it leaves it before state '2'") &&
+  REQUIRE_THROWS_WITH(kinergy::confirm(s), Catch::Contains("keeps ball on 'loop', but in the simulated motion it leaves before state '2'") &&
                                                Catch::Contains("theta = 2.16105 rad (123.819 deg)"));
 }
 
@@ -71,4 +71,24 @@ TEST_CASE("release: a run told not to follow the body stops where it leaves, the
     CHECK(e.effect() == "surface");
     CHECK_THAT(std::string(e.what()), Catch::Contains("block leaves 'surface' at t = ") && Catch::Contains("theta = 0.788524 rad (45.1791 deg)"));
   }
+}
+
+TEST_CASE("release: a cord that only pulls goes slack where its tension falls to zero", "[kinetics][release]") {
+  // v0 = 6 m/s < sqrt(5 g l): the tension m v^2/l + m g cos(theta) falls to zero at cos(theta) =
+  // -(v0^2 - 2 g l)/(3 g l), 110.653 deg (sympy_flight.py, case 3)
+  auto s = kt::solve_text(kt::derivation("kinetics/bob_cord_slack.yaml"));
+  CHECK(degrees(s, "theta2") == "110.653");
+  REQUIRE_THROWS_WITH(kt::solve_text(contact("bob_whirled_past_slack.yaml")),
+                      Catch::Contains("cord 'string' goes slack at theta = 1.93125 rad (110.653 deg), before state '2'") &&
+                          Catch::Contains("a cord can only pull") && Catch::Contains("where: [\"T(string) = 0\"]"));
+}
+
+TEST_CASE("release: a cord runs from a fixed point to a body's point, with a length", "[kinetics][release][errors]") {
+  const std::string bob = kt::derivation("kinetics/bob_cord_slack.yaml");
+  REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(bob, "string: {cord: [O, bob], length: l, e: 0}", "string: {cord: [bob, O], length: l}")),
+                      Catch::Contains("write the fixed point first"));
+  REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(bob, "string: {cord: [O, bob], length: l, e: 0}", "string: {cord: [O, bob]}")),
+                      Catch::Contains("length"));
+  REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(bob, "length: l, e: 0}", "length: l, e: 2}")), Catch::Contains("not from 0 to 1"));
+  REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(bob, "length: l, e: 0}", "length: l, pushes: up}")), Catch::Contains("pushes"));
 }

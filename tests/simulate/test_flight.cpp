@@ -80,3 +80,22 @@ TEST_CASE("flight: a body that strikes its surface again needs the track's e", "
   CHECK(r.switches[1].kind == "strikes");
   CHECK(std::fabs(r.end.qd[0] - 1) < 1e-9);  // smooth: its sliding speed is kept
 }
+
+TEST_CASE("flight: a cord whirled too slowly goes slack, the bob flies, and the cord snaps taut", "[simulate][release]") {
+  // v0 = 6 m/s at the bottom, l = 1.2 m: slack at t = 0.527529055311618 s, 110.652629518225 deg; taut again
+  // (e = 0) at t = 1.30497995964184 s, theta = 0.489427173932131 rad, approaching at v_n = -4.71070275247336
+  // m/s, T = 2.76131703586534 J after (sympy_flight.py, case 3)
+  const sim::Run r = run(kt::derivation("kinetics/bob_cord_slack.yaml"), 1.5);
+  REQUIRE(r.switches.size() == 2);
+  CHECK(r.switches[0].kind == "slack");
+  CHECK(std::fabs(r.switches[0].t - 0.527529055311618) < 1e-8);
+  CHECK_THAT(r.switches[0].text, Catch::Contains("cord 'string' goes slack at theta = 1.93125 rad (110.653 deg)"));
+  CHECK(r.switches[1].kind == "taut");
+  REQUIRE(r.impacts.size() == 1);
+  const sim::Impact& im = r.impacts[0];
+  CHECK(std::fabs(im.t - 1.30497995964184) < 1e-8);
+  CHECK(std::fabs(im.vn_before[0] - -4.71070275247336) < 1e-7);
+  CHECK(std::fabs(im.vn_after[0]) < 1e-9);  // e = 0: it stays taut
+  CHECK(std::fabs(im.T_after - 2.76131703586534) < 1e-7);
+  CHECK_THAT(r.switches[1].text, Catch::Contains("theta = 0.489427 rad"));
+}

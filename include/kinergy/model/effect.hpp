@@ -103,6 +103,9 @@ struct Reaction {
   /// lets the body leave it (simulate/freed.cpp); and `e`, the restitution when the body strikes
   /// it again (−1: not said).
   ex gap = 0;
+  /// One-sided and a cord (`cord: [O, bob]`): N is its tension, pulling the point toward O; it
+  /// goes slack where N falls to zero, and snaps taut (an impact, with e) where it straightens.
+  bool pulls = false;
   SourcePos limit_pos;  ///< where `mu_s` is written
   /// The names of its unknowns over a duration: Rx, Ry (pin), N (track), J (relation); a
   /// contact has none (it acts in impacts only).
@@ -118,6 +121,21 @@ struct Reaction {
   static Reaction relation(PointRef a, PointRef b, ex ux, ex uy, ex fx, ex fy, std::size_t constraint);
   static Reaction contact(PointRef a, PointRef b, ex nx, ex ny, ex e, bool stick);
 };
+
+/// How a support that acts one way is spoken of: a surface that only pushes, or a cord that only
+/// pulls (Reaction::pulls), holding `body`.
+struct OneWay {
+  std::string lets_go;  ///< "ball leaves 'dome'" / "cord 'string' goes slack"
+  std::string force;    ///< "normal force" / "tension"
+  std::string only;     ///< "a surface can only push" / "a cord can only pull"
+  std::string acts;     ///< "the surface of 'dome' pushes on ball" / "cord 'string' pulls on bob"
+  std::string would;    ///< "the surface of 'dome' would have to pull on ball" / "cord 'string' would have to push on bob"
+  std::string keeps;    ///< "keeps ball on 'dome'" / "keeps cord 'string' taut"
+  std::string is;       ///< "the surface" / "the cord"
+  std::string verb;     ///< "leaves" / "goes slack"
+  std::string ask;      ///< the state where it lets go: `where: ["N(dome) = 0"]` / `where: ["T(string) = 0"]`
+};
+OneWay one_way(bool pulls, const std::string& body, const std::string& effect);
 
 /// The kinematics a load's force and couple work along (src/model/loads.cpp):
 /// v_rel = v_at − v_partner (the partner's point, 0 for a fixed party or none).

@@ -139,6 +139,7 @@ struct PushAlong {
   std::string body;    ///< what it holds ("the ball"), for the message
   ex N;                ///< generic (q, q̇, parameters): positive while it pushes
   SourcePos pos;       ///< where the track is declared
+  bool pulls = false;  ///< a cord (its tension), not a surface
 };
 void check_reached(const model::Model& m, const model::Analysis& a, const EnergyBalance& bal, const GiNaC::exmap& values,
                    const std::vector<PushAlong>& pushes = {});

@@ -48,13 +48,17 @@ public:
 /// zero in the run. The simulator does not go on with the body free of it.
 class ReleaseError : public SimulationError {
 public:
-  ReleaseError(std::string what, std::string fix, SourcePos pos, std::string effect, double t)
-      : SimulationError(std::move(what), std::move(fix), std::move(pos)), effect_(std::move(effect)), t_(t) {}
+  ReleaseError(std::string what, std::string fix, SourcePos pos, std::string effect, double t, const model::OneWay& w)
+      : SimulationError(std::move(what), std::move(fix), std::move(pos)), effect_(std::move(effect)), t_(t), keeps_(w.keeps), verb_(w.verb), ask_(w.ask) {}
   const std::string& effect() const { return effect_; }  ///< the track
   double t() const { return t_; }                         ///< when, in s
+  const std::string& keeps() const { return keeps_; }    ///< "keeps ball on 'dome'" (model::OneWay)
+  const std::string& verb() const { return verb_; }      ///< "leaves", "goes slack"
+  const std::string& ask() const { return ask_; }        ///< where: ["N(dome) = 0"]
 private:
   std::string effect_;
   double t_;
+  std::string keeps_, verb_, ask_;
 };
 
 struct Options {
