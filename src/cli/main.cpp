@@ -446,7 +446,7 @@ struct SimulateCommand {
   std::string scene;
   double until = 0, tol = 1e-10, step = 0, sample_dt = 0;
   std::string method = "dopri5", from, csv_out, plot_out, animate_out;
-  bool equations = false, check = false, no_native = false;
+  bool equations = false, check = false, no_native = false, as_json = false;
   int samples = 1000;
   CLI::App* simulate = nullptr;
 
@@ -475,6 +475,7 @@ struct SimulateCommand {
     simulate->add_flag("--equations", equations, "print the equations of motion");
     simulate->add_flag("--check", check, "run every analysis of the scene as a simulation and compare with the closed forms");
     simulate->add_flag("--no-native", no_native, "evaluate the right-hand side by the tape instead of compiled machine code");
+    simulate->add_flag("--json", as_json, "print the run for tools: the end state, every switch and impact at its instant, the log and the energy audit");
   }
 
   /// --check: every analysis run as a simulation and compared; an exit status when that is all
@@ -569,7 +570,9 @@ struct SimulateCommand {
       if (shown) std::cerr << "\n";
       // the model the run integrated: the scene's, with the gaps of the surfaces its bodies may leave
       const kinergy::model::Model& rm = r.model ? *r.model : m;
-      std::cout << m.title << "\n"
+      if (as_json) std::cout << sim::json(rm, r);
+      else
+        std::cout << m.title << "\n"
                 << "method " << sim::method_name(o.method) << ", tol " << tol << ", right-hand side " << (o.native ? "compiled" : "tape")
                 << "; from state '" << m.states[static_cast<std::size_t>(start)].name << "' at t = " << s0.t << " s\n"
                 << r.steps << " steps (" << r.rejected << " rejected), " << r.rhs_calls << " right-hand side evaluations, "

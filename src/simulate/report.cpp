@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/common/markup.hpp"
 #include "kinergy/common/process.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 
@@ -25,6 +26,48 @@ std::string unit_of(const model::Coordinate& c, bool rate) {
 }
 
 }  // namespace
+
+std::string json(const model::Model& m, const Run& r) {
+  auto num = [](double v) {
+    if (!std::isfinite(v)) return std::string("null");
+    char b[32];
+    std::snprintf(b, sizeof b, "%.17g", v);
+    return std::string(b);
+  };
+  auto list = [&](const std::vector<double>& v) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + num(v[i]);
+    return s + "]";
+  };
+  std::ostringstream os;
+  const Sample& e = r.end;
+  os << "{\n  \"end\": {\"t\": " << num(e.t) << ", \"stopped\": " << (r.stopped ? "true" : "false") << ",\n    \"q\": {";
+  for (std::size_t i = 0; i < m.coords.size(); ++i) os << (i ? ", " : "") << json_quote(m.coords[i].name) << ": " << num(e.q[i]);
+  os << "},\n    \"q_dot\": {";
+  for (std::size_t i = 0; i < m.coords.size(); ++i) os << (i ? ", " : "") << json_quote(m.coords[i].name) << ": " << num(e.qd[i]);
+  os << "},\n    \"T\": " << num(e.T) << ", \"V\": " << num(e.V) << "},\n  \"switches\": [";
+  for (std::size_t k = 0; k < r.switches.size(); ++k) {
+    const Switch& s = r.switches[k];
+    os << (k ? "," : "") << "\n    {\"t\": " << num(s.t) << ", \"effect\": " << json_quote(s.effect) << ", \"kind\": " << json_quote(s.kind)
+       << ", \"text\": " << json_quote(s.text) << "}";
+  }
+  os << (r.switches.empty() ? "" : "\n  ") << "],\n  \"impacts\": [";
+  for (std::size_t k = 0; k < r.impacts.size(); ++k) {
+    const Impact& im = r.impacts[k];
+    os << (k ? "," : "") << "\n    {\"t\": " << num(im.t) << ", \"contacts\": [";
+    for (std::size_t j = 0; j < im.contacts.size(); ++j) os << (j ? ", " : "") << json_quote(im.contacts[j]);
+    os << "], \"vn_before\": " << list(im.vn_before) << ", \"vn_after\": " << list(im.vn_after) << ", \"impulse\": " << list(im.impulse)
+       << ", \"energy_lost\": " << num(im.loss) << ", \"comes_to_rest\": " << (im.comes_to_rest ? "true" : "false") << "}";
+  }
+  os << (r.impacts.empty() ? "" : "\n  ") << "],\n  \"log\": [";
+  for (std::size_t k = 0; k < r.log.size(); ++k) os << (k ? "," : "") << "\n    " << json_quote(r.log[k]);
+  os << (r.log.empty() ? "" : "\n  ") << "],\n  \"energy\": {\"E0\": " << num(r.E0) << ", \"E1\": " << num(r.E1) << ", \"lost_in_impacts\": " << num(r.impact_loss)
+     << ", \"work\": {";
+  for (std::size_t k = 0; k < r.work.size(); ++k) os << (k ? ", " : "") << json_quote(r.work[k].first) << ": " << num(r.work[k].second);
+  os << "}, \"scale\": " << num(r.energy_scale) << ", \"drift\": " << num(r.drift) << ", \"conservative\": " << (r.conservative ? "true" : "false") << "},\n"
+     << "  \"steps\": " << r.steps << ", \"rejected\": " << r.rejected << "\n}\n";
+  return os.str();
+}
 
 std::string text(const model::Model& m, const Run& r) {
   std::ostringstream os;

@@ -99,3 +99,14 @@ TEST_CASE("flight: a cord whirled too slowly goes slack, the bob flies, and the 
   CHECK(std::fabs(im.T_after - 2.76131703586534) < 1e-7);
   CHECK_THAT(r.switches[1].text, Catch::Contains("theta = 0.489427 rad"));
 }
+
+TEST_CASE("flight: simulate --json lists each switch at its instant, the same bytes on every run", "[simulate][release][cli]") {
+  int status = 0;
+  const std::string cmd = "simulate derivations/kinetics/bob_cord_slack.yaml --until 1.5 --json --no-native";
+  const std::string out = kt::run_cli(cmd, status);
+  REQUIRE(status == 0);
+  CHECK_THAT(out, Catch::Contains("\"switches\": [\n    {\"t\": 0.5275290") && Catch::Contains("\"effect\": \"string\", \"kind\": \"slack\"") &&
+                      Catch::Contains("\"kind\": \"taut\"") && Catch::Contains("\"string_gap\": ") && Catch::Contains("\"impacts\": [\n    {\"t\": 1.304979959"));
+  int again_status = 0;
+  CHECK(kt::run_cli(cmd, again_status) == out);
+}
