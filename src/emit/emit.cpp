@@ -80,6 +80,9 @@ std::string text(const Solution& s, const Options& o) {
     if (std::none_of(s.confirmed.begin(), s.confirmed.end(), [&](const Confirmed& c) { return c.analysis == ai && c.by == Confirmed::By::Simulation; }))
       os << "Not checked: the static friction of the rolling between the states of the " << analysis_name(s, ai)
          << " analysis, where it changes with the motion (the simulation that checks it was not run: --no-confirm)\n";
+  // a surface's push (a cord's pull) that Newton's law does not give in closed form is not
+  // followed along the motion: said, with why
+  for (auto& why : s.one_sided_unchecked) os << "Not checked: the push of " << why << "\n";
   if (!s.confirmed.empty()) {
     os << "Confirmed a second way:\n";
     for (auto& c : s.confirmed) os << "  " << analysis_name(s, c.analysis) << ": " << confirmed_text(c) << "\n";

@@ -52,8 +52,10 @@ std::string held_otherwise(const model::Model& m, int b, const std::vector<int>&
   return "";
 }
 
-/// Do the coordinates move body b every way a free body moves: x, y and (unless a particle) its
-/// angle, independently? The Jacobian of (x, y, angle) at sample coordinates, its rank.
+/// Do the coordinates move body b every way a free body moves — x, y and (unless a particle) its
+/// angle — each coordinate it moves with a way of its own? The Jacobian of (x, y, angle) at
+/// sample coordinates: its rank, and as many coordinates moving the body (two surfaces pushing it
+/// the same way would give two gaps along one line: a mass matrix without an inverse).
 bool moves_freely(const model::Model& m, int b, const exmap& values) {
   const model::Body& body = m.bodies[static_cast<std::size_t>(b)];
   const bool turns = !body.inertia.is_zero();
@@ -71,7 +73,9 @@ bool moves_freely(const model::Model& m, int b, const exmap& values) {
     }
   Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
   lu.setThreshold(1e-9);
-  return static_cast<std::size_t>(lu.rank()) == place.size();
+  std::size_t moving = 0;
+  for (Eigen::Index i = 0; i < J.cols(); ++i) moving += J.col(i).norm() > 0;
+  return static_cast<std::size_t>(lu.rank()) == place.size() && moving == place.size();
 }
 
 std::string unused_name(const model::Model& m, std::string name) {
@@ -121,7 +125,8 @@ Freed free_surfaces(const model::Model& m, const std::vector<bool>& on, const ex
     }
     std::string not_free = why;
     if (not_free.empty() && !moves_freely(trial, b, values))
-      not_free = "its coordinates tie its turning to its place (it rolls, or keeps its angle), and free of the surface it would turn on its own";
+      not_free = "its coordinates do not move it every way a free body moves, each in a way of its own (they tie its turning to its place, as "
+                 "in rolling, or keep its angle; or two surfaces push it the same way)";
     if (!not_free.empty()) {
       for (int i : tracks) f.kept.emplace_back(i, not_free);
       continue;

@@ -7,7 +7,9 @@
 #include <catch2/catch.hpp>
 
 #include "../support/helpers.hpp"
+#include "kinergy/confirm/check.hpp"
 #include "kinergy/confirm/confirm.hpp"
+#include "kinergy/emit/emit.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/simulate/simulate.hpp"
 
@@ -91,4 +93,44 @@ TEST_CASE("release: a cord runs from a fixed point to a body's point, with a len
                       Catch::Contains("length"));
   REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(bob, "length: l, e: 0}", "length: l, e: 2}")), Catch::Contains("not from 0 to 1"));
   REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(bob, "length: l, e: 0}", "length: l, pushes: up}")), Catch::Contains("pushes"));
+  // a track's e: a restitution from 0 to 1, and only where it can only push
+  const std::string dome = kt::derivation("kinetics/ball_leaves_dome.yaml");
+  REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(dome, "pushes: outward}", "pushes: outward, e: 1.5}")),
+                      Catch::Contains("coefficient of restitution of track 'dome' is 1.5, not from 0 to 1"));
+  REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(dome, "pushes: outward}", "holds: both, e: 0.5}")), Catch::Contains("'e' has no use here"));
+}
+
+TEST_CASE("release: a push Newton's law does not determine is said not checked, and the run does not free the body", "[kinetics][release][simulate]") {
+  // two floors under one block: N1 + N2 = m g, each undetermined (statically indeterminate)
+  const std::string text = contact("two_floors.yaml");
+  auto s = kt::solve_text(text);
+  CHECK_THAT(kinergy::emit::text(s, {}), Catch::Contains("Not checked: the push of 'floor1' during the energy analysis from state '1' to '2'") &&
+                                             Catch::Contains("statically indeterminate"));
+  // the simulator cannot give the block a gap for each (two along one line): it slides on, held
+  const kinergy::model::Model m = kt::model_of(text);
+  kinergy::simulate::Options o;
+  o.native = false;
+  kinergy::simulate::Simulator sim(m, m.parameter_values(), o);
+  CHECK(sim.model().coords.size() == 1);
+  const auto r = sim.run({0, {0}, {2}}, {0.5, std::nullopt, true});
+  CHECK(std::fabs(r.end.q[0] - 1) < 1e-12);
+}
+
+TEST_CASE("release: a rolling body is not freed: the run stops where it leaves, saying why", "[simulate][release]") {
+  // the sphere rolling off the sphere: its rolling relation holds it (free of the surface, the
+  // relation would still tie its turning to its place)
+  auto s = kt::solve_text(kt::derivation("kinetics/sphere_rolls_off_sphere.yaml"));
+  kinergy::simulate::Options o;
+  o.native = false;
+  kinergy::simulate::Simulator sim(s.model, kinergy::parameter_values(s), o);
+  const auto s0 = kinergy::simulate::state_values(s, 0);
+  auto nudged = s0;
+  nudged.qd[0] = 1e-3;  // (from rest at the top: an equilibrium)
+  try {
+    sim.run(nudged, {20.0, std::nullopt, true});
+    FAIL("the run went past the release");
+  } catch (const kinergy::simulate::ReleaseError& e) {
+    CHECK_THAT(std::string(e.what()), Catch::Contains("leaves '"));
+    CHECK_THAT(e.fix(), Catch::Contains("cannot go on with") && Catch::Contains("a relation between the coordinates holds"));
+  }
 }
