@@ -27,6 +27,7 @@ public:
   ex fx = 0, fy = 0;      ///< F = λ f on party a (generic)
   ex ux = 0, uy = 0;      ///< f / |f|: the direction J is measured along
   ex mu_s = 0;            ///< static friction that holds it: |F| ≤ μ_s |N| (0: none stated)
+  ex mu_k = -1;           ///< kinetic friction once it slips (a simulation's sliding; −1: not said)
   std::string normal;     ///< the track effect whose normal force N presses the parties together
   SourcePos limit_pos;
 
@@ -58,6 +59,7 @@ public:
   std::optional<model::Reaction> reaction(const Model&) const override {
     model::Reaction r = model::Reaction::relation(a, b, ux, uy, fx, fy, index);
     r.mu_s = mu_s;
+    r.mu_k = mu_k;
     r.normal = normal;
     r.limit_pos = limit_pos;
     return r;
@@ -103,7 +105,7 @@ void place(EffectReader& r, PointRef& p, const scene::Node& at) {
 std::shared_ptr<Effect> read_constraint(EffectReader& r, const EffectDef& ed) {
   auto e = make<Constraint>(ed);
   e->has_potential = true;  // V = 0: workless on the whole system
-  r.only(ed, {"between", "at", "mu_s", "normal"});
+  r.only(ed, {"between", "at", "mu_s", "normal", "mu_k"});
   const Model& m = r.model();
   scene::Text rel = r.text_of(ed.arg, "constraint", "\"rA*phiA + rB*phiB = 0\"");
   const scene::Node& bn = r.option(ed, "between", "[gearA, gearB]");
@@ -189,6 +191,13 @@ std::shared_ptr<Effect> read_constraint(EffectReader& r, const EffectDef& ed) {
       throw SceneError(nn->pos, "constraint '" + ed.name + "': 'normal' names a track effect", "write 'normal: floor'");
     e->normal = nn->scalar;
     e->limit_pos = mu->pos;
+  }
+  if (const scene::Node* mk = ed.options.get("mu_k")) {
+    // μ_k: the friction once the contact slips, −μ_k N against the slip (only a simulation goes on past a slip)
+    if (!mu)
+      throw SceneError(mk->pos, "constraint '" + ed.name + "': 'mu_k' is the friction once a rolling contact slips, and nothing says when it slips",
+                       "give 'mu_s' and 'normal' with it (the static friction that holds it, and the track whose normal force it multiplies)");
+    e->mu_k = non_negative(r, ed, "mu_k", "0.25", Dimension{}, "a friction coefficient is a pure number", "the coefficient of kinetic friction");
   }
   return e;
 }

@@ -28,8 +28,20 @@ namespace {
 
 bool moves_with(const model::Body& b, const ex& q) { return b.x.has(q) || b.y.has(q) || b.angle.has(q); }
 
+/// A relation with mu_s rolling body b on one of `tracks` (its `normal`), against a fixed party:
+/// the track it rolls on, or −1.
+int rolls_on(const model::Model& m, const model::Reaction& r, int b, const std::vector<int>& tracks) {
+  if (r.kind != model::Reaction::Kind::Relation || r.mu_s.is_zero()) return -1;
+  const bool fixed_other = (r.a.body == b && r.b.body < 0) || (r.b.body == b && r.a.body < 0);
+  if (!fixed_other) return -1;
+  for (int t : tracks)
+    if (m.effects[static_cast<std::size_t>(t)].name == r.normal) return t;
+  return -1;
+}
+
 /// Why body `b` cannot be freed from `tracks` ("" when it can): something else holds it, which
-/// the shift would break.
+/// the shift would break. A relation rolling it on one of them is not in the way (it goes with
+/// the surface).
 std::string held_otherwise(const model::Model& m, int b, const std::vector<int>& tracks, const std::vector<bool>& on) {
   const model::Body& body = m.bodies[static_cast<std::size_t>(b)];
   for (std::size_t c = 0; c < m.bodies.size(); ++c) {
@@ -38,14 +50,22 @@ std::string held_otherwise(const model::Model& m, int b, const std::vector<int>&
       if (moves_with(body, co.q) && moves_with(m.bodies[c], co.q))
         return "'" + body.name + "' and '" + m.bodies[c].name + "' move with the same coordinate " + co.name;
   }
-  for (auto& [g, pos] : m.constraints)
+  for (std::size_t k = 0; k < m.constraints.size(); ++k) {
+    const model::Effect* carrier = m.carrier(k);
+    if (carrier) {
+      auto r = carrier->reaction(m);
+      const std::size_t ci = static_cast<std::size_t>(m.effect_index(carrier->name));
+      if ((!on.empty() && !on[ci]) || (r && rolls_on(m, *r, b, tracks) >= 0)) continue;
+    }
     for (auto& co : m.coords)
-      if (g.has(co.q) && moves_with(body, co.q)) return "a relation between the coordinates holds '" + body.name + "'";
+      if (m.constraints[k].first.has(co.q) && moves_with(body, co.q)) return "a relation between the coordinates holds '" + body.name + "'";
+  }
   for (std::size_t i = 0; i < m.effects.size(); ++i) {
     if (std::find(tracks.begin(), tracks.end(), static_cast<int>(i)) != tracks.end()) continue;
     if (!on.empty() && !on[i]) continue;
     auto r = m.effects[i].reaction(m);
     if (!r || r->kind == model::Reaction::Kind::Contact) continue;  // (a contact is geometric: it follows the body)
+    if (rolls_on(m, *r, b, tracks) >= 0) continue;                  // (it rolls the body on its surface)
     auto bs = r->bodies();
     if (std::find(bs.begin(), bs.end(), b) != bs.end()) return "'" + m.effects[i].name + "' holds '" + body.name + "' too";
   }
@@ -121,7 +141,15 @@ Freed free_surfaces(const model::Model& m, const std::vector<bool>& on, const ex
       body.x += c.q * r.dir_x;
       body.y += c.q * r.dir_y;
       trial.coords.push_back(c);
-      mine.push_back({i, c.q, tracks.size() == 1});
+      mine.push_back({i, c.q, tracks.size() == 1, -1});
+    }
+    // the relations that roll the body on its surfaces go with them
+    for (std::size_t k = 0; k < m.effects.size(); ++k) {
+      if (!on.empty() && !on[k]) continue;
+      auto r = m.effects[k].reaction(m);
+      const int t = r ? rolls_on(m, *r, b, tracks) : -1;
+      for (auto& sf : mine)
+        if (sf.effect == t) sf.rolling = static_cast<int>(k);
     }
     std::string not_free = why;
     if (not_free.empty() && !moves_freely(trial, b, values))
@@ -151,6 +179,16 @@ ContactTerm surface_contact(const Freed& f, const Freed::Surface& s) {
   auto [vx, vy] = freed.velocity(r.a);
   c.tangent = linear_rate(freed, -r.dir_y * vx + r.dir_x * vy);
   c.e = r.e;
+  if (s.rolling >= 0) {
+    // the rolling: its relation c(q, t) = 0 held at the velocity level, ċ = 0, while it sticks
+    const model::Reaction rr = *freed.effects[static_cast<std::size_t>(s.rolling)].reaction(freed);
+    c.rolling = s.rolling;
+    c.stick = true;
+    c.tangent = linear_rate(freed, freed.rate(freed.constraints[rr.constraint].first));
+    c.mu_s = rr.mu_s;
+    c.mu_k = rr.mu_k;
+    c.force_per = sqrt(rr.fx * rr.fx + rr.fy * rr.fy);
+  }
   return c;
 }
 

@@ -24,6 +24,7 @@ struct Freed {
     int effect = -1;
     GiNaC::realsymbol s;
     bool alone = true;
+    int rolling = -1;  ///< the relation with mu_s that rolls the body on it (a constraint effect), or −1
   };
   std::vector<Surface> surfaces;  ///< in the order of the effects
   /// Surfaces whose bodies cannot be freed, each with why ("'wheel' rolls: its coordinates tie its
@@ -35,7 +36,9 @@ struct Freed {
 /// body is freed when nothing else holds it that the shift would break — no other body moves with
 /// its coordinates, no pin, relation or guide holds it — and, shifted, its coordinates move it
 /// every way a free body moves (x, y and its angle; a particle x and y): then its flight is the
-/// scene's physics with nothing added. `values`: the parameters (for that test, at sample
+/// scene's physics with nothing added. A relation with mu_s whose `normal` is one of the body's
+/// surfaces, between the body and a fixed party (rolling on it), goes with that surface: held
+/// while the body is on it and sticks, dropped (the body slides, or flies) otherwise. `values`: the parameters (for that test, at sample
 /// coordinates).
 Freed free_surfaces(const model::Model& m, const std::vector<bool>& on, const GiNaC::exmap& values);
 

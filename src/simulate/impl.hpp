@@ -85,6 +85,11 @@ struct Simulator::Impl {
   std::vector<double> flimit;
   std::vector<ContactMode> cmode;
   std::vector<double> ce;
+  // --- a rolling contact on a freed surface (ContactTerm::rolling): sticking (0) or sliding ---
+  std::vector<int> cslide;           ///< 0: its tangent row held; ±1: sliding, the sign of its slip ċ
+  std::vector<double> cmu_s, cmu_k;  ///< its μ_s and μ_k (< 0: not said)
+  std::vector<std::size_t> o_cfp;    ///< |f| (force per unit multiplier) of each contact in the right-hand side kernel
+  std::vector<std::size_t> cwork;    ///< its work state (sliding friction), by contact (npos: none)
   // --- static friction that rolling contacts state: |F| ≤ μ_s |N| along the run ---
   struct Limit {
     std::string effect, normal;
@@ -132,6 +137,12 @@ struct Simulator::Impl {
         m = fr.m;
         freed_model = std::make_shared<const model::Model>(m);
       }
+      // a relation that rolls a freed body on its surface is the surface's tangent row now
+      for (auto& sf : fr.surfaces) {
+        if (sf.rolling < 0) continue;
+        if (o.effects_on.empty()) o.effects_on.assign(m.effects.size(), true);
+        o.effects_on[static_cast<std::size_t>(sf.rolling)] = false;
+      }
       eq = equations_of_motion(m, o.effects_on);
       for (auto& sf : fr.surfaces) {
         eq.contacts.push_back(surface_contact(fr, sf));
@@ -150,6 +161,7 @@ struct Simulator::Impl {
     fbasis.assign(eq.friction.size(), Eigen::Matrix2d::Zero());
     frows.assign(eq.friction.size(), 0);
     cmode.assign(eq.contacts.size(), ContactMode::Open);
+    cslide.assign(eq.contacts.size(), 0);
     M.resize(n, n);
     f.resize(n);
     qdd.resize(n);
@@ -282,6 +294,19 @@ struct Simulator::Impl {
       o_cont.emplace_back(rn, rt);
       ex e = value_of(C.e, values, what).evalf();
       ce.push_back(is_a<numeric>(e) ? ex_to<numeric>(e).to_double() : 0);
+      o_cfp.push_back(outs.size());
+      outs.push_back(value_of(C.force_per, values, what));
+      auto number = [&](const ex& x) {
+        ex v = value_of(x, values, what).evalf();
+        return is_a<numeric>(v) ? ex_to<numeric>(v).to_double() : -1.0;
+      };
+      cmu_s.push_back(number(C.mu_s));
+      cmu_k.push_back(number(C.mu_k));
+      cwork.push_back(std::string::npos);
+      if (C.rolling >= 0 && cmu_k.back() >= 0) {
+        cwork.back() = work_names.size();
+        work_names.emplace_back(m.effects[static_cast<std::size_t>(C.rolling)].name, 0);
+      }
     }
     for (std::size_t k = 0; k < work_names.size(); ++k) work_names[k].second = k;
     nw = work_names.size();
@@ -470,7 +495,7 @@ struct Simulator::Impl {
     return row;
   }
   std::size_t contact_rows(std::size_t k) const {
-    return cmode[k] == ContactMode::Rest ? (eq.contacts[k].stick ? 2 : 1) : 0;
+    return cmode[k] == ContactMode::Rest ? (eq.contacts[k].stick && cslide[k] == 0 ? 2 : 1) : 0;
   }
   std::size_t contact_row(std::size_t k) const {
     std::size_t row = friction_row(eq.friction.size());
@@ -510,16 +535,19 @@ struct Simulator::Impl {
       auto [rn, rt] = o_cont[k];
       for (std::size_t i = 0; i < n; ++i) B(row, i) = rate_J(rn)[i];
       b(row++) = -rate_a0(rn);
-      if (eq.contacts[k].stick) {
+      if (eq.contacts[k].stick && cslide[k] == 0) {
         for (std::size_t i = 0; i < n; ++i) B(row, i) = rate_J(rt)[i];
         b(row++) = -rate_a0(rt);
         }
     }
   }
 
-  // M x = rhs + Bᵀ λ,  B x = c:  by the Schur complement on M's LDLᵀ when M is positive
-  // definite, else the whole saddle-point system by full-pivot LU.
-  void solve_kkt(const Vec& rhs, const Mat& Bm, const Vec& c, Vec& xo, Vec& lam, double t) {
+  // M x = rhs + Cᵀ λ,  B x = c (C = B unless a rolling contact slides: its normal row's force
+  // then carries the friction −μ_k N along its slip, C_n = J_n − s μ_k/|f| J_t): by the Schur
+  // complement on M's LDLᵀ when M is positive definite, else the whole saddle-point system by
+  // full-pivot LU.
+  void solve_kkt(const Vec& rhs, const Mat& Bm, const Vec& c, Vec& xo, Vec& lam, double t, const Mat* Cm = nullptr) {
+    const Mat& C = Cm ? *Cm : Bm;
     ldlt.compute(M);
     const bool pd = ldlt.info() == Eigen::Success && ldlt.isPositive() && (ldlt.vectorD().array() > 0).all() &&
                     ldlt.vectorD().minCoeff() > 1e-14 * ldlt.vectorD().maxCoeff();
@@ -530,9 +558,9 @@ struct Simulator::Impl {
       return;
     }
     if (pd) {
-      // x = M⁻¹(rhs + Bᵀλ), B x = c  ⇒  (B M⁻¹ Bᵀ) λ = c − B M⁻¹ rhs
+      // x = M⁻¹(rhs + Cᵀλ), B x = c  ⇒  (B M⁻¹ Cᵀ) λ = c − B M⁻¹ rhs
       Vec y = ldlt.solve(rhs);
-      Mat X = ldlt.solve(Bm.transpose());
+      Mat X = ldlt.solve(C.transpose());
       Mat S = Bm * X;
       Eigen::FullPivLU<Mat> lu(S);
       if (!lu.isInvertible()) singular(t, "two constraints hold the same motion (their rows are dependent)");
@@ -543,7 +571,7 @@ struct Simulator::Impl {
     const Eigen::Index N = M.rows(), R = Bm.rows();
     Mat K = Mat::Zero(N + R, N + R);
     K.topLeftCorner(N, N) = M;
-    K.topRightCorner(N, R) = -Bm.transpose();
+    K.topRightCorner(N, R) = -C.transpose();
     K.bottomLeftCorner(R, N) = Bm;
     Vec r(N + R);
     r << rhs, c;
@@ -618,6 +646,8 @@ struct Simulator::Impl {
         f(static_cast<Eigen::Index>(i)) -= flimit[k] * (dx * rate_J(rx)[i] + (rot ? 0 : dy_ * rate_J(ry)[i]));
       dy[2 * n + w] = -flimit[k] * (vx * dx + vy * dy_);  // P = −μN v·d (= −μN |v| while sliding)
     }
+    for (std::size_t k = 0; k < cwork.size(); ++k)
+      if (cwork[k] != std::string::npos) dy[2 * n + cwork[k]] = 0;  // (not sliding: no work)
     const bool rows = rows_active();
     if (!rows && n <= 4 && small_solve(dy + n)) {
       // no constraint: M q̈ = f by a fixed-size LDLᵀ (n ≤ 4)
@@ -637,8 +667,10 @@ struct Simulator::Impl {
       if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 0).all()) singular(t);
       qdd = ldlt.solve(f);
       lambda.resize(0);
-    } else {
+    } else if (!sliding()) {
       solve_kkt(f, B, b, qdd, lambda, t);
+    } else {
+      solve_sliding(dy, t);
     }
     for (std::size_t i = 0; i < n; ++i) {
       dy[i] = y[n + i];
@@ -649,6 +681,30 @@ struct Simulator::Impl {
 
   /// One run from s0 (run.cpp).
   Run run(const State& s0, const Stop& stop);
+
+  bool sliding() const {
+    for (std::size_t k = 0; k < cslide.size(); ++k)
+      if (cslide[k] != 0 && cmode[k] == ContactMode::Rest) return true;
+    return false;
+  }
+  // A rolling contact k sliding with slip sign s: its friction −μ_k N along the slip, N its
+  // normal multiplier λ_n: Q = −s (μ_k/|f|) λ_n J_tᵀ (F = λ f), so the normal row's column is
+  // C_n = J_n − s μ_k/|f| J_t; its power −μ_k λ_n |ċ|/|f| (ċ the relation's rate, the slip).
+  void solve_sliding(double* dy, double t) {
+    Mat C = B;
+    for (std::size_t k = 0; k < cslide.size(); ++k) {
+      if (cslide[k] == 0 || cmode[k] != ContactMode::Rest) continue;
+      const std::size_t row = contact_row(k);
+      const double per = cmu_k[k] / out[o_cfp[k]];
+      for (std::size_t i = 0; i < n; ++i) C(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(i)) -= cslide[k] * per * rate_J(o_cont[k].second)[i];
+    }
+    solve_kkt(f, B, b, qdd, lambda, t, &C);
+    for (std::size_t k = 0; k < cslide.size(); ++k) {
+      if (cslide[k] == 0 || cmode[k] != ContactMode::Rest || cwork[k] == std::string::npos) continue;
+      const double N = lambda(static_cast<Eigen::Index>(contact_row(k)));
+      dy[2 * n + cwork[k]] = -cmu_k[k] * N * std::fabs(rate_v(o_cont[k].second)) / out[o_cfp[k]];
+    }
+  }
 
   // q̈ = M⁻¹ f for small n with a fixed-size LDLᵀ (no allocation, unrolled); false when M is
   // not positive definite (the general path then reports it)

@@ -297,6 +297,17 @@ private:
     }
     if (!strike.empty()) impact(strike);
     settle_contacts();
+    // a rolling contact that its static friction cannot hold at the start slips at once
+    {
+      std::vector<double> dy0(y_.size());
+      p_.rhs(y_.data(), t_, dy0.data());
+      for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
+        if (p_.cmode[k] != ContactMode::Rest || p_.eq.contacts[k].rolling < 0 || p_.cslide[k] != 0) continue;
+        const std::size_t row = p_.contact_row(k);
+        if (p_.cmu_s[k] * p_.lambda(static_cast<Eigen::Index>(row)) < std::fabs(p_.lambda(static_cast<Eigen::Index>(row + 1))) * p_.out[p_.o_cfp[k]])
+          rolling_switch(k);
+      }
+    }
     // friction that starts without slip: sticks if it can, else slips the way the load pushes
     p_.rhs(y_.data(), t_, dydt.data());
     for (std::size_t k = 0; k < p_.eq.friction.size(); ++k) {
@@ -648,11 +659,59 @@ private:
     // N seen (so that a state defined by N = 0, where the run is to stop, is reached first)
     released_scale_.resize(p_.releases.size(), 0.0);
     for (std::size_t k = 0; k < p_.releases.size(); ++k) ev.push_back(p_.release_N(k) + 1e-9 * released_scale_[k]);
+    // a rolling contact on a freed surface: sticking, μ_s N − |F| (F = λ_t |f|); sliding, its slip
+    // ċ along the way it slides
+    for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
+      if (p_.cmode[k] != ContactMode::Rest || p_.eq.contacts[k].rolling < 0) {
+        ev.push_back(1.0);
+        continue;
+      }
+      const std::size_t row = p_.contact_row(k);
+      if (p_.cslide[k] == 0) ev.push_back(p_.cmu_s[k] * lam[row] - std::fabs(lam[row + 1]) * p_.out[p_.o_cfp[k]]);
+      else ev.push_back(p_.cslide[k] * p_.rate_v(p_.o_cont[k].second));
+    }
     // a stop condition that is zero at the start (a turning point sought from rest) takes the
     // sign it has as the motion begins: the run ends at its next zero
     if (p_.has_stop && stop_sign_ == 0 && t > t_ && p_.aux[p_.a_stop] != 0) stop_sign_ = p_.aux[p_.a_stop] > 0 ? 1 : -1;
     ev.push_back(p_.has_stop && stop_sign_ != 0 ? stop_sign_ * p_.aux[p_.a_stop] : 1.0);
     return ev;
+  }
+
+  // Rolling contact k switches: sticking, it slips where μ_s N no longer holds it (it slides
+  // against μ_k N, the way the slip starts: against the friction it needed); sliding, its slip
+  // has stopped: it sticks again if μ_s N holds it, else slides back.
+  void rolling_switch(std::size_t k) {
+    std::vector<double> dydt(y_.size());
+    const std::string name = p_.m.effects[static_cast<std::size_t>(p_.eq.contacts[k].rolling)].name;
+    // (sticking, the event has found μ_s N − |F| reach zero, or the start found it below: it slips
+    // even where, at the located instant, the two agree to rounding)
+    const bool was_sliding = p_.cslide[k] != 0;
+    if (was_sliding) {
+      p_.cslide[k] = 0;
+      project_velocity();  // the slip held at zero exactly
+    }
+    p_.rhs(y_.data(), t_, dydt.data());
+    const std::size_t row = p_.contact_row(k);
+    const double N = p_.lambda(static_cast<Eigen::Index>(row)), lt = p_.lambda(static_cast<Eigen::Index>(row + 1)), F = std::fabs(lt) * p_.out[p_.o_cfp[k]];
+    if (was_sliding && F <= p_.cmu_s[k] * N) {
+      note("'" + name + "' rolls again: its slip has stopped, and " + numerics::g_text(F, 6) + " N <= mu_s N = " + numerics::g_text(p_.cmu_s[k] * N, 6) + " N holds it", name, "sticks");
+      return;
+    }
+    if (p_.cmu_k[k] < 0)
+      throw SlipError("'" + name + "' slips at t = " + numerics::g_text(t_, 6) + " s, " + place() + ": rolling takes a friction force of " + numerics::g_text(F, 6) + " N, " +
+                          numerics::g_text(F / N, 6) + " times the normal force of '" + contact_name(k) + "' (" + numerics::g_text(N, 6) + " N), and mu_s = " +
+                          numerics::g_text(p_.cmu_s[k], 6) + " allows no more",
+                      "give '" + name + "' its kinetic friction, 'mu_k: 0.25', and the simulation goes on with the body sliding",
+                      p_.m.effects[static_cast<std::size_t>(p_.eq.contacts[k].rolling)].pos);
+    // the slip starts against the friction the rolling needed: ċ of the sign opposite to λ_t's force
+    p_.cslide[k] = lt > 0 ? -1 : 1;
+    note("'" + name + "' " +
+             (was_sliding ? "stops slipping and slips back at " + place() + ": rolling would take a friction force of " + numerics::g_text(F, 6) +
+                                " N, more than mu_s N = " + numerics::g_text(p_.cmu_s[k] * N, 6) + " N"
+                          : "slips at " + place() + ": the friction force rolling takes, " + numerics::g_text(F, 6) + " N, has reached mu_s N = " +
+                                numerics::g_text(p_.cmu_s[k] * N, 6) + " N") +
+             "; it slides against mu_k N",
+         name, "slips");
   }
 
   std::array<double, 2> stick_force(std::size_t k, const std::vector<double>& lam) const {
@@ -671,9 +730,13 @@ private:
     const std::size_t nct = p_.eq.contacts.size(), nf = p_.eq.friction.size(), nl = p_.limits.size(), nr = p_.releases.size();
     p_.eval_aux(t_, y_.data());
     if (p_.o.record) record();
-    if (i == nct + nf + nl + nr) {
+    if (i == nct + nf + nl + nr + nct) {
       run_.stopped = true;
       return false;
+    }
+    if (i >= nct + nf + nl + nr) {
+      rolling_switch(i - nct - nf - nl - nr);
+      return true;
     }
     if (i >= nct + nf + nl) leaves(i - nct - nf - nl);
     if (i >= nct + nf) slips(i - nct - nf);
@@ -1010,7 +1073,7 @@ private:
       if (p_.cmode[k] != ContactMode::Rest) continue;
       auto [rn, rt] = p_.o_cont[k];
       res[row++] = p_.rate_v(rn);
-      if (p_.eq.contacts[k].stick) res[row++] = p_.rate_v(rt);
+      if (p_.eq.contacts[k].stick && p_.cslide[k] == 0) res[row++] = p_.rate_v(rt);
     }
     correct(rows, res, n);
   }
@@ -1076,6 +1139,7 @@ Run Simulator::Impl::run(const State& s0, const Stop& stop) {
   rhs_calls = 0;
   fmode.assign(eq.friction.size(), FrictionMode::Slide);
   cmode.assign(eq.contacts.size(), ContactMode::Open);
+  cslide.assign(eq.contacts.size(), 0);
   Runner r(*this, stop);
   // a start in the scene's coordinates: every gap closed (the bodies on their surfaces)
   State s = s0;

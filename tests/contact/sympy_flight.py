@@ -31,6 +31,13 @@ asserted by tests/simulate/test_flight.cpp are printed and asserted here (15 sig
      l theta_dot* (cos, sin)(theta*), until its distance from O is l again (mpmath findroot): the cord
      snaps taut with e = 0, taking the velocity along the cord (v_n, the approach along the inward
      normal, is asserted) and keeping the part across it (T after = m v_t^2/2).
+  4. tests/data/contact/disk_pushed_slips.yaml -- a uniform disk (m = 8 kg, r = 0.15 m) rolling at
+     v0 = 1 m/s on a level floor, pushed at its centre by P = P0 sin(pi x/d) (P0 = 80 N, d = 2 m).
+     Rolling: (3/2) m x_ddot = P, the friction needed P/3 (Newton-Euler), so energy gives
+     (3/4) m v^2 = (3/4) m v0^2 + (P0 d/pi)(1 - cos(pi x/d)), and mu_s m g (mu_s = 0.2) holds it up to
+     sin(pi x*/d) = 3 mu_s m g/P0; t* = int dx/v. Sliding after it: m x_ddot = P - mu_k m g,
+     (m r^2/2) phi_ddot = -mu_k m g r (mu_k = 0.15; the slip x_dot + r phi_dot stays > 0, checked),
+     integrated by mpmath to t* + 0.3 s: x, x_dot, phi_dot there.
 """
 import mpmath as mp
 import sympy as sp
@@ -121,4 +128,23 @@ check("bob t_taut", t_slack + tau, "1.30497995964184")
 check("bob theta_taut", mp.atan2(x, -y), "0.489427173932131")
 check("bob vn_taut", vn, "-4.71070275247336")
 check("bob T_after", m * vt**2 / 2, "2.76131703586534")
+
+# 4. the disk pushed until it slips
+m, r, d, P0, v0, mus, muk = mp.mpf(8), mp.mpf("0.15"), mp.mpf(2), mp.mpf(80), mp.mpf(1), mp.mpf("0.2"), mp.mpf("0.15")
+P = lambda x: P0 * mp.sin(mp.pi * x / d)
+xs = d / mp.pi * mp.asin(3 * mus * m * g / P0)
+v = lambda x: mp.sqrt(v0**2 + 4 / (3 * m) * (P0 * d / mp.pi) * (1 - mp.cos(mp.pi * x / d)))
+ts = mp.quad(lambda x: 1 / v(x), [0, xs])
+sol = mp.odefun(lambda t, y: [y[1], (P(y[0]) - muk * m * g) / m], 0, [xs, v(xs)])
+tau = mp.mpf("0.3")
+for k in range(1, 31):
+    xk, vk = sol(tau * k / 30)
+    assert vk + r * (-v(xs) / r - 2 * muk * g / r * tau * k / 30) > 0, "the slip stops"
+x1, xd1 = sol(tau)
+w1 = -v(xs) / r - 2 * muk * g / r * tau
+check("disk t_slip", ts, "0.333325313335315")
+check("disk x_slip", xs, "0.400641364134971")
+check("disk x(t_slip + 0.3)", x1, "1.17380263935945")
+check("disk x_dot(t_slip + 0.3)", xd1, "3.75192520196304")
+check("disk phi_dot(t_slip + 0.3)", w1, "-16.6895879706387")
 print("ok")

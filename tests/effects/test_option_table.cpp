@@ -95,6 +95,10 @@ const std::vector<Row> kTable = {
                                    "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n  w: {gravity: g}\n  p: {force: block, F: [F0, 0]}\n  hub: {pin: [C, wheel]}", true, ""},
   {"constraint", "normal", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_s: mu/10, normal: rail}\n"
                                      "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n  w: {gravity: g}\n  p: {force: block, F: [F0, 0]}\n  hub: {pin: [C, wheel]}", false, "'e' slips at state '1'"},
+  // mu_k: the friction once it slips (only a simulation goes past a slip): read with mu_s, refused without it
+  {"constraint", "mu_k", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_s: mu, normal: rail, mu_k: mu/2}\n"
+                                   "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n  w: {gravity: g}\n  p: {force: block, F: [F0, 0]}\n  hub: {pin: [C, wheel]}", true, ""},
+  {"constraint", "mu_k", "energy", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_k: mu}", false, "nothing says when it slips"},
   {"constraint", "mu_s", "impact", "e: {constraint: \"x - r*phi = 0\", between: [block, wheel], at: [[x, 0], [0, h - r]], mu_s: mu, normal: rail}\n"
                                    "  rail: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}", false, "where kinergy does not check static friction"},
   {"track", "line", "energy", "e: {track: block, line: {through: [0, 0], along: [1, 0]}, pushes: up}", true, ""},

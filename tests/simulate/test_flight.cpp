@@ -110,3 +110,27 @@ TEST_CASE("flight: simulate --json lists each switch at its instant, the same by
   int again_status = 0;
   CHECK(kt::run_cli(cmd, again_status) == out);
 }
+
+TEST_CASE("flight: a rolling disk pushed past its static friction slips and slides on", "[simulate][release][friction]") {
+  // slips at t = 0.333325313335315 s, x = 0.400641364134971 m; 0.3 s later x = 1.17380263935945 m,
+  // x_dot = 3.75192520196304 m/s, phi_dot = -16.6895879706387 rad/s (sympy_flight.py, case 4)
+  const std::string text = contact("disk_pushed_slips.yaml");
+  const sim::Run r = run(text, 0.333325313335315 + 0.3);
+  REQUIRE(r.switches.size() == 1);
+  CHECK(r.switches[0].kind == "slips");
+  CHECK(r.switches[0].effect == "rolling");
+  CHECK(std::fabs(r.switches[0].t - 0.333325313335315) < 1e-8);
+  CHECK_THAT(r.switches[0].text, Catch::Contains("'rolling' slips at x = 0.400641 m"));
+  CHECK(std::fabs(r.end.q[0] - 1.17380263935945) < 1e-8);
+  CHECK(std::fabs(r.end.qd[0] - 3.75192520196304) < 1e-8);
+  CHECK(std::fabs(r.end.qd[1] - -16.6895879706387) < 1e-7);
+  CHECK(std::fabs(r.drift) < 1e-9);  // the sliding friction's work in the audit
+  // without mu_k the run cannot say how it slides: it stops at the slip, asking for it
+  try {
+    run(kt::edit(text, ", mu_k: muk}", "}"), 1.0);
+    FAIL("the run went past the slip");
+  } catch (const sim::SlipError& e) {
+    CHECK_THAT(std::string(e.what()), Catch::Contains("'rolling' slips at t = 0.333325 s, x = 0.400641 m"));
+    CHECK_THAT(e.fix(), Catch::Contains("give 'rolling' its kinetic friction, 'mu_k: 0.25'"));
+  }
+}

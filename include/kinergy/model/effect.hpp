@@ -95,6 +95,9 @@ struct Reaction {
   /// `normal`. μ_s = 0: no limit stated.
   ex mu_s = 0;
   std::string normal;
+  /// Its kinetic friction once it slips, `mu_k` (−1: not said): a simulation that frees the
+  /// rolling body from its surface lets it slide against −μ_k N (simulate/freed.cpp).
+  ex mu_k = -1;
   /// A track that can only push (a surface: N ≥ 0, n̂ the way it pushes); false for a guide that
   /// holds both ways.
   bool one_sided = false;

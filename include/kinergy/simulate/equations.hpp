@@ -53,6 +53,12 @@ struct ContactTerm {
   /// A surface that only pushes (a one-sided track), its body freed to leave it: the gap opens
   /// where the surface's push falls to zero (simulate/freed.cpp)
   bool surface = false;
+  /// A rolling contact on that surface (a `constraint` effect with mu_s whose normal is it, by
+  /// index; −1: none): its relation's rate is the tangent, held at zero while |F| ≤ μ_s N; past
+  /// that it slides against μ_k N (mu_k < 0: not said, the run stops there). `force_per`: the
+  /// friction force per unit of the tangent row's multiplier, |f| with F = λ f.
+  int rolling = -1;
+  ex mu_s = 0, mu_k = -1, force_per = 1;
 };
 
 /// A given impulse J at a point (acts once, at the first instant).
