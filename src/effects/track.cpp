@@ -57,10 +57,8 @@ public:
     model::Reaction r = model::Reaction::track(p, s * nx, s * ny);
     r.one_sided = pushes != 0;
     r.pulls = cord;
-    if (r.one_sided) {
-      r.gap = s * distance(m);
-      r.e = e_given ? e : ex(-1);
-    }
+    r.gap = s * distance(m);
+    if (r.one_sided) r.e = e_given ? e : ex(-1);
     return r;
   }
 

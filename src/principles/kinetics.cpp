@@ -521,12 +521,23 @@ OneSidedLimits one_sided_limits(const Model& m) {
     auto at_state = [&](const ex& Ns, int S) {
       const std::string st = m.states[static_cast<std::size_t>(S)].name;
       if (std::any_of(out.at_states.begin(), out.at_states.end(), [&](const OneSidedLimit& x) { return x.effect == e.name && x.state == S; })) return;
-      out.at_states.push_back({e.name, S,
-                               Condition{Ns,
-                                         "at state '" + st + "' " + w.would + " ({} N): " + (r->pulls ? "it goes slack" : body + " leaves it") +
-                                             " before that state, and " + w.only,
-                                         "ask for the state where it " + w.verb + ", " + w.ask + ", or take state '" + st + "' before it",
-                                         e.pos, w.acts + " at state '" + st + "' (N >= 0)"}});
+      // a state the motion starts from (no analysis ends there): it lets go at once, not "before" it
+      const bool start = std::none_of(m.analyses.begin(), m.analyses.end(), [&](const model::Analysis& x) { return x.to == S && !x.instant(); }) &&
+                         std::any_of(m.analyses.begin(), m.analyses.end(), [&](const model::Analysis& x) { return x.from == S && !x.instant(); });
+      if (start)
+        out.at_states.push_back({e.name, S,
+                                 Condition{Ns,
+                                           "at state '" + st + "', where the motion starts, " + w.would + " ({} N): " + (r->pulls ? "it is slack" : body + " leaves it") +
+                                               " at once, and " + w.only + ", so no motion " + (r->pulls ? "with the cord taut" : "on it") + " starts there",
+                                           "start with the rates at which " + w.is + (r->pulls ? " pulls" : " pushes") + ", or let the body go free of it",
+                                           e.pos, w.acts + " at state '" + st + "' (N >= 0)"}});
+      else
+        out.at_states.push_back({e.name, S,
+                                 Condition{Ns,
+                                           "at state '" + st + "' " + w.would + " ({} N): " + (r->pulls ? "it goes slack" : body + " leaves it") +
+                                               " before that state, and " + w.only,
+                                           "ask for the state where it " + w.verb + ", " + w.ask + ", or take state '" + st + "' before it",
+                                           e.pos, w.acts + " at state '" + st + "' (N >= 0)"}});
     };
     for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
       const model::Analysis& a = m.analyses[ai];

@@ -834,8 +834,14 @@ ImpactBalance impact(const Model& m, const Analysis& a, const Knowledge& k) {
       if (dx && dy) {
         // apart, against the size of the positions (no absolute floor: a scene may be tiny), in
         // CLN's numbers: in doubles a scene 1e400 m from the origin is ∞ apart from ∞ and passes
+        // (the size: the points' places, and each body's centre and the point's offset from it —
+        // two points that meet at the origin have no size of their own)
         numeric d2 = *dx * *dx + *dy * *dy, scale = 0;
-        for (const ex& c : {pa.r.first, pa.r.second, pb.r.first, pb.r.second})
+        std::vector<ex> sizes{pa.r.first, pa.r.second, pb.r.first, pb.r.second};
+        for (const PointRef* p : {&e.a, &e.b})
+          if (p->body >= 0)
+            for (const ex& c : {m.bodies[static_cast<std::size_t>(p->body)].x, m.bodies[static_cast<std::size_t>(p->body)].y, p->lx, p->ly}) sizes.push_back(c);
+        for (const ex& c : sizes)
           if (auto s = k.value(before(c))) scale = std::max(scale, abs(*s));
         if (d2 > pow(numeric(1, 1000000000) * scale, 2))
           throw SceneError(e.pos, "contact '" + e.name + "': " + e.a.text + " and " + e.b.text + " are " +

@@ -262,9 +262,52 @@ private:
   }
 
   // ---------------------------------------------------------------- the start
+  // Every track the run does not free must be kept by the coordinates and the constraints: its
+  // distance d(q) may not change along any motion they allow, ∇d in the row space of A (the
+  // constraints' Jacobian) at the start. A track the coordinates leave free (position: [x, y], y a
+  // coordinate of its own, with no relation holding it) would let the body through it: refused.
+  void tracks_held() {
+    const std::size_t n = p_.n;
+    std::vector<double> dydt(y_.size());
+    bool rows = false;
+    for (std::size_t i = 0; i < p_.m.effects.size(); ++i) {
+      if (!p_.o.effects_on.empty() && !p_.o.effects_on[i]) continue;
+      if (std::find(p_.freed.begin(), p_.freed.end(), static_cast<int>(i)) != p_.freed.end()) continue;
+      const auto r = p_.m.effects[i].reaction(p_.m);
+      if (!r || r->kind != model::Reaction::Kind::Track) continue;
+      GiNaC::exmap at = p_.values;
+      at[p_.m.t] = t_;
+      for (std::size_t j = 0; j < n; ++j) at[p_.eq.q[j]] = y_[j];
+      Vec grad(static_cast<Eigen::Index>(n));
+      bool number = true;
+      for (std::size_t j = 0; j < n && number; ++j) {
+        const ex v = r->gap.diff(GiNaC::ex_to<GiNaC::symbol>(p_.eq.q[j])).subs(at).evalf();
+        number = GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
+        if (number) grad(static_cast<Eigen::Index>(j)) = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+      }
+      if (!number || !(grad.norm() > 0)) continue;
+      if (!rows) {
+        p_.rhs(y_.data(), t_, dydt.data());
+        rows = true;
+      }
+      Mat A(static_cast<Eigen::Index>(p_.nc), static_cast<Eigen::Index>(n));
+      for (std::size_t c = 0; c < p_.nc; ++c)
+        for (std::size_t j = 0; j < n; ++j) A(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(j)) = p_.out[p_.o_A + c * n + j];
+      // the part of ∇d no combination of the constraints' rows gives: ∇d − Aᵀ μ, μ by least squares
+      Vec rest = grad;
+      if (p_.nc) rest -= A.transpose() * A.transpose().completeOrthogonalDecomposition().solve(grad);
+      if (rest.norm() <= 1e-8 * grad.norm()) continue;
+      throw SimulationError("track '" + p_.m.effects[i].name + "': the coordinates do not keep " + r->a.text + " on it (its distance from it changes with them)" +
+                                (p_.nc ? ", nor do the scene's relations" : "") + ", and the simulation holds only what they hold: the body would pass through it",
+                            "write the body's position so that the coordinates keep the point on the track (a wheel on a floor: position: [x, r])",
+                            p_.m.effects[i].pos);
+    }
+  }
+
   void start() {
     const std::size_t n = p_.n;
     project();
+    tracks_held();
     // given impulses act once, at the start:  M (q̇⁺ − q̇⁻) = Σ P_given + Aᵀ Λ
     if (!p_.eq.impulses.empty() && stop_.impulses) {
       p_.eval_aux(t_, y_.data());

@@ -134,3 +134,20 @@ TEST_CASE("release: a rolling body is not freed: the run stops where it leaves, 
     CHECK_THAT(e.fix(), Catch::Contains("cannot go on with") && Catch::Contains("a relation between the coordinates holds"));
   }
 }
+
+TEST_CASE("release: a surface that would pull at the state the motion starts from is refused as such", "[kinetics][release][errors]") {
+  // the wheel about the step edge at omega2 = 5.18519 rad/s: N = m (g sin(psi2) - r omega2^2) = -12.2067 N
+  // (by hand, in the scene's description): it leaves at once, not "before" the state
+  REQUIRE_THROWS_WITH(kt::solve_text(contact("wheel_pivots_too_fast.yaml")),
+                      Catch::Contains("at state '2', where the motion starts, the surface of 'edge' would have to pull on wheel (12.2067 N)") &&
+                          Catch::Contains("leaves it at once"));
+}
+
+TEST_CASE("release: two points that meet at the origin strike there (no false gap from rounding)", "[momentum][impact]") {
+  // the wheel's point C and the edge E both at (0, 0) at 'before', each computed with rounding of
+  // 1e-21 m: against the wheel's size they touch. omega2 = v1 (2 h - 3 r)/(3 r^2) by angular momentum
+  // about E, m v1 (r - h) + (m r^2/2)(v1/r) = (3/2) m r^2 omega2 (clockwise)
+  auto s = kt::solve_text(contact("wheel_strikes_edge.yaml"));
+  const double v1 = 2, r = 0.3, h = 0.1;
+  CHECK(std::fabs(GiNaC::ex_to<GiNaC::numeric>(*kt::result(s, "omega2").si).to_double() - v1 * (2 * h - 3 * r) / (3 * r * r)) < 1e-12);
+}

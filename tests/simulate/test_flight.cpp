@@ -134,3 +134,7 @@ TEST_CASE("flight: a rolling disk pushed past its static friction slips and slid
     CHECK_THAT(e.fix(), Catch::Contains("give 'rolling' its kinetic friction, 'mu_k: 0.25'"));
   }
 }
+
+TEST_CASE("flight: a track the coordinates do not keep is refused by the simulation, not passed through", "[simulate][errors]") {
+  REQUIRE_THROWS_WITH(run(contact("track_not_kept.yaml"), 0.5), Catch::Contains("track 'floor': the coordinates do not keep disk on it"));
+}

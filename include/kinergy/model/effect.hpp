@@ -101,10 +101,10 @@ struct Reaction {
   /// A track that can only push (a surface: N ≥ 0, n̂ the way it pushes); false for a guide that
   /// holds both ways.
   bool one_sided = false;
-  /// A surface that only pushes: how far its point is off it, along n̂ (> 0: apart, on the side
-  /// it pushes toward; 0 wherever the coordinates keep the point on it), for a simulation that
-  /// lets the body leave it (simulate/freed.cpp); and `e`, the restitution when the body strikes
-  /// it again (−1: not said).
+  /// A track: how far its point is off it, along n̂ (> 0: apart, on the side a surface pushes
+  /// toward; 0 wherever the coordinates keep the point on it), for a simulation that lets the body
+  /// leave a surface (simulate/freed.cpp) or checks that the coordinates hold it; and, for a
+  /// surface, `e`, the restitution when the body strikes it again (−1: not said).
   ex gap = 0;
   /// One-sided and a cord (`cord: [O, bob]`): N is its tension, pulling the point toward O; it
   /// goes slack where N falls to zero, and snaps taut (an impact, with e) where it straightens.
