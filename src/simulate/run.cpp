@@ -346,6 +346,14 @@ private:
       p_.rhs(y_.data(), t_, dy0.data());
       for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
         if (p_.cmode[k] != ContactMode::Rest || p_.eq.contacts[k].rolling < 0 || p_.cslide[k] != 0) continue;
+        // one that starts with its contact slipping (a ball thrown along a floor without spin)
+        // slides from the start, against μ_k N, until its slip stops
+        if (const double slip = p_.rate_v(p_.o_cont[k].second); std::fabs(slip) > vel_tol() && p_.cmu_k[k] >= 0) {
+          p_.cslide[k] = slip > 0 ? 1 : -1;
+          note("'" + p_.m.effects[static_cast<std::size_t>(p_.eq.contacts[k].rolling)].name + "' slides from the start (its slip is " + numerics::g_text(slip, 6) +
+               "), against mu_k N");
+          continue;
+        }
         const std::size_t row = p_.contact_row(k);
         if (p_.cmu_s[k] * p_.lambda(static_cast<Eigen::Index>(row)) < std::fabs(p_.lambda(static_cast<Eigen::Index>(row + 1))) * p_.out[p_.o_cfp[k]])
           rolling_switch(k);
@@ -737,7 +745,7 @@ private:
     const std::size_t row = p_.contact_row(k);
     const double N = p_.lambda(static_cast<Eigen::Index>(row)), lt = p_.lambda(static_cast<Eigen::Index>(row + 1)), F = std::fabs(lt) * p_.out[p_.o_cfp[k]];
     if (was_sliding && F <= p_.cmu_s[k] * N) {
-      note("'" + name + "' rolls again: its slip has stopped, and " + numerics::g_text(F, 6) + " N <= mu_s N = " + numerics::g_text(p_.cmu_s[k] * N, 6) + " N holds it", name, "sticks");
+      note("'" + name + "' rolls: its slip has stopped, and " + numerics::g_text(F, 6) + " N <= mu_s N = " + numerics::g_text(p_.cmu_s[k] * N, 6) + " N holds it", name, "sticks");
       return;
     }
     if (p_.cmu_k[k] < 0)

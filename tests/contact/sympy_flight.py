@@ -38,6 +38,15 @@ asserted by tests/simulate/test_flight.cpp are printed and asserted here (15 sig
      sin(pi x*/d) = 3 mu_s m g/P0; t* = int dx/v. Sliding after it: m x_ddot = P - mu_k m g,
      (m r^2/2) phi_ddot = -mu_k m g r (mu_k = 0.15; the slip x_dot + r phi_dot stays > 0, checked),
      integrated by mpmath to t* + 0.3 s: x, x_dot, phi_dot there.
+  5. tests/data/contact/ball_thrown_off_floor.yaml -- a ball on a floor that only pushes, lifted by
+     F = 3 m g (1 - t/t1) (t1 = 0.1 s): it leaves at t = 0 (the floor would pull, m g - 3 m g);
+     y'' = 3 g (1 - t/t1) - g integrated by hand to t1 (v = g t1/2, y = g t1^2/2), a projectile after
+     it; it strikes at t1 + (v + sqrt(v^2 + 2 g y))/g with v_n = -sqrt(v^2 + 2 g y), rebounds at half
+     that (e = 0.5) and strikes again after 2 v_n+/g.
+  6. tests/data/contact/disk_thrown_sliding.yaml -- a disk (r = 0.2 m) set on a floor at v0 = 3 m/s
+     without spin: x_ddot = -mu_k g, (r^2/2) phi_ddot = -mu_k g r (mu_k = 0.2), the slip
+     x_dot + r phi_dot = v0 - 3 mu_k g t stops at t = v0/(3 mu_k g) with x_dot = 2 v0/3; rolling on a
+     level floor takes no friction, so it rolls on: x at 1 s.
 """
 import mpmath as mp
 import sympy as sp
@@ -147,4 +156,21 @@ check("disk x_slip", xs, "0.400641364134971")
 check("disk x(t_slip + 0.3)", x1, "1.17380263935945")
 check("disk x_dot(t_slip + 0.3)", xd1, "3.75192520196304")
 check("disk phi_dot(t_slip + 0.3)", w1, "-16.6895879706387")
+
+# 5. the ball lifted off the floor
+t1 = mp.mpf("0.1")
+v, y = g * t1 / 2, g * t1**2 / 2
+assert mp.almosteq(mp.quad(lambda t: 3 * g * (1 - t / t1) - g, [0, t1]), v)  # the lift's impulse, per unit mass
+vn = mp.sqrt(v**2 + 2 * g * y)
+t_strike = t1 + (v + vn) / g
+check("ball t_strike", t_strike, "0.261803398874989")
+check("ball vn_strike", -vn, "-1.09679134296365")
+check("ball t_strike2", t_strike + 2 * (vn / 2) / g, "0.373606797749979")
+
+# 6. the disk thrown without spin
+v0, muk, r = mp.mpf(3), mp.mpf("0.2"), mp.mpf("0.2")
+ts = v0 / (3 * muk * g)
+xs = v0 * ts - muk * g * ts**2 / 2
+check("disk2 t_roll", ts, "0.509683995922528")
+check("disk2 x(1)", xs + 2 * v0 / 3 * (1 - ts), "2.25484199796126")
 print("ok")

@@ -64,15 +64,38 @@ TEST_CASE("flight: the ladder goes on with its top free of the wall, its foot on
   CHECK(std::fabs(r.end.q[coordinate(r, "floor_gap")]) < 1e-12);  // the floor still pushes
 }
 
+TEST_CASE("flight: a ball lifted off its floor leaves it at once, strikes it again and rebounds with the track's e", "[simulate][release]") {
+  // leaves at t = 0; strikes at 0.261803398874989 s at v_n = -1.09679134296365 m/s, again at
+  // 0.373606797749979 s (sympy_flight.py, case 5)
+  const sim::Run r = run(contact("ball_thrown_off_floor.yaml"), 0.3);
+  REQUIRE(r.switches.size() == 2);
+  CHECK(r.switches[0].kind == "leaves");
+  CHECK(r.switches[0].t == 0);
+  CHECK(r.switches[1].kind == "strikes");
+  REQUIRE(r.impacts.size() == 1);
+  CHECK(std::fabs(r.impacts[0].t - 0.261803398874989) < 1e-9);
+  CHECK(std::fabs(r.impacts[0].vn_before[0] - -1.09679134296365) < 1e-8);
+  CHECK(std::fabs(r.impacts[0].vn_after[0] - 1.09679134296365 / 2) < 1e-8);
+  const sim::Run r2 = run(contact("ball_thrown_off_floor.yaml"), 0.38);
+  REQUIRE(r2.impacts.size() == 2);
+  CHECK(std::fabs(r2.impacts[1].t - 0.373606797749979) < 1e-8);  // (the event located to the integration's tolerance)
+}
+
+TEST_CASE("flight: a disk set sliding without spin slides until its slip stops, then rolls", "[simulate][release][friction]") {
+  // rolls from t = 0.509683995922528 s, at x = 2.25484199796126 m at t = 1 s (sympy_flight.py, case 6)
+  const sim::Run r = run(contact("disk_thrown_sliding.yaml"), 1.0);
+  REQUIRE(r.switches.size() == 1);
+  CHECK(r.switches[0].kind == "sticks");
+  CHECK(std::fabs(r.switches[0].t - 0.509683995922528) < 1e-9);
+  CHECK(std::fabs(r.end.q[0] - 2.25484199796126) < 1e-9);
+  CHECK(std::fabs(r.end.qd[0] - 2) < 1e-9);
+  CHECK(std::fabs(r.drift) < 1e-9);
+}
+
 TEST_CASE("flight: a body that strikes its surface again needs the track's e", "[simulate][release][errors]") {
-  // a ball thrown up off a floor that only pushes comes down on it: without e the run says so
-  const std::string ball =
-      "title: thrown up\nparameters: {m: 1 kg, g: 9.81 m/s^2, t1: 0.1 s}\ncoordinates: {x: m}\n"
-      "bodies:\n  ball: {mass: m, inertia: particle, position: [x, 0]}\n"
-      "effects:\n  gravity: {g: g}\n  floor: {track: ball, line: {through: [0, 0], along: [1, 0]}, pushes: up}\n"
-      "  lift: {force: ball, F: [0, \"3*m*g*max(1 - t/t1, 0)\"]}\n"
-      "states:\n  1: {t: 0, x: 0, x_dot: 1 m/s}\n";
-  REQUIRE_THROWS_WITH(run(ball, 2.0), Catch::Contains("ball strikes 'floor' again at t = ") && Catch::Contains("does not say how it rebounds"));
+  // the ball lifted off its floor comes down on it: without e the run says so
+  const std::string ball = kt::edit(contact("ball_thrown_off_floor.yaml"), "pushes: up, e: 0.5}", "pushes: up}");
+  REQUIRE_THROWS_WITH(run(ball, 2.0), Catch::Contains("ball strikes 'floor' again at t = 0.261803 s") && Catch::Contains("does not say how it rebounds"));
   // with e = 0 it lands and slides on
   const sim::Run r = run(kt::edit(ball, "pushes: up}", "pushes: up, e: 0}"), 2.0);
   REQUIRE(r.switches.size() == 2);
