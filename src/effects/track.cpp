@@ -257,6 +257,17 @@ void read_sidedness(EffectReader& r, const EffectDef& ed, Track& e, int side) {
   e.pushes = sigma;
 }
 
+/// `e`: how a body that has left the surface (a slack cord's point) rebounds when it strikes it
+/// again (the cord snaps taut), v_n⁺ = −e v_n⁻, from 0 to 1; only a simulation has such a strike.
+void read_restitution(EffectReader& r, const EffectDef& ed, const scene::Node& en, Track& e, const std::string& kind, const std::string& range) {
+  e.e = r.quantity(r.text_of(en, "e", "0.5"), false, units::Dimension{}, "e", "a coefficient of restitution is a pure number from 0 to 1");
+  auto v = r.value_of(e.e, en.pos, "the coefficient of restitution");
+  if (v && (v->is_negative() || *v > 1))
+    throw SceneError(en.pos, "the coefficient of restitution of " + kind + " '" + ed.name + "' is " + numerics::format(*v, 6) + ", not from 0 to 1",
+                     "give e from " + range);
+  e.e_given = true;
+}
+
 }  // namespace
 
 std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
@@ -314,16 +325,10 @@ std::shared_ptr<Effect> read_track(EffectReader& r, const EffectDef& ed) {
   }
   read_sidedness(r, ed, *e, side);
   if (auto* en = ed.options.get("e")) {
-    // e: how a body that has left the surface rebounds when it strikes it again, v_n⁺ = −e v_n⁻
     if (!e->pushes)
       throw SceneError(en->pos, "track '" + ed.name + "' holds both ways, so a body never leaves it to strike it again: 'e' has no use here",
                        "leave 'e' out, or say 'pushes: ...' for a surface that can only push");
-    e->e = r.quantity(r.text_of(*en, "e", "0.5"), false, units::Dimension{}, "e", "a coefficient of restitution is a pure number from 0 to 1");
-    auto v = r.value_of(e->e, en->pos, "the coefficient of restitution");
-    if (v && (v->is_negative() || *v > 1))
-      throw SceneError(en->pos, "the coefficient of restitution of track '" + ed.name + "' is " + numerics::format(*v, 6) + ", not from 0 to 1",
-                       "give e from 0 (the body lands and stays) to 1 (it rebounds with its speed)");
-    e->e_given = true;
+    read_restitution(r, ed, *en, *e, "track", "0 (the body lands and stays) to 1 (it rebounds with its speed)");
   }
   return e;
 }
@@ -352,15 +357,7 @@ std::shared_ptr<Effect> read_cord(EffectReader& r, const EffectDef& ed) {
   e->R = r.quantity(r.text_of(ln, "length", "l"), false, units::Dimension::length(), "length", "a cord's length is a length");
   r.positive(e->R, ln.pos, "the length of cord '" + ed.name + "'");
   e->shape = "the circle of radius " + ln.scalar + " about " + anchor.text + " (the cord taut)";
-  if (auto* en = ed.options.get("e")) {
-    // e: how the point rebounds when the slack cord snaps taut again, v_n⁺ = −e v_n⁻ (0: it stays taut)
-    e->e = r.quantity(r.text_of(*en, "e", "0"), false, units::Dimension{}, "e", "a coefficient of restitution is a pure number from 0 to 1");
-    auto v = r.value_of(e->e, en->pos, "the coefficient of restitution");
-    if (v && (v->is_negative() || *v > 1))
-      throw SceneError(en->pos, "the coefficient of restitution of cord '" + ed.name + "' is " + numerics::format(*v, 6) + ", not from 0 to 1",
-                       "give e from 0 (the cord stays taut when it straightens) to 1");
-    e->e_given = true;
-  }
+  if (auto* en = ed.options.get("e")) read_restitution(r, ed, *en, *e, "cord", "0 (the cord stays taut when it straightens) to 1");
   return e;
 }
 
