@@ -138,7 +138,7 @@ void plot(const model::Model& m, const Run& r, const std::string& file) {
      << "set xlabel 't (s)'\nset ylabel 'coordinates'\nplot ";
   for (std::size_t i = 0; i < n; ++i)
     gp << (i ? ", " : "") << "'run.csv' using 1:" << i + 2 << " with lines title '" << m.coords[i].name << " ("
-       << unit_of(m.coords[i], false) << ")'";
+       << unit_of(m.coords[i], false) << ")' noenhanced";  // (as written: dome_gap, not dome with a subscript)
   gp << "\nset ylabel 'energy (J)'\nplot 'run.csv' using 1:" << 2 * n + 2 << " with lines title 'T', '' using 1:"
      << 2 * n + 3 << " with lines title 'V', '' using 1:" << 2 * n + 4 << " with lines title 'E = T + V'\n"
      << "unset multiplot\n";
