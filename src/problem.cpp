@@ -1355,7 +1355,7 @@ private:
     }
   // a float in the result comes only from a numeric root: no closed form
   r.closed_form = !has_float(c);
-  r.closed = model::factored(model::root_simplify(model::tidy(model::tidy_function_arguments(c)),
+  r.closed = model::factored(model::root_simplify(model::tidy_result(model::tidy_function_arguments(c)),
                                                   [this](const ex& x) { return m.fixed_sign(x); }));
   // a value that holds numbers found by numeric roots: the same value as an expression of the
   // roots (for proving its digits)

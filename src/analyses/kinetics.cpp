@@ -55,9 +55,10 @@ void section(emit::Sections& w, int k, const model::Analysis& a, const principle
     shown.clear();
     for (auto kind : {BalanceRow::Kind::ForceX, BalanceRow::Kind::ForceY, BalanceRow::Kind::Moment})
       for (auto& r : group(kind, b)) shown.push_back(w.equation(tags, r.equation));
-    if (shown.empty()) continue;
     const std::string name = m.bodies[static_cast<std::size_t>(b)].name;
     w.kinetic_figure(a, acc, kb.loads, "Free-body diagram of " + name + " at state " + S + " (the forces on it) and its kinetic diagram (m a\u0304 and I\u0304 \u03b1): equivalent.");
+    // (a body whose Newton–Euler equations all follow from the ones above: drawn, and said below)
+    if (shown.empty()) continue;
     w.para({W("The free body " + m.bodies[static_cast<std::size_t>(b)].name + ": "),
             N("\\sum F_x = m\\,\\bar{a}_x,\\ \\sum F_y = m\\,\\bar{a}_y,\\ \\sum M_G = \\bar{I}\\,\\alpha", "ΣF_x = m a_x, ΣF_y = m a_y, ΣM_G = I α"),
             W(" (those not already implied):")});

@@ -734,6 +734,23 @@ At state_values(const model::Model& m, const exmap& solved, const exmap& params,
     at.values[c.qd] = std::isnan(r) ? 0 : r;
   }
   if (double t = value_of(S.t); !std::isnan(t)) at.values[m.t] = t;
+  // a contact that has closed in its impact draws its normal as it has turned since, with the
+  // angle its surface had at the state it closed (Model::closed_normal)
+  for (const model::Effect& e : m.effects) {
+    const auto r = e.reaction(m);
+    const int S2 = r && !r->holds.empty() && r->turns >= 0 ? m.closed_from(e) : -1;
+    if (S2 < 0) continue;
+    const ex sym = m.bind(m.bodies[static_cast<std::size_t>(r->turns)].angle, S2);
+    ex v = sym;
+    for (int pass = 0; pass < 4; ++pass) {
+      ex w = v.subs(m.states[static_cast<std::size_t>(S2)].given).subs(solved);
+      if (w.is_equal(v)) break;
+      v = w;
+    }
+    At p;
+    p.values = params;
+    if (const double x = p(v); !std::isnan(x) && is_a<symbol>(sym)) at.values[sym] = x;
+  }
   return at;
 }
 

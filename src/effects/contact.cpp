@@ -16,13 +16,20 @@ public:
   ex nx = 0, ny = 0;  ///< unit normal from a into b
   ex e = 0;           ///< coefficient of restitution
   bool stick = false;  ///< rough: no sliding after the impact
+  std::vector<std::size_t> holds;  ///< plastic and rough: r_b − r_a = 0 (x, y) once it has struck
+  int turns = -1;                  ///< the body whose surface it is (its n̂ turns with it), −1: fixed
 
   /// J n̂ + Jt t̂ on b, −that on a, in impacts
   std::optional<model::Reaction> reaction(const Model&) const override;
   void draw(const Model& m, const draw::At& at, draw::Figure& f) const override;
 };
 
-std::optional<model::Reaction> Contact::reaction(const Model&) const { return model::Reaction::contact(a, b, nx, ny, e, stick); }
+std::optional<model::Reaction> Contact::reaction(const Model&) const {
+  model::Reaction r = model::Reaction::contact(a, b, nx, ny, e, stick);
+  r.holds = holds;
+  r.turns = turns;
+  return r;
+}
 
 // the contact: its surface (a line across n̂ through the first party's point, hatched when that
 // party is fixed) and n̂ as a short arrow from there into the second party
@@ -32,8 +39,12 @@ void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
   // onto it, r = r_b − ((r_b − r_a)·n̂) n̂, the normal from there
   auto [xa, ya] = at.point(m.position(a));
   auto [xb, yb] = at.point(m.position(b));
-  const double len = std::hypot(at(nx), at(ny));
-  const double ux = at(nx) / len, uy = at(ny) / len, g = f.glyph();
+  // (one that has closed in its impact: its normal as it has turned with its surface since)
+  // (where the angle it closed at is not known, an animation's frame: as written)
+  auto [enx, eny] = !holds.empty() && m.closed_from(*this) >= 0 ? m.closed_normal(*this) : std::pair<ex, ex>{nx, ny};
+  if (std::isnan(at(enx)) || std::isnan(at(eny))) enx = nx, eny = ny;
+  const double len = std::hypot(at(enx), at(eny));
+  const double ux = at(enx) / len, uy = at(eny) / len, g = f.glyph();
   const double gap = (xb - xa) * ux + (yb - ya) * uy;
   const double x = xb - gap * ux, y = yb - gap * uy;
   // a fixed party's surface is the ground: hatched behind it (against n̂); between bodies, dashed
@@ -47,10 +58,10 @@ void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
 
 std::shared_ptr<Effect> read_contact(EffectReader& r, const EffectDef& ed) {
   auto c = make<Contact>(ed);
-  r.only(ed, {"normal", "e", "tangential"});
   if (!ed.arg.is_list() || ed.arg.items.size() != 2)
     throw SceneError(ed.arg.pos, "a contact names two parties",
                      "write 'contact: [ball, bar.Q]' (body points, bodies, fixed points or ground)");
+  r.only(ed, {"normal", "e", "tangential", "surface"});
   c->a = r.party(ed.arg.items[0]);
   c->b = r.party(ed.arg.items[1]);
   if (c->a.body < 0 && c->b.body < 0)
@@ -78,6 +89,34 @@ std::shared_ptr<Effect> read_contact(EffectReader& r, const EffectDef& ed) {
       throw SceneError(tg->pos, "'tangential' must be stick or smooth",
                        "write 'tangential: stick' for a rough contact that does not slide after the impact");
     c->stick = tg->scalar == "stick";
+  }
+  // plastic and rough (e = 0, stick): once it has struck, the parties move together at the point —
+  // a pin that can only push along n̂ (a wheel pivoting about the corner it struck):
+  //   x_b − x_a = 0,  y_b − y_a = 0   from the state its impact ends at (Model::closed_from)
+  const auto ev = r.value_of(c->e, en.pos, "the coefficient of restitution");
+  const bool stays = c->stick && ev && ev->is_zero() && c->a.body != c->b.body && !c->a.ground && !c->b.ground;
+  const scene::Node* sn = ed.options.get("surface");
+  if (sn) {
+    if (!stays)
+      throw SceneError(sn->pos, "contact '" + ed.name + "': 'surface' says whose surface the normal is, which matters only for a contact that stays closed after its impact, and this one " +
+                                    (c->stick ? "rebounds (e > 0)" : "is smooth (it slides after the impact)"),
+                       "leave 'surface' out, or make the contact plastic and rough: 'e: 0, tangential: stick' (a wheel that strikes a corner and pivots about it)");
+    const scene::Text who = r.text_of(*sn, "surface", "wheel");
+    const auto of = [&](const PointRef& p) { return p.body >= 0 ? r.model().bodies[static_cast<std::size_t>(p.body)].name : std::string("ground"); };
+    if (who.s != of(c->a) && who.s != of(c->b))
+      throw SceneError(sn->pos, "contact '" + ed.name + "': 'surface: " + who.s + "' is not a party's: the surface is " + of(c->a) + "'s or " + of(c->b) + "'s",
+                       "write 'surface: " + of(c->b) + "' where the other party is a corner on its surface (a wheel's rim on a step's edge: its normal turns with the wheel), "
+                       "'surface: " + of(c->a) + "' for the other way round");
+    const PointRef& p = who.s == of(c->a) ? c->a : c->b;
+    c->turns = p.body;
+  } else {
+    c->turns = c->a.body;  // the surface through party a (the normal points from it into b)
+  }
+  if (stays) {
+    auto [xa, ya] = r.model().position(c->a);
+    auto [xb, yb] = r.model().position(c->b);
+    c->holds.push_back(r.relation(xb - xa, ed.arg.pos));
+    c->holds.push_back(r.relation(yb - ya, ed.arg.pos));
   }
   return c;
 }

@@ -343,17 +343,41 @@ private:
                             Math::of(tidy(m_.kinetic_energy(static_cast<int>(bi))))}));
       rows(r);
     }
-    if (!m_.constraints.empty()) {
-      para({W(m_.constraints.size() == 1 ? "The constraint holds at every instant, and so does its rate:"
-                                         : "The constraints hold at every instant, and so do their rates:")});
+    // a contact that closes in its impact (plastic and rough) holds its parties from then on: its
+    // relations are said apart from those that hold throughout
+    auto closing = [&](std::size_t k) -> const model::Effect* {
+      const model::Effect* e = m_.carrier(k);
+      return e && !e->reaction(m_)->holds.empty() ? e : nullptr;
+    };
+    auto relation_rows = [&](const std::vector<std::size_t>& ks) {
       std::vector<Row> r;
-      for (auto& [c, pos] : m_.constraints) {
+      for (std::size_t k : ks) {
+        const ex& c = m_.constraints[k].first;
         Row row = tags.row({Math::of(tidy(c)), Math::of(0)});
         ex rate = model::trig_simplify(m_.rate(c));
         if (!rate.is_zero()) row.also.push_back({Math::of(tidy(rate)), Math::of(0)});
         r.push_back(row);
       }
       rows(r);
+    };
+    std::vector<std::size_t> always;
+    for (std::size_t k = 0; k < m_.constraints.size(); ++k)
+      if (!closing(k)) always.push_back(k);
+    if (!always.empty()) {
+      para({W(always.size() == 1 ? "The constraint holds at every instant, and so does its rate:"
+                                 : "The constraints hold at every instant, and so do their rates:")});
+      relation_rows(always);
+    }
+    for (const model::Effect& e : m_.effects) {
+      const auto r = e.reaction(m_);
+      if (!r || r->holds.empty()) continue;
+      const int S = m_.closed_from(e);
+      if (S < 0) continue;
+      const std::string turns = r->turns >= 0 ? "it turns with " + m_.bodies[static_cast<std::size_t>(r->turns)].name + ", whose surface it is" : "it stays as written";
+      para({W("From state " + m_.states[static_cast<std::size_t>(S)].name + " on, the contact " + e.name +
+              " (plastic and rough) holds " + r->b.text + " at " + r->a.text + ", as a pin that can only push along its normal (" + turns +
+              "): while its push N >= 0, its point keeps its place, with its rate:")});
+      relation_rows(r->holds);
     }
     if (m_.bodies.size() > 1) {
       para({W("The kinetic energy of the system is the sum, "), N("T = \\sum T_{b}", "T = Σ T(body)"), W(":")});

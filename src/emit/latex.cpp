@@ -622,6 +622,14 @@ private:
       // a product under the root taken apart: its numbers join the others, x^-k goes below, a
       // number's sign kept apart (factors.hpp)
       bool minus = detail::flatten_roots(f);
+      // a sign under the root goes into a sum there, √(−h (h − 2r)) = √(h (2r − h)): one form,
+      // whichever way round GiNaC holds the sum (its term order follows addresses)
+      for (exvector* v : {&f.root_den, &f.root_num})
+        for (auto& x : *v)
+          if (minus && is_a<add>(x)) {
+            x = -x;
+            minus = false;
+          }
       numeric rn = 1, rd = 1;
       detail::take_root_numbers(f, rn, rd);
       // squares come out of the root, and a number below its bar goes above:

@@ -399,6 +399,10 @@ private:
     m_.constraints.push_back({e, c.pos});
     return m_.constraints.size() - 1;
   }
+  std::size_t relation(const ex& c, const SourcePos& pos) override {
+    m_.constraints.push_back({c, pos});
+    return m_.constraints.size() - 1;
+  }
 
   // --- effects: each kind reads its own options (src/effects/) through these ---
   const Model& model() const override { return m_; }
@@ -618,7 +622,9 @@ private:
         case Reaction::Kind::Pin: parts = {"Rx", "Ry"}; break;
         case Reaction::Kind::Track: parts = {"N"}; break;
         case Reaction::Kind::Relation: parts = {"F"}; break;
-        case Reaction::Kind::Contact: break;
+        case Reaction::Kind::Contact:
+          if (!r->holds.empty()) parts = {"Rx", "Ry"};  // once it has closed: a pin's force on b
+          break;
       }
       for (auto& p : parts) {
         realsymbol x(p + "_" + e.name);
@@ -829,6 +835,41 @@ private:
         }
       }
       m_.analyses.push_back(a);
+    }
+    // a contact that closes in its impact holds in the analyses after it (Model::closed_from),
+    // known only once all are read: the unknowns of an analysis at a state are read again with it
+    bool closes = false;
+    for (auto& e : m_.effects)
+      if (auto r = e.reaction(m_); r && !r->holds.empty()) closes = true;
+    if (closes)
+      for (std::size_t i = 0; i < m_.analyses.size(); ++i)
+        if (model::Analysis& a = m_.analyses[i]; a.type && a.type->at_state()) a.type->read(*this, d_.analyses[i], a);
+    closed_contacts_across();
+  }
+
+  /// A contact that has closed in its impact holds its parties as a pin from then on: its force
+  /// between a body set and the rest is not an unknown of a momentum analysis over a duration,
+  /// nor is its work across an energy analysis whose set leaves out a body it holds — refused,
+  /// where it would be silently left out.
+  void closed_contacts_across() {
+    for (auto& e : m_.effects) {
+      const auto r = e.reaction(m_);
+      if (!r || r->holds.empty()) continue;
+      const int S = m_.closed_from(e);
+      if (S < 0) continue;
+      for (auto& a : m_.analyses) {
+        if (a.instant() || (a.type && a.type->at_state()) || std::min(a.from, a.to) < S) continue;
+        auto in = [&](const PointRef& p) { return p.body >= 0 && std::find(a.bodies.begin(), a.bodies.end(), p.body) != a.bodies.end(); };
+        if (in(r->a) == in(r->b)) continue;
+        const bool momentum = a.type && a.type->takes_reactions();
+        const bool other_body = (in(r->a) ? r->b : r->a).body >= 0;
+        if (!momentum && !other_body) continue;  // energy: a fixed party's point does not move, its force does no work
+        throw SceneError(a.pos, "contact '" + e.name + "' holds " + r->b.text + " at " + r->a.text + " from state '" + m_.states[static_cast<std::size_t>(S)].name +
+                                    "' on (it closed in its impact), and it acts between this " + a.kind +
+                                    " analysis' bodies and the rest: its force over the motion is not one of the unknowns kinergy takes there",
+                         momentum ? "use an energy analysis (and kinetics at the states) for the motion while it holds, or take both of its parties in 'bodies'"
+                                  : "take both of its parties in 'bodies'");
+      }
     }
   }
 

@@ -219,6 +219,18 @@ public:
     if (e < 0) throw InputError("no effect named '" + name + "'", "name a pin, a track or a constraint of the scene");
     auto it = m_.instant_reactions.find(name);
     auto r = m_.effects[e].reaction(m_);
+    const bool closed = r && r->kind == Reaction::Kind::Contact && !r->holds.empty();
+    if (closed && it != m_.instant_reactions.end() && f != "T") {
+      // a contact closed after its impact: R = (Rx, Ry) on its second party; N = R·n̂, F = R·t̂
+      // with t̂ = (−n_y, n_x), n̂ turning with the body whose surface it is
+      const auto& p = it->second;
+      const auto [nx, ny] = m_.closed_normal(m_.effects[e]);
+      if (f == "Rx") return p[0];
+      if (f == "Ry") return p[1];
+      if (f == "R") return sqrt(p[0] * p[0] + p[1] * p[1]);
+      if (f == "N") return p[0] * nx + p[1] * ny;
+      return -p[0] * ny + p[1] * nx;
+    }
     const bool pin = r && r->kind == Reaction::Kind::Pin, track = r && r->kind == Reaction::Kind::Track,
                relation = r && r->kind == Reaction::Kind::Relation;
     if (it == m_.instant_reactions.end() || (f == "N" && !track) || (f == "F" && !relation) || ((f == "Rx" || f == "Ry" || f == "R") && !pin)) {

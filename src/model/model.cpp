@@ -306,13 +306,43 @@ bool Model::is_contact(const Effect& e) const {
 
 const Effect* Model::carrier(std::size_t k) const {
   for (auto& e : effects)
-    if (auto r = e.reaction(*this); r && r->kind == Reaction::Kind::Relation && r->constraint == k) return &e;
+    if (auto r = e.reaction(*this)) {
+      if (r->kind == Reaction::Kind::Relation && r->constraint == k) return &e;
+      if (std::find(r->holds.begin(), r->holds.end(), k) != r->holds.end()) return &e;
+    }
   return nullptr;
+}
+
+int Model::closed_from(const Effect& e) const {
+  const int self = effect_index(e.name);
+  for (auto& a : analyses)
+    if (const Struck* s = a.struck(); s && std::find(s->contacts.begin(), s->contacts.end(), self) != s->contacts.end()) {
+      // closed for the analyses that follow its impact (none: the impact alone, nothing held)
+      const int S = a.to;
+      for (auto& b : analyses)
+        if (&b != &a && std::min(b.from, b.to) >= S) return S;
+      return -1;
+    }
+  return -1;
+}
+
+std::pair<ex, ex> Model::closed_normal(const Effect& e) const {
+  const auto r = e.reaction(*this);
+  if (!r || r->turns < 0) return {r ? r->dir_x : ex(0), r ? r->dir_y : ex(0)};
+  const ex& phi = bodies[static_cast<std::size_t>(r->turns)].angle;
+  const int S = closed_from(e);
+  const ex turn = S >= 0 ? phi - bind(phi, S) : ex(0);
+  // Rot(Δ) n̂₀ = (n_x cos Δ − n_y sin Δ, n_x sin Δ + n_y cos Δ)
+  return {r->dir_x * cos(turn) - r->dir_y * sin(turn), r->dir_x * sin(turn) + r->dir_y * cos(turn)};
 }
 
 bool Model::constraint_at(std::size_t k, int s, bool rate) const {
   const Effect* e = carrier(k);
   if (!e) return true;
+  if (auto r = e->reaction(*this); r && !r->holds.empty()) {
+    const int S = closed_from(*e);  // a contact that has closed: from its impact's last state on
+    return S >= 0 && s >= S;
+  }
   if ((e->on >= 0 && s < e->on) || (e->off >= 0 && s > e->off)) return false;
   if (rate && s == e->on)
     for (auto& a : analyses)
@@ -322,6 +352,14 @@ bool Model::constraint_at(std::size_t k, int s, bool rate) const {
 
 Effect::Activity Model::constraint_activity(std::size_t k, const Analysis& a) const {
   const Effect* e = carrier(k);
+  if (e)
+    if (auto r = e->reaction(*this); r && !r->holds.empty()) {
+      // a contact that has closed holds over an analysis after its impact, not over one before
+      const int S = closed_from(*e), lo = std::min(a.from, a.to), hi = std::max(a.from, a.to);
+      if (S < 0) return Effect::Activity::None;
+      if (lo >= S) return Effect::Activity::Whole;
+      return hi <= S ? Effect::Activity::None : Effect::Activity::Part;
+    }
   return e ? e->activity(a) : Effect::Activity::Whole;
 }
 

@@ -18,6 +18,23 @@ ex tidy(const ex& e) {
   return x;
 }
 
+ex tidy_result(const ex& e) {
+  ex x = tidy(e);
+  if (ex_size(x) < 1500) return x;
+  // a result the solving left large (the forces of a body pinned in free coordinates, after
+  // substitution upon substitution): normalised once, its functions and roots standing in as
+  // symbols, kept when shorter
+  try {
+    exmap repl;
+    ex p = x.to_rational(repl);
+    ex n = normal(p).subs(repl);
+    ex t = trig_simplify(n);
+    if (ex_size(t) < ex_size(x)) x = t;
+  } catch (const std::exception&) {
+  }
+  return x;
+}
+
 namespace {
 ex factor_any_uncached(const ex& e) {
   // factor() works on polynomials: functions (cos β, √…) stand in as temporary symbols

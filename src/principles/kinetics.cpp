@@ -53,6 +53,9 @@ bool touches(const Reaction& r, const std::vector<int>& set) {
 
 bool is_body(const model::PointRef& p) { return p.body >= 0 && !p.ground; }
 
+/// A contact that has closed after its impact and holds its parties together at this instant.
+bool closed(const Reaction& r, const Instant& in) { return !r.holds.empty() && in.constraint[r.holds[0]]; }
+
 /// The generic unknowns: q̈, the reactions of the supports on the set (a constraint effect's
 /// always: its force enters Lagrange's equations), the multipliers of the constraints no effect holds.
 std::vector<ex> generic_unknowns(const Model& m, const Instant& in) {
@@ -61,7 +64,7 @@ std::vector<ex> generic_unknowns(const Model& m, const Instant& in) {
   for (std::size_t i = 0; i < m.effects.size(); ++i) {
     const model::Effect& e = m.effects[i];
     auto r = e.reaction(m);
-    if (!r || !in.effect[i]) continue;
+    if (!r || !in.effect[i] || (r->kind == Reaction::Kind::Contact && !closed(*r, in))) continue;
     if (r->kind == Reaction::Kind::Relation || touches(*r, in.bodies))
       if (auto it = m.instant_reactions.find(e.name); it != m.instant_reactions.end()) u.insert(u.end(), it->second.begin(), it->second.end());
   }
@@ -108,7 +111,11 @@ std::vector<BodyLoad> body_loads(const Model& m, const Instant& in) {
         put(e.name, r->a, u[0] * r->dir_x, u[0] * r->dir_y, 0, true);
         put(e.name, r->b, -u[0] * r->dir_x, -u[0] * r->dir_y, 0, true);
         break;
-      case Reaction::Kind::Contact: break;  // impacts only
+      case Reaction::Kind::Contact:  // in impacts; once closed, R = (Rx, Ry) on party b, −R on a
+        if (!closed(*r, in)) break;
+        put(e.name, r->b, u[0], u[1], 0, true);
+        put(e.name, r->a, -u[0], -u[1], 0, true);
+        break;
     }
   }
   return out;
@@ -147,6 +154,9 @@ std::vector<KineticsBalance::Row> generic_rows(const Model& m, const Instant& in
       if (!in.effect[j]) continue;
       for (const model::Load& l : e.loads(m)) rhs += model::generalized_force(m, l, i);
       auto r = e.reaction(m);
+      // a closed contact: R·δ(r_b − r_a) = Rx δc_x + Ry δc_y
+      if (r && r->kind == Reaction::Kind::Contact && closed(*r, in))
+        for (std::size_t j = 0; j < 2; ++j) rhs += m.instant_reactions.at(e.name)[j] * m.constraints[r->holds[j]].first.diff(q);
       if (!r || r->kind != Reaction::Kind::Relation) continue;
       auto [dax, day] = m.position_derivative(r->a, q);
       auto [dbx, dby] = m.position_derivative(r->b, q);
@@ -513,17 +523,32 @@ OneSidedLimits one_sided_limits(const Model& m) {
   for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
     const model::Effect& e = m.effects[ei];
     const auto r = e.reaction(m);
-    if (!r || r->kind != Reaction::Kind::Track || !r->one_sided) continue;
-    const std::string body = r->a.body >= 0 ? m.bodies[static_cast<std::size_t>(r->a.body)].name : r->a.text;
+    const bool contact = r && r->kind == Reaction::Kind::Contact && !r->holds.empty();
+    if (!r || !(contact || (r->kind == Reaction::Kind::Track && r->one_sided))) continue;
+    const model::PointRef& pushed = contact && r->b.body >= 0 ? r->b : r->a;
+    const std::string body = pushed.body >= 0 ? m.bodies[static_cast<std::size_t>(pushed.body)].name : pushed.text;
     const model::OneWay w = model::one_way(r->pulls, body, e.name);
-    const ex N = m.instant_reactions.at(e.name)[0];
+    // its unknowns, and N from them: a track's N; a closed contact's push along its normal,
+    //   N = R·n̂,  n̂ = Rot(φ − φ@S) n̂₀ turning with the body whose surface it is (S: where it closed)
+    const std::vector<ex> parts(m.instant_reactions.at(e.name).begin(), m.instant_reactions.at(e.name).end());
+    ex N = parts[0];
+    if (contact) {
+      const auto [nx, ny] = m.closed_normal(e);
+      N = parts[0] * nx + parts[1] * ny;
+    }
+    // does it act (a closed contact: hold its parties) over analysis a, or at its state?
+    const auto acts = [&](const model::Analysis& a, bool instant) {
+      if (contact) return instant ? m.constraint_at(r->holds[0], a.from, true) : m.constraint_activity(r->holds[0], a) == model::Effect::Activity::Whole;
+      return instant ? e.at_state(a.from) == model::Effect::AtState::Acts : e.activity(a) == model::Effect::Activity::Whole;
+    };
     // N ≥ 0 at state S: the surface pushes there (it cannot pull a body resting on it)
     auto at_state = [&](const ex& Ns, int S) {
       const std::string st = m.states[static_cast<std::size_t>(S)].name;
       if (std::any_of(out.at_states.begin(), out.at_states.end(), [&](const OneSidedLimit& x) { return x.effect == e.name && x.state == S; })) return;
       // a state the motion starts from (no analysis ends there): it lets go at once, not "before" it
-      const bool start = std::none_of(m.analyses.begin(), m.analyses.end(), [&](const model::Analysis& x) { return x.to == S && !x.instant(); }) &&
-                         std::any_of(m.analyses.begin(), m.analyses.end(), [&](const model::Analysis& x) { return x.from == S && !x.instant(); });
+      const auto over = [](const model::Analysis& x) { return !x.instant() && !(x.type && x.type->at_state()); };  // a motion, not an instant
+      const bool start = std::none_of(m.analyses.begin(), m.analyses.end(), [&](const model::Analysis& x) { return x.to == S && over(x); }) &&
+                         std::any_of(m.analyses.begin(), m.analyses.end(), [&](const model::Analysis& x) { return x.from == S && over(x); });
       if (start)
         out.at_states.push_back({e.name, S,
                                  Condition{Ns,
@@ -543,9 +568,9 @@ OneSidedLimits one_sided_limits(const Model& m) {
       const model::Analysis& a = m.analyses[ai];
       if (a.instant()) continue;  // an impact's reaction is an impulse (its sign: the impact's own check)
       const bool instant = a.type && a.type->at_state();
-      if (instant ? e.at_state(a.from) != model::Effect::AtState::Acts : e.activity(a) != model::Effect::Activity::Whole) continue;
+      if (!acts(a, instant)) continue;
       const auto has = [&](const ex& x) { return std::any_of(a.unknowns.begin(), a.unknowns.end(), [&](const ex& u) { return u.is_equal(x); }); };
-      if (instant && has(m.bind(N, a.from))) {
+      if (instant && std::all_of(parts.begin(), parts.end(), [&](const ex& x) { return has(m.bind(x, a.from)); })) {
         at_state(m.bind(N, a.from), a.from);  // the force the kinetics solves for
         continue;
       }
@@ -562,9 +587,12 @@ OneSidedLimits one_sided_limits(const Model& m) {
       // N in closed form from Newton–Euler over the motion (or at the state), for the states'
       // values and the way between them
       const auto [on, held, what] = acting_in(m, a, instant);
-      ex Ng;
+      ex Ng = N;
       try {
-        Ng = support_forces(m, on, held, r->bodies(), {N}, what, e.pos)[0];
+        const std::vector<ex> got = support_forces(m, on, held, r->bodies(), parts, what, e.pos);
+        exmap by;
+        for (std::size_t i = 0; i < parts.size(); ++i) by[parts[i]] = got[i];
+        Ng = model::trig_simplify(N.subs(by));
       } catch (const SceneError& err) {
         const std::string why = "'" + e.name + "' during " + what + ": " + err.problem();
         if (std::find(out.unchecked.begin(), out.unchecked.end(), why) == out.unchecked.end()) out.unchecked.push_back(why);

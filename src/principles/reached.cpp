@@ -249,9 +249,12 @@ void check_pushes(Way& w, const model::Analysis& a, const std::vector<PushAlong>
     for (double x0 : *v) size = std::max(size, std::fabs(x0));
     Ns.push_back(*v);
   }
+  // (one that pulls already at the start lets go at once: the check at that state says so)
+  std::vector<double> q0 = w.q1;
+  const auto at_start = pushes_at(w.q1[w.p], q0);
   for (std::size_t i = 0; i < way.size(); ++i)
     for (std::size_t k = 0; k < pushes.size(); ++k) {
-      if (!(Ns[i][k] < -1e-9 * size)) continue;
+      if (!(Ns[i][k] < -1e-9 * size) || (at_start && (*at_start)[k] < -1e-9 * size)) continue;
       // the release lies between the sample before (or the start) and this one: bisected
       double lo = i ? way[i - 1].first : w.q1[w.p], hi = way[i].first;
       std::vector<double> ql = i ? way[i - 1].second : w.q1;

@@ -318,6 +318,12 @@ bool flatten_roots(Factors& f) {
   auto take = [&minus](exvector& up, exvector& down) {
     exvector keep, more_down;
     for (auto& x : up) {
+      // (a b)⁻¹ under a root goes below its bar as a b does, however GiNaC holds it (one power
+      // of the product, or a product of powers: which one follows its term order, so addresses)
+      if (is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_negative()) {
+        more_down.push_back(pow(x.op(0), -x.op(1)));
+        continue;
+      }
       if (!is_a<mul>(x)) {
         keep.push_back(x);
         continue;

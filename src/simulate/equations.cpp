@@ -52,6 +52,7 @@ void load_terms(const model::Model& m, const model::Effect& e, int self, Equatio
     auto [vbx, vby] = m.velocity(r->b);
     c.normal = linear_rate(m, (vbx - vax) * r->dir_x + (vby - vay) * r->dir_y);
     c.tangent = linear_rate(m, -(vbx - vax) * r->dir_y + (vby - vay) * r->dir_x);
+    if (r->stick && r->turns >= 0) c.turn = m.bodies[static_cast<std::size_t>(r->turns)].angle;
     eq.contacts.push_back(c);
   }
   if (const model::Blow* j = e.blow()) {
@@ -133,6 +134,10 @@ Equations equations_of_motion(const model::Model& m, const std::vector<bool>& on
   // (a constraint effect that does not act, a cord gone slack, gives no row)
   std::vector<std::size_t> rows;
   for (std::size_t r = 0; r < m.constraints.size(); ++r) {
+    // (a contact that stays closed after its impact holds its parties as a resting contact does:
+    // the run's own contact rows, which let go where it stops pushing)
+    const model::Effect* carrier = m.carrier(r);
+    if (carrier && !carrier->reaction(m)->holds.empty()) continue;
     bool acts = true;
     for (std::size_t k = 0; k < m.effects.size(); ++k)
       if (m.carrier(r) == &m.effects[k] && !on.empty() && !on[k]) acts = false;

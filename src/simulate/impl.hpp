@@ -72,7 +72,7 @@ struct Simulator::Impl {
   std::vector<std::pair<RateAt, RateAt>> o_fric;    // x, y
   std::vector<std::pair<RateAt, RateAt>> o_cont;    // normal, tangent
   // --- the auxiliary kernel: T, V, g, ∂g/∂t, gaps, the stop expression, impulses ---
-  std::size_t a_T = 0, a_V = 0, a_g = 0, a_gt = 0, a_gap = 0, a_stop = 0, a_imp = 0;
+  std::size_t a_T = 0, a_V = 0, a_g = 0, a_gt = 0, a_gap = 0, a_turn = 0, a_stop = 0, a_imp = 0;
   bool has_stop = false;
   std::optional<ex> aux_when;  ///< the stop expression the auxiliary kernel was built with
   std::shared_ptr<void> kept_stepper;  ///< the method's stepper, kept between runs (run.cpp)
@@ -84,6 +84,10 @@ struct Simulator::Impl {
   std::vector<int> frows;                     // sticking: how many rows
   std::vector<double> flimit;
   std::vector<ContactMode> cmode;
+  std::vector<double> cturn0;  ///< a resting contact's surface angle when it came to rest (ContactTerm::turn)
+  /// A contact whose surface turns (ContactTerm::turn) that has let go: its gap is its material
+  /// point's along a normal that no longer says where the surface is, so it is not struck again
+  std::vector<char> cgone;
   std::vector<double> ce;
   // --- a rolling contact on a freed surface (ContactTerm::rolling): sticking (0) or sliding ---
   std::vector<int> cslide;           ///< 0: its tangent row held; ±1: sliding, the sign of its slip ċ
@@ -161,6 +165,8 @@ struct Simulator::Impl {
     fbasis.assign(eq.friction.size(), Eigen::Matrix2d::Zero());
     frows.assign(eq.friction.size(), 0);
     cmode.assign(eq.contacts.size(), ContactMode::Open);
+    cturn0.assign(eq.contacts.size(), 0.0);
+    cgone.assign(eq.contacts.size(), 0);
     cslide.assign(eq.contacts.size(), 0);
     M.resize(n, n);
     f.resize(n);
@@ -329,7 +335,8 @@ struct Simulator::Impl {
     for (std::size_t i = 0; i < m.effects.size(); ++i) on.push_back(o.effects_on.empty() || o.effects_on[i]);
     for (std::size_t k = 0; k < m.constraints.size(); ++k) {
       const model::Effect* c = m.carrier(k);
-      held.push_back(!c || on[static_cast<std::size_t>(m.effect_index(c->name))]);
+      // (a contact that stays closed: held by the run's contact rows, not as a relation)
+      held.push_back(!c || (on[static_cast<std::size_t>(m.effect_index(c->name))] && c->reaction(m)->holds.empty()));
     }
     return {on, held};
   }
@@ -410,6 +417,8 @@ struct Simulator::Impl {
     for (auto& g : eq.gt) a.push_back(value_of(g, values, "a constraint"));
     a_gap = a.size();
     for (auto& C : eq.contacts) a.push_back(value_of(C.gap, values, "contact '" + m.effects[C.effect].name + "'"));
+    a_turn = a.size();
+    for (auto& C : eq.contacts) a.push_back(value_of(C.turn, values, "contact '" + m.effects[C.effect].name + "'"));
     a_imp = a.size();
     for (auto& I : eq.impulses)
       for (auto& P : I.P) a.push_back(value_of(P, values, "impulse '" + m.effects[I.effect].name + "'"));
@@ -469,6 +478,19 @@ struct Simulator::Impl {
 
   // the rows J of a velocity laid out at r, its value and a0
   double rate_v(const RateAt& r) const { return out[r.at]; }
+  // Contact k comes to rest (aux evaluated at the instant): its surface's angle then
+  void rest(std::size_t k) {
+    cmode[k] = ContactMode::Rest;
+    cturn0[k] = aux[a_turn + k];
+  }
+  // The push of resting contact k from its rows' multipliers (lam from contact_row(k)): along
+  // its normal as it has turned since it came to rest, N = λ_n cos Δ + λ_t sin Δ (a rough contact;
+  // λ_n alone for a smooth one or one whose surface does not turn)
+  double push(std::size_t k, const double* lam) const {
+    const double d = aux[a_turn + k] - cturn0[k];
+    if (d == 0 || contact_rows(k) < 2) return lam[0];
+    return lam[0] * std::cos(d) + lam[1] * std::sin(d);
+  }
   const double* rate_J(const RateAt& r) const { return out.data() + r.at + 1; }
   double rate_a0(const RateAt& r) const { return out[r.at + 1 + n]; }
 

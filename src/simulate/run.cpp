@@ -335,7 +335,7 @@ private:
                               "start with the parties apart or touching", p_.m.effects[p_.eq.contacts[k].effect].pos);
       if (gap <= tol) {
         if (vn < 0) strike.push_back(k);
-        else if (vn <= vel_tol()) p_.cmode[k] = ContactMode::Rest;
+        else if (vn <= vel_tol()) p_.rest(k);
       }
     }
     if (!strike.empty()) impact(strike);
@@ -684,10 +684,10 @@ private:
     surface_scale_.resize(p_.eq.contacts.size(), 0.0);
     for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
       if (p_.cmode[k] == ContactMode::Open) {
-        ev.push_back(p_.aux[p_.a_gap + k]);
+        ev.push_back(p_.cgone[k] ? 1.0 : p_.aux[p_.a_gap + k]);
         continue;
       }
-      const double N = lam[p_.contact_row(k)];
+      const double N = p_.push(k, lam.data() + p_.contact_row(k));
       if (!p_.eq.contacts[k].surface) {
         ev.push_back(N);
         continue;
@@ -807,7 +807,7 @@ private:
       } else {
         p_.cmode[i] = ContactMode::Open;
         if (p_.eq.contacts[i].surface) leaves_surface(i);
-        else note("contact '" + contact_name(i) + "' lets go (its normal force reached zero)", contact_name(i), "lets go");
+        else lets_go(i);
       }
       return true;
     }
@@ -994,7 +994,7 @@ private:
         std::size_t k = strike[j];
         double vn = im.vn_after[j];
         if (p_.ce[k] == 0 || vn <= 0) {
-          p_.cmode[k] = ContactMode::Rest;
+          p_.rest(k);
           continue;
         }
         // the normal acceleration in free flight: the next touch after about 2 v_n / |a_n|
@@ -1023,7 +1023,7 @@ private:
             rest.comes_to_rest = true;
             run_.impact_loss += rest.loss;
             run_.impacts.push_back(rest);
-            p_.cmode[k] = ContactMode::Rest;
+            p_.rest(k);
             note("contact '" + contact_name(k) + "' comes to rest (the next bounce would last " + numerics::g_text(flight, 6) + " s and rise " +
                  numerics::g_text(apex, 6) + " m)");
           }
@@ -1031,6 +1031,23 @@ private:
       }
       return;
     }
+  }
+
+  // Contact k lets go (its push has fallen to zero). One whose surface turns with a body (a
+  // wheel's rim about the corner it pivoted on) is not looked for again: its gap is measured at
+  // the material point that struck, which says where the surface is only while they touch.
+  void lets_go(std::size_t k) {
+    if (!p_.eq.contacts[k].turn.is_zero()) {
+      p_.cgone[k] = 1;
+      const model::Effect& e = p_.m.effects[p_.eq.contacts[k].effect];
+      const auto r = e.reaction(p_.m);
+      const std::string body = r && r->turns >= 0 ? p_.m.bodies[static_cast<std::size_t>(r->turns)].name : "its body";
+      note(body + " lets go of '" + contact_name(k) + "' at " + place() + " (its normal force reached zero); a strike on it again is not looked for (" +
+               body + "'s surface there has turned away from the point that struck)",
+           contact_name(k), "lets go");
+      return;
+    }
+    note("contact '" + contact_name(k) + "' lets go (its normal force reached zero)", contact_name(k), "lets go");
   }
 
   // resting contacts that pull let go; the others stay (their normal force is ≥ 0)
@@ -1044,10 +1061,11 @@ private:
       bool changed = false;
       for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
         if (p_.cmode[k] != ContactMode::Rest) continue;
-        if (p_.lambda(static_cast<Eigen::Index>(row[k])) < 0) {
+        if (p_.push(k, p_.lambda.data() + row[k]) < 0) {
           p_.cmode[k] = ContactMode::Open;
           changed = true;
           if (p_.eq.contacts[k].surface) leaves_surface(k);
+          else lets_go(k);
         }
       }
       if (!changed) return;

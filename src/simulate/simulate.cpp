@@ -39,6 +39,16 @@ const Equations& Simulator::equations() const { return p_->eq; }
 const model::Model& Simulator::model() const { return p_->m; }
 std::size_t Simulator::size() const { return 2 * p_->n + p_->nw; }
 void Simulator::rhs(const double* y, double t, double* dydt) { p_->rhs(y, t, dydt); }
+void Simulator::rest_contacts(const double* y, double t) {
+  Impl& p = *p_;
+  std::vector<double> dy(size());
+  p.rhs(y, t, dy.data());  // (the contacts' rates at y)
+  p.eval_aux(t, y);
+  double sq = 1, sv = 1e-300;
+  for (std::size_t i = 0; i < p.n; ++i) sq = std::max(sq, std::fabs(y[i])), sv = std::max(sv, std::fabs(y[p.n + i]));
+  for (std::size_t k = 0; k < p.eq.contacts.size(); ++k)
+    if (std::fabs(p.aux[p.a_gap + k]) <= 1e-9 * sq && std::fabs(p.rate_v(p.o_cont[k].first)) <= 1e-9 * sv) p.rest(k);
+}
 Run Simulator::run(const State& s0, const Stop& stop) { return p_->run(s0, stop); }
 
 }  // namespace kinergy::simulate

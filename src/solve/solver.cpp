@@ -220,6 +220,21 @@ private:
     }
   }
 
+  // √(p²·q) → σp·√q where p has a fixed sign σ at the parameters' values (not at a stand-in for
+  // one without a value): a root that a substitution has squared, √(h²(2r − h)²), taken out, so
+  // that it does not stay beside its own root, √(h(2r − h)), in forms GiNaC orders by addresses
+  ex rooted(const ex& v) const {
+    if (!v.has(sqrt(wild()))) return v;
+    return model::root_simplify(v, [this](const ex& x) -> int {
+      for (auto& s : p_.stand_ins)
+        if (x.has(s)) return 0;
+      if (!free_of_unknowns(x)) return 0;
+      auto n = num(x, p_.env);
+      if (!n || n->is_zero() || !n->is_real()) return 0;
+      return n->is_positive() ? 1 : -1;
+    });
+  }
+
   // An equation linear in an unknown u with a coefficient free of unknowns: u = −b/a.
   bool linear_step(State& st) {
     int best = -1;
@@ -246,7 +261,7 @@ private:
     if (best < 0) return false;
     std::string how = st.eqs[best].label + " (linear)";
     st.eqs.erase(st.eqs.begin() + best);  // used up: it holds by construction
-    assign(st, best_u, model::tidy(-best_b / best_a), how);
+    assign(st, best_u, rooted(model::tidy(-best_b / best_a)), how);
     return true;
   }
 
@@ -427,7 +442,49 @@ private:
       branch(st, q, u, roots, how + " (trigonometric)");
       return;
     }
+    if (sinusoid(st, q, u, arg, rt, how)) return;
     numeric_roots(st, q, u);
+  }
+
+  // A cos w + B sin w + C = 0 (A, B, C free of unknowns; a wheel pinned at a corner: where its
+  // centre is above it), w = a u + b the one argument. With t = tan(w/2), cos w = (1 − t²)/(1 + t²),
+  // sin w = 2t/(1 + t²):  (C − A) t² + 2B t + (A + C) = 0, and w = 2 atan t for each real root
+  // (w = π, where t is infinite, when C = A).
+  bool sinusoid(const State& st, const Equation& q, const symbol& u, const ex& arg, const ex& rt, const std::string& how) {
+    symbol sn("sn"), cs("cs");
+    const ex w = expand(rt.subs(lst{sin(arg) == sn, cos(arg) == cs}));
+    if (w.has(u) || !w.is_polynomial(lst{sn, cs}) || w.degree(sn) != 1 || w.degree(cs) != 1 || !w.diff(sn).diff(cs).is_zero()) return false;
+    const ex A = model::tidy(w.diff(cs)), B = model::tidy(w.diff(sn)), C = model::tidy(w.subs(lst{sn == 0, cs == 0}));
+    if (!free_of_unknowns(A) || !free_of_unknowns(B) || !free_of_unknowns(C)) return false;
+    std::vector<ex> roots;
+    const ex a2 = model::tidy(C - A);
+    bool known = false;
+    if (C.is_zero() && !numerically_zero(B, p_.env, known)) {
+      // A cos w + B sin w = 0: (cos w, sin w) = ±(B, −A)/R, R = √(A² + B²), so w = −sgn(A) acos(B/R)
+      // and that + π (acos keeps cos w as it stands: −acos((r − h)/r), not an arctangent of roots)
+      const ex R = model::root_simplify(model::tidy(sqrt(model::tidy(A * A + B * B))));
+      const auto a = num(A, p_.env);
+      const ex w = a && !a->is_zero() ? (a->is_positive() ? -1 : 1) * acos(model::tidy(B / R)) : atan(model::tidy(-A / B));
+      roots = {w, w + Pi};
+    } else if (numerically_zero(a2, p_.env, known)) {
+      // B t + A = 0 (the other root is w = π)
+      if (numerically_zero(B, p_.env, known)) return false;
+      roots = {model::tidy(2 * atan(-A / B)), Pi};
+    } else {
+      const ex disc = model::tidy(B * B - (C - A) * (A + C));
+      auto v = num(disc, p_.env);
+      if (!v) return false;
+      if (v->is_negative())
+        throw SolveError("the " + q.label + " has no real solution for " + model::text(u), "the position cannot be reached with these values; check the states and parameters",
+                         q.pos);
+      for (const ex& t : {model::tidy((-B + sqrt(disc)) / a2), model::tidy((-B - sqrt(disc)) / a2)}) roots.push_back(model::tidy(2 * atan(t)));
+    }
+    if (!arg.is_equal(u)) {
+      const ex a = arg.diff(u), b = arg.subs(u == 0);  // w = a u + b  ⇒  u = (w − b)/a
+      for (auto& x : roots) x = model::tidy((x - b) / a);
+    }
+    branch(st, q, u, roots, how + " (trigonometric)");
+    return true;
   }
 
   // Several unknowns, and an equation in which one of them, u, appears only squared with a

@@ -840,6 +840,8 @@ struct HCase {
 };
 const HCase kHCases[] = {
     {"ball_bounce_spin.yaml", "H(ball.C)", "0"},                       // the contact point
+    {"wheel_over_step.yaml", "H(E)", "0"},                             // the edge it strikes
+    {"sphere_onto_step.yaml", "H(E)", "0"},                            // the edge it strikes
     {"bar_struck_off_percussion.yaml", "H(O)", "J*d"},                 // the pivot; the blow's moment
     {"bouncing_ball.yaml", "H(ball.C)", "0"},                          // on the line of the impulse
     {"bullet_hanging_bar.yaml", "H(O)", "0"},                          // the pivot

@@ -161,3 +161,14 @@ TEST_CASE("flight: a rolling disk pushed past its static friction slips and slid
 TEST_CASE("flight: a track the coordinates do not keep is refused by the simulation, not passed through", "[simulate][errors]") {
   REQUIRE_THROWS_WITH(run(contact("track_not_kept.yaml"), 0.5), Catch::Contains("track 'floor': the coordinates do not keep disk on it"));
 }
+
+TEST_CASE("flight: a wheel that struck a step's edge pivots over it and lets go on the far side", "[simulate][release][impact]") {
+  // plastic and rough: it pivots about E, over the top, and down the far side until the edge's push
+  // falls to zero at G - E = (0.238531494859549, 0.181941545448171) m (sympy_step.py, x_leave, y_leave)
+  const sim::Run r = run(kt::derivation("impact/wheel_over_step.yaml"), 1.0);
+  REQUIRE(r.impacts.size() == 1);
+  CHECK(std::fabs(r.impacts[0].impulse[0] - 9.5405567039991) < 1e-8);  // Jn (sympy_step.py)
+  REQUIRE(r.switches.size() == 1);
+  CHECK(r.switches[0].kind == "lets go");
+  CHECK_THAT(r.switches[0].text, Catch::Contains("wheel lets go of 'edge' at x = 0.238531 m, y = 0.181942 m"));
+}

@@ -109,6 +109,13 @@ struct Reaction {
   /// One-sided and a cord (`cord: [O, bob]`): N is its tension, pulling the point toward O; it
   /// goes slack where N falls to zero, and snaps taut (an impact, with e) where it straightens.
   bool pulls = false;
+  /// A contact that stays closed after its impact (plastic and rough: e = 0, `tangential: stick`):
+  /// from the state its impact ends at (Model::closed_from), a pin holding b's point at a's — the
+  /// model's constraints `holds`, x then y of r_b − r_a = 0, their multipliers the force R on b
+  /// (−R on a) — whose push along n̂ can only be ≥ 0, n̂ turning with body `turns` (the party
+  /// whose surface it is: a wheel's rim on a corner; −1: fixed, a ground surface).
+  std::vector<std::size_t> holds;
+  int turns = -1;
   SourcePos limit_pos;  ///< where `mu_s` is written
   /// The names of its unknowns over a duration: Rx, Ry (pin), N (track), J (relation); a
   /// contact has none (it acts in impacts only).
@@ -204,6 +211,9 @@ public:
   /// A relation "lhs = rhs" between coordinates, checked (units, a coordinate in it, not already
   /// among `constraints:`) and added to the model's constraints: its index there.
   virtual std::size_t constraint(const scene::Text& t, const std::string& key) = 0;
+  /// A relation c(q) = 0 an effect derives itself (a contact that stays closed: r_b − r_a = 0),
+  /// added to the model's constraints: its index there.
+  virtual std::size_t relation(const ex& c, const SourcePos& pos) = 0;
 };
 
 /// One effect of a scene. Defaults describe an effect that does nothing in that respect.

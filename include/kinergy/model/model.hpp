@@ -271,8 +271,16 @@ public:
   Contact contact(int i) const;
   /// Is effect e a contact (an impact party)?
   bool is_contact(const Effect& e) const;
-  /// The effect that holds constraint k (a `constraint` effect), or nullptr (`constraints:`).
+  /// The effect that holds constraint k (a `constraint` effect, a contact that stays closed after
+  /// its impact), or nullptr (`constraints:`).
   const Effect* carrier(std::size_t k) const;
+  /// A contact that stays closed after its impact (Reaction::holds): the state that impact ends
+  /// at, from which on it holds its parties together; −1 when no impact analysis strikes it, or no
+  /// analysis follows that impact.
+  int closed_from(const Effect& e) const;
+  /// Such a contact's normal n̂ (generic) while it is closed: n̂₀ as written, turned with the body
+  /// whose surface it is since it closed, n̂ = Rot(φ − φ@S) n̂₀ (fixed for a ground surface).
+  std::pair<ex, ex> closed_normal(const Effect& e) const;
   /// Does constraint k hold at state s (its positions; with `rate`, its rates too)? A constraint
   /// effect switched off at S holds up to S (a cord that goes slack there), one switched on at
   /// S from S on — its rates from S on unless an impact starts at S (it engages in the impact).

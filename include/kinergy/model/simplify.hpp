@@ -33,6 +33,9 @@ std::optional<GiNaC::ex> antiderivative(const GiNaC::ex& f, const GiNaC::symbol&
 /// A closed form made tidy: trigonometric simplification, then the rational normal form when
 /// the expression is small enough for that to stay cheap (and it does not grow).
 GiNaC::ex tidy(const GiNaC::ex& e);
+/// tidy(), and for a result that stays large (over 1500 nodes), normalised once with its functions
+/// and roots as symbols, kept when shorter.
+GiNaC::ex tidy_result(const GiNaC::ex& e);
 
 /// factor() of any expression: non-polynomial parts (functions, roots) stand in as symbols.
 GiNaC::ex factor_any(const GiNaC::ex& e);

@@ -59,6 +59,10 @@ struct ContactTerm {
   /// friction force per unit of the tangent row's multiplier, |f| with F = λ f.
   int rolling = -1;
   ex mu_s = 0, mu_k = -1, force_per = 1;
+  /// Rough and resting (held at its point: a wheel pivoting about the corner it struck), its
+  /// normal turns with the body whose surface it is: that body's angle (0: a fixed surface). Its
+  /// push is N = λ_n cos Δ + λ_t sin Δ, Δ the angle turned since it came to rest.
+  ex turn = 0;
 };
 
 /// A given impulse J at a point (acts once, at the first instant).

@@ -174,6 +174,10 @@ public:
 
   /// dy/dt at y = [q, q̇, U…] (the current friction and contact modes), for benchmarks.
   void rhs(const double* y, double t, double* dydt);
+  /// Take every contact touching and at rest at y (its gap and normal rate within 1e-9 of the
+  /// positions' and rates' size) as resting, held by its rows: the accelerations at a state where
+  /// a body rests on, or pivots about, what it struck.
+  void rest_contacts(const double* y, double t);
 
   struct Impl;  ///< compiled equations, modes and workspace (src/simulate/impl.hpp)
 
