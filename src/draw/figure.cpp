@@ -710,11 +710,11 @@ At state_values(const model::Model& m, const exmap& solved, const exmap& params,
   At at;
   at.values = params;
   at.values[m.t] = 0;
-  // a state value: given, or solved (closed forms may name other solved symbols)
-  auto value_of = [&](const ex& sym) {
+  // a value at state `of`: given, or solved (closed forms may name other solved symbols)
+  auto value_at = [&](const ex& sym, const model::State& of) {
     ex v = sym;
     for (int pass = 0; pass < 4; ++pass) {
-      ex w = v.subs(S.given).subs(solved);
+      ex w = v.subs(of.given).subs(solved);
       if (w.is_equal(v)) break;
       v = w;
     }
@@ -722,6 +722,7 @@ At state_values(const model::Model& m, const exmap& solved, const exmap& params,
     p.values = params;
     return p(v);
   };
+  auto value_of = [&](const ex& sym) { return value_at(sym, S); };
   for (auto& c : m.coords) {
     auto& [q, qd] = S.sym.at(c.name);
     double v = value_of(q);
@@ -738,18 +739,10 @@ At state_values(const model::Model& m, const exmap& solved, const exmap& params,
   // angle its surface had at the state it closed (Model::closed_normal)
   for (const model::Effect& e : m.effects) {
     const auto r = e.reaction(m);
-    const int S2 = r && !r->holds.empty() && r->turns >= 0 ? m.closed_from(e) : -1;
+    const int S2 = r && r->turns >= 0 ? m.closed_from(e) : -1;
     if (S2 < 0) continue;
     const ex sym = m.bind(m.bodies[static_cast<std::size_t>(r->turns)].angle, S2);
-    ex v = sym;
-    for (int pass = 0; pass < 4; ++pass) {
-      ex w = v.subs(m.states[static_cast<std::size_t>(S2)].given).subs(solved);
-      if (w.is_equal(v)) break;
-      v = w;
-    }
-    At p;
-    p.values = params;
-    if (const double x = p(v); !std::isnan(x) && is_a<symbol>(sym)) at.values[sym] = x;
+    if (const double x = value_at(sym, m.states[static_cast<std::size_t>(S2)]); !std::isnan(x) && is_a<symbol>(sym)) at.values[sym] = x;
   }
   return at;
 }

@@ -39,9 +39,9 @@ void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
   // onto it, r = r_b − ((r_b − r_a)·n̂) n̂, the normal from there
   auto [xa, ya] = at.point(m.position(a));
   auto [xb, yb] = at.point(m.position(b));
-  // (one that has closed in its impact: its normal as it has turned with its surface since)
-  // (where the angle it closed at is not known, an animation's frame: as written)
-  auto [enx, eny] = !holds.empty() && m.closed_from(*this) >= 0 ? m.closed_normal(*this) : std::pair<ex, ex>{nx, ny};
+  // (one that has closed in its impact: its normal as it has turned with its surface since;
+  // where the angle it closed at is not known, an animation's frame: as written)
+  auto [enx, eny] = m.closed_normal(*this);
   if (std::isnan(at(enx)) || std::isnan(at(eny))) enx = nx, eny = ny;
   const double len = std::hypot(at(enx), at(eny));
   const double ux = at(enx) / len, uy = at(eny) / len, g = f.glyph();

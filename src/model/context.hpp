@@ -220,7 +220,7 @@ public:
     auto it = m_.instant_reactions.find(name);
     auto r = m_.effects[e].reaction(m_);
     const bool closed = r && r->kind == Reaction::Kind::Contact && !r->holds.empty();
-    if (closed && it != m_.instant_reactions.end() && f != "T") {
+    if (closed && it != m_.instant_reactions.end()) {
       // a contact closed after its impact: R = (Rx, Ry) on its second party; N = R·n̂, F = R·t̂
       // with t̂ = (−n_y, n_x), n̂ turning with the body whose surface it is
       const auto& p = it->second;

@@ -314,6 +314,7 @@ const Effect* Model::carrier(std::size_t k) const {
 }
 
 int Model::closed_from(const Effect& e) const {
+  if (const auto r = e.reaction(*this); !r || r->holds.empty()) return -1;  // it does not stay closed
   const int self = effect_index(e.name);
   for (auto& a : analyses)
     if (const Struck* s = a.struck(); s && std::find(s->contacts.begin(), s->contacts.end(), self) != s->contacts.end()) {

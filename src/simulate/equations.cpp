@@ -140,7 +140,7 @@ Equations equations_of_motion(const model::Model& m, const std::vector<bool>& on
     if (carrier && !carrier->reaction(m)->holds.empty()) continue;
     bool acts = true;
     for (std::size_t k = 0; k < m.effects.size(); ++k)
-      if (m.carrier(r) == &m.effects[k] && !on.empty() && !on[k]) acts = false;
+      if (carrier == &m.effects[k] && !on.empty() && !on[k]) acts = false;
     if (acts) rows.push_back(r);
   }
   const std::size_t nc = rows.size();

@@ -220,21 +220,6 @@ private:
     }
   }
 
-  // √(p²·q) → σp·√q where p has a fixed sign σ at the parameters' values (not at a stand-in for
-  // one without a value): a root that a substitution has squared, √(h²(2r − h)²), taken out, so
-  // that it does not stay beside its own root, √(h(2r − h)), in forms GiNaC orders by addresses
-  ex rooted(const ex& v) const {
-    if (!v.has(sqrt(wild()))) return v;
-    return model::root_simplify(v, [this](const ex& x) -> int {
-      for (auto& s : p_.stand_ins)
-        if (x.has(s)) return 0;
-      if (!free_of_unknowns(x)) return 0;
-      auto n = num(x, p_.env);
-      if (!n || n->is_zero() || !n->is_real()) return 0;
-      return n->is_positive() ? 1 : -1;
-    });
-  }
-
   // An equation linear in an unknown u with a coefficient free of unknowns: u = −b/a.
   bool linear_step(State& st) {
     int best = -1;
@@ -261,7 +246,7 @@ private:
     if (best < 0) return false;
     std::string how = st.eqs[best].label + " (linear)";
     st.eqs.erase(st.eqs.begin() + best);  // used up: it holds by construction
-    assign(st, best_u, rooted(model::tidy(-best_b / best_a)), how);
+    assign(st, best_u, model::tidy(-best_b / best_a), how);
     return true;
   }
 
@@ -464,8 +449,8 @@ private:
       // and that + π (acos keeps cos w as it stands: −acos((r − h)/r), not an arctangent of roots)
       const ex R = model::root_simplify(model::tidy(sqrt(model::tidy(A * A + B * B))));
       const auto a = num(A, p_.env);
-      const ex w = a && !a->is_zero() ? (a->is_positive() ? -1 : 1) * acos(model::tidy(B / R)) : atan(model::tidy(-A / B));
-      roots = {w, w + Pi};
+      const ex w0 = a && !a->is_zero() ? (a->is_positive() ? -1 : 1) * acos(model::tidy(B / R)) : atan(model::tidy(-A / B));
+      roots = {w0, w0 + Pi};
     } else if (numerically_zero(a2, p_.env, known)) {
       // B t + A = 0 (the other root is w = π)
       if (numerically_zero(B, p_.env, known)) return false;
