@@ -85,7 +85,7 @@ KineticsCheck check_kinetics(const Solution& s, int ai) {
     y[i] = q->to_double();
     y[n + i] = qd->to_double();
   }
-  sim.rest_contacts(y.data(), t ? t->to_double() : 0.0);  // (a contact closed at the state holds there)
+  sim.modes_at(y.data(), t ? t->to_double() : 0.0);  // (contacts resting and friction slipping as at the state)
   sim.rhs(y.data(), t ? t->to_double() : 0.0, dy.data());
   // q̈ by Newton–Euler against the equations of motion, relative to the accelerations' size (or
   // q̇² where they vanish: a pendulum at its lowest point)

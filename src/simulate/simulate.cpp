@@ -39,7 +39,7 @@ const Equations& Simulator::equations() const { return p_->eq; }
 const model::Model& Simulator::model() const { return p_->m; }
 std::size_t Simulator::size() const { return 2 * p_->n + p_->nw; }
 void Simulator::rhs(const double* y, double t, double* dydt) { p_->rhs(y, t, dydt); }
-void Simulator::rest_contacts(const double* y, double t) {
+void Simulator::modes_at(const double* y, double t) {
   Impl& p = *p_;
   std::vector<double> dy(size());
   p.rhs(y, t, dy.data());  // (the contacts' rates at y)
@@ -48,6 +48,15 @@ void Simulator::rest_contacts(const double* y, double t) {
   for (std::size_t i = 0; i < p.n; ++i) sq = std::max(sq, std::fabs(y[i])), sv = std::max(sv, std::fabs(y[p.n + i]));
   for (std::size_t k = 0; k < p.eq.contacts.size(); ++k)
     if (std::fabs(p.aux[p.a_gap + k]) <= 1e-9 * sq && std::fabs(p.rate_v(p.o_cont[k].first)) <= 1e-9 * sv) p.rest(k);
+  // a friction that slips at y: sliding, against that slip, F = −μN v̂ (its rates were laid out by
+  // the rhs call above)
+  for (std::size_t k = 0; k < p.eq.friction.size(); ++k) {
+    const auto v = p.slip(k);
+    const double sp = std::hypot(v[0], v[1]);
+    if (!(sp > 0)) continue;
+    p.fmode[k] = FrictionMode::Slide;
+    p.fdir[k] = {v[0] / sp, v[1] / sp};
+  }
 }
 Run Simulator::run(const State& s0, const Stop& stop) { return p_->run(s0, stop); }
 

@@ -221,3 +221,79 @@ TEST_CASE("kinetics at an instant: asked where kinetic friction stops sliding, t
                                             Catch::Contains("a kinetic friction where nothing slides (or a drive at rest) has no force there") &&
                                             Catch::Contains("hold the rolling there with a constraint effect"));
 }
+
+TEST_CASE("kinetics at an instant: kinetic friction opposes the slip at the state, whichever way it goes (issue 43, finding 1)", "[kinetics][confirm]") {
+  // By hand: a block sliding with rate v on a floor, F = −μ m g sign(v): a = −μ g sign(v). A shoe
+  // pressed on a wall by P and sliding down: m a = −m g + μ P. A disk turning clockwise against
+  // its bearing's couple Mf: (m r²/2) α = +Mf. The check's equations of motion must take the
+  // friction's sense from the state's slip too (they took +x, +y and counter-clockwise, and
+  // refused the right answer).
+  const std::string block = R"(title: A block sliding on a rough floor, at an instant
+parameters:
+  m: 4 kg
+  mu: 0.25
+  g: 9.81 m/s^2
+coordinates:
+  x: m
+bodies:
+  block: {mass: m, inertia: particle, position: [x, 0]}
+effects:
+  rub: {friction: block, mu: mu, normal: m*g}
+states:
+  1: {x: 0, x_dot: -3 m/s}
+analyses:
+  - kinetics: {at: 1}
+find:
+  a: {value: x_ddot@1, unit: m/s^2}
+)";
+  const std::string shoe = R"(title: A shoe pressed on a wall, sliding down, at an instant
+parameters:
+  m: 2 kg
+  mu: 0.4
+  P: 30 N
+  g: 9.81 m/s^2
+coordinates:
+  y: m
+bodies:
+  shoe: {mass: m, inertia: particle, position: [0, y]}
+effects:
+  gravity: {g: g}
+  rub: {friction: shoe, mu: mu, normal: P}
+states:
+  1: {y: 0, y_dot: -1.5 m/s}
+analyses:
+  - kinetics: {at: 1}
+find:
+  a: {value: y_ddot@1, unit: m/s^2}
+)";
+  const std::string wheel = R"(title: A wheel turning clockwise against its bearing's couple, at an instant
+parameters:
+  m: 25 kg
+  r: 0.3 m
+  Mf: 1.5 N*m
+coordinates:
+  theta: rad
+bodies:
+  wheel: {mass: m, inertia: {disk: r}, position: [0, 0], angle: theta}
+effects:
+  bearing: {friction_couple: wheel, M: Mf}
+states:
+  1: {theta: 0, theta_dot: -20 rad/s}
+analyses:
+  - kinetics: {at: 1}
+find:
+  alpha: {value: theta_ddot@1, unit: rad/s^2}
+)";
+  auto confirmed = [](kinergy::Solution s) {
+    kinergy::confirm(s);  // throws where the equations of motion disagree
+    REQUIRE(s.confirmed.size() == 1);
+    CHECK(s.confirmed[0].by == kinergy::Confirmed::By::EquationsOfMotion);
+    return s;
+  };
+  CHECK(value(confirmed(solve_text(block)), "a") == Approx(0.25 * 9.81).epsilon(1e-14));
+  CHECK(value(confirmed(solve_text(kt::edit(block, "x_dot: -3", "x_dot: 3"))), "a") == Approx(-0.25 * 9.81).epsilon(1e-14));
+  CHECK(value(confirmed(solve_text(shoe)), "a") == Approx(-9.81 + 0.4 * 30 / 2).epsilon(1e-14));
+  CHECK(value(confirmed(solve_text(kt::edit(shoe, "y_dot: -1.5", "y_dot: 1.5"))), "a") == Approx(-9.81 - 0.4 * 30 / 2).epsilon(1e-14));
+  CHECK(value(confirmed(solve_text(wheel)), "alpha") == Approx(2 * 1.5 / (25 * 0.09)).epsilon(1e-14));
+  CHECK(value(confirmed(solve_text(kt::edit(wheel, "-20 rad/s", "20 rad/s"))), "alpha") == Approx(-2 * 1.5 / (25 * 0.09)).epsilon(1e-14));
+}

@@ -174,10 +174,12 @@ public:
 
   /// dy/dt at y = [q, q̇, U…] (the current friction and contact modes), for benchmarks.
   void rhs(const double* y, double t, double* dydt);
-  /// Take every contact touching and at rest at y (its gap and normal rate within 1e-9 of the
-  /// positions' and rates' size) as resting, held by its rows: the accelerations at a state where
-  /// a body rests on, or pivots about, what it struck.
-  void rest_contacts(const double* y, double t);
+  /// The modes at y, for the accelerations at a state (a kinetics check): every contact touching
+  /// and at rest there (its gap and normal rate within 1e-9 of the positions' and rates' size)
+  /// rests, held by its rows (a body resting on, or pivoting about, what it struck), and every
+  /// kinetic friction that slips there opposes its slip at y (a block sliding in −x, a wheel
+  /// turning clockwise against a bearing couple), not the run's first guess.
+  void modes_at(const double* y, double t);
 
   struct Impl;  ///< compiled equations, modes and workspace (src/simulate/impl.hpp)
 
