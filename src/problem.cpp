@@ -37,6 +37,12 @@ bool has_float(const ex& e) {
 }
 
 
+/// A result with neither a closed form nor a number (a numeric root of an equation in parameters
+/// without values): so at every sample of them, so not tried at another.
+struct NoFormError : SceneError {
+  using SceneError::SceneError;
+};
+
 struct Selector {
   const Model& m;
   const exmap& env;
@@ -257,11 +263,20 @@ struct Selector {
     return out;
   }
 
+  /// The branches' values of f, "1.5 or -1.5"; where f holds a parameter without a value (or
+  /// has no number on a branch), its forms, "sqrt(2*g*h) or -sqrt(2*g*h)".
   std::string values(const std::vector<solve::Branch>& bs, const model::Find& f) const {
+    bool forms = false;
+    for (auto& b : bs) {
+      const ex form = find_form(f, b);
+      forms = forms || !find_value(f, b) ||
+              std::any_of(m.params.begin(), m.params.end(), [&](const model::Parameter& p) { return !p.value && !p.unknown && form.has(p.sym); });
+    }
     std::string s;
     for (auto& b : bs) {
       auto v = find_value(f, b);
-      s += (s.empty() ? "" : " or ") + (v ? numerics::format(*v, 6) : std::string("?"));
+      std::string one = forms || !v ? model::text(model::tidy_result(find_form(f, b))) : numerics::format(*v, 6);
+      s += (s.empty() ? "" : " or ") + one;
     }
     return s;
   }
@@ -1390,11 +1405,23 @@ private:
   }
   bool all_values = true;
   const model::Parameter* missing = nullptr;
+  // a numeric root holds the parameters of its equation (every one, where it does not say)
+  auto holds = [&](const model::Parameter& p) {
+    if (r.closed_form) return r.closed.has(p.sym);
+    if (r.roots.empty()) return !p.unknown && !p.ranged;
+    return std::any_of(r.roots.begin(), r.roots.end(), [&](const numerics::RootOf& x) { return x.residual.has(p.sym); });
+  };
   for (auto& p : m.params)
-    if (r.closed.has(p.sym) && !p.value) {
+    if (!p.value && (r.closed_form || !p.ranged) && holds(p)) {
       all_values = false;
       if (!missing) missing = &p;
     }
+  // neither a form nor a number: a root of an equation in parameters without values
+  if (!all_values && !r.closed_form)
+    throw NoFormError(f.pos, "'" + f.name + "' has no closed form (it is a root of an equation found numerically), and parameter '" + missing->name +
+                                "' has no value, so neither a form nor a number can be given",
+                     "give the parameters values (the root is then found for them), e.g. '" + missing->name + ": " +
+                         (units::si_name(missing->dim).empty() ? std::string("30 deg") : "2 " + units::si_name(missing->dim)) + "'");
   // a unit on the result, or a claimed number, asks for a number
   bool number_asked = f.unit.has_value();
   for (auto& x : m.expects) number_asked = number_asked || (x.name == f.name && x.value);
@@ -1426,24 +1453,59 @@ GiNaC::exmap parameter_values(const Solution& s) {
   return v;
 }
 
-Solution solve_scene(const scene::SceneDef& def) {
-  const Model base = Model::build(def);
-  // a force that switches on the way to a state whose position is unknown: the case taken
-  // first is past every switching point; while it has no solution, one switching point fewer
-  std::optional<SceneError> first;
-  for (int fewer = 0;; ++fewer) {
-    Solution sol{base, {}, {}, {}, {}, {}, {}, def, {}, {}, {}, {}};
+/// Does every condition the solution states for parameters without values hold at the sample
+/// values its choices were made at?
+static bool inside(const Solution& s) {
+  const exmap env = s.model.numeric_environment();
+  for (auto& c : s.valid_where) {
+    std::optional<numeric> v;
     try {
-      SceneSolver(sol, fewer).run();
-      return sol;
-    } catch (const SceneError& e) {
-      if (!first) first = e;
-      int cases = 1;
-      for (auto* bal : sol.balances_of<principles::EnergyBalance>())
-        for (auto& w : bal->works) cases = std::max(cases, w.switch_cases);
-      if (fewer + 1 >= cases) throw *first;
+      v = numerics::evaluate(c.e, env, 30);
+    } catch (const std::exception&) {
     }
+    if (!v || !v->is_real() || v->is_negative()) return false;
   }
+  return true;
+}
+
+Solution solve_scene(const scene::SceneDef& def) {
+  Model base = Model::build(def);
+  const bool free = std::any_of(base.params.begin(), base.params.end(), [](const model::Parameter& p) { return !p.value && !p.unknown && !p.ranged; });
+  // A force that switches on the way to a state whose position is unknown: the case taken first
+  // is past every switching point; while it has no solution, one switching point fewer.
+  // Parameters without values: the numeric choices (a root, a sign, the first state along the
+  // motion) are made at sample values of them; where a case has no solution at the first sample
+  // (an Atwood machine whose sampled masses would lift the heavier block), it is tried at the
+  // next, up to kSolveSamples, before a switching point fewer. The closed forms hold where the
+  // choices fall the same way: the confirmation checks them at samples of its own. Where no
+  // case has a solution at any sample, the first error.
+  // A solution whose own conditions (valid_where) fail at the sample its choices were made at
+  // chose outside its domain (a rod whose sampled speed would take it off the wall at once, where
+  // only the horizontal rod has N = 0): the next sample is tried, and that solution kept only
+  // where none does better.
+  std::optional<SceneError> first;
+  std::optional<Solution> outside;
+  int cases = 1;
+  for (int fewer = 0; fewer < cases; ++fewer) {
+    for (int k = 0; k < (free ? kSolveSamples : 1); ++k) {
+      base.sample = k;
+      Solution sol{base, {}, {}, {}, {}, {}, {}, def, {}, {}, {}, {}};
+      try {
+        SceneSolver(sol, fewer).run();
+        if (!free || inside(sol)) return sol;
+        if (!outside) outside = std::move(sol);
+        continue;
+      } catch (const NoFormError&) {
+        throw;  // (so at every sample)
+      } catch (const SceneError& e) {
+        if (!first) first = e;
+        for (auto* bal : sol.balances_of<principles::EnergyBalance>())
+          for (auto& w : bal->works) cases = std::max(cases, w.switch_cases);
+      }
+    }
+    if (outside) return std::move(*outside);  // (no sample inside its domain: the first found)
+  }
+  throw *first;
 }
 
 Solution solve_file(const std::string& path) { return solve_scene(scene::load_file(path)); }

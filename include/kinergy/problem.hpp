@@ -81,6 +81,11 @@ struct Confirmed {
   double difference = 0;  ///< the largest relative difference found
   double tolerance = 0;   ///< what it was checked against
   std::string note;       ///< how the simulation stood for the analysis (a nudge), or why none could
+  /// Closed forms in parameters without values: those parameters ("m, L, theta0"), confirmed at
+  /// each of `samples` ("m = 1.37 kg, L = 0.842 m, theta0 = 1.05") as a numeric scene is; `by`
+  /// is the weakest way any sample was confirmed, `difference` the largest.
+  std::string sampled;
+  std::vector<std::string> samples;
 };
 
 struct Solution {
@@ -131,6 +136,9 @@ struct Solution {
 /// Every parameter's number: the given values, and the solved values of unknown parameters (for
 /// drawing and simulating the solved scene).
 GiNaC::exmap parameter_values(const Solution& s);
+
+/// Sample values of parameters without values a solve tries its choices at (Model::sample).
+constexpr int kSolveSamples = 8;
 
 /// Solve a scene. @throws SceneError (bad scene, no solution, ambiguous roots).
 Solution solve_scene(const scene::SceneDef& def);

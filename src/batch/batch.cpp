@@ -123,7 +123,8 @@ public:
         confirmed.push_back({c.analysis, c.by == Confirmed::By::None ? c.by : Confirmed::By::Shared, c.difference, c.tolerance,
                              "the solution found at batch line " + std::to_string(line_) + " (confirmed there " +
                                  (c.by == Confirmed::By::None ? std::string("not at all") : "by " + Confirmed::name(c.by)) +
-                                 "), shown to hold at these values: every choice it made falls the same way"});
+                                 "), shown to hold at these values: every choice it made falls the same way",
+                             {}, {}});
       template_ = emit::json_template(base_, o, confirmed);
     }
     last_.clear();

@@ -4,12 +4,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/confirm/check.hpp"
 #include "kinergy/principles/kinetics.hpp"
+#include "kinergy/print/plain.hpp"
+#include "kinergy/units/units.hpp"
 
 namespace kinergy {
 
@@ -50,6 +53,10 @@ std::optional<double> residuals(const Solution& s, std::string& which) {
 }
 
 }  // namespace
+
+bool no_second_opinion(const model::Analysis& a, const simulate::LegCheck& c) {
+  return !c.ok && c.worst_what.rfind("the simulation does not reach", 0) == 0 && a.type->impulsive();
+}
 
 std::string Confirmed::name(By b) {
   switch (b) {
@@ -182,9 +189,8 @@ std::optional<simulate::LegCheck> simulated(const Solution& s, const simulate::L
   return run;
 }
 
-}  // namespace
-
-void confirm(Solution& s) {
+/// Every analysis of a scene whose parameters all have numbers (or, without, by residuals).
+void confirm_numeric(Solution& s) {
   s.confirmed.clear();
   const model::Model& m = s.model;
   simulate::Options o;
@@ -237,7 +243,7 @@ void confirm(Solution& s) {
         c.note = run->note;
       } else if (run && run->worst_what.rfind("no solved value", 0) == 0) {
         c.note = "not simulated: " + run->worst_what;
-      } else if (run && run->worst_what.rfind("the simulation does not reach", 0) == 0 && a.type->impulsive()) {
+      } else if (run && no_second_opinion(a, *run)) {
         // over a duration the scene's effects alone may not take the motion there (balls drawn in
         // by a mechanism the scene leaves out, under a conservation claim): no value to compare,
         // not a disagreement. (An energy analysis has every effect that works in it: a state its
@@ -275,6 +281,196 @@ void confirm(Solution& s) {
         c.tolerance = kConfirmResidual;
       }
     }
+    s.confirmed.push_back(c);
+  }
+}
+
+
+/// The parameters a closed form holds without a value (not solved for): the sampled ones.
+std::vector<std::size_t> free_parameters(const model::Model& m) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < m.params.size(); ++i)
+    if (!m.params[i].value && !m.params[i].unknown && !m.params[i].ranged) out.push_back(i);
+  return out;
+}
+
+/// Does the solution hold at the sampled values in `at` (its parameters given them)? Every
+/// condition it states for values it could not check (valid_where) met, every result a real
+/// number, every analysis forward in time. `why`: the first that fails.
+bool admissible(const Solution& at, std::string& why) {
+  const model::Model& m = at.model;
+  const exmap given = m.given_values(), env = m.numeric_environment();
+  auto number = [&](const ex& e) -> std::optional<numeric> {
+    try {
+      return numerics::evaluate(e.subs(given).subs(at.branch.sol).subs(given), env, 30);
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  };
+  for (auto& c : at.valid_where) {
+    auto v = number(c.e);
+    if (!v || !v->is_real() || v->is_negative()) {
+      why = c.assumed.empty() ? "a condition of the solution fails" : c.assumed;
+      return false;
+    }
+  }
+  for (auto& r : at.results) {
+    std::optional<numeric> v;
+    try {
+      v = r.value(env, 15);
+    } catch (const std::exception&) {
+    }
+    if (!v || !v->is_real()) {
+      why = "'" + r.name + "' has no real value there";
+      return false;
+    }
+  }
+  for (auto& a : m.analyses) {
+    if (a.from < 0 || a.to < 0 || a.instant()) continue;
+    auto t1 = number(m.states[static_cast<std::size_t>(a.from)].t), t2 = number(m.states[static_cast<std::size_t>(a.to)].t);
+    if (t1 && t2 && t1->is_real() && t2->is_real() && *t2 < *t1) {
+      why = "state '" + m.states[static_cast<std::size_t>(a.to)].name + "' comes before '" + m.states[static_cast<std::size_t>(a.from)].name + "'";
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The closed forms of `at` (its parameters given a sample) against the scene solved with those
+/// numbers: each result to 1e-12 relative. @throws SceneError at the result that differs, with
+/// both numbers.
+void same_values(const Solution& at, const Solution& n, const std::string& shown) {
+  const exmap env = at.model.numeric_environment(), nenv = n.model.numeric_environment();
+  for (std::size_t i = 0; i < at.results.size() && i < n.results.size(); ++i) {
+    const Result& r = at.results[i];
+    std::optional<numeric> a, b;
+    try {
+      a = r.value(env, 15);
+      b = n.results[i].value(nenv, 15);
+    } catch (const std::exception&) {
+    }
+    if (!a || !b) continue;
+    const numeric x = *a, y = *b;  // (both in the display unit the scene asks)
+    const numeric scale = std::max(abs(x), abs(y));
+    if (scale.is_zero() || abs(x - y) <= numeric(1, 1000000000000LL) * scale) continue;
+    throw SceneError(r.pos, "'" + r.name + "' = " + emit::plain(r.closed) + " is " + numerics::format(x, 10) + " at the sampled values " + shown +
+                                ", but the scene solved with those numbers gives " + numerics::format(y, 10) +
+                                ": the closed form does not hold for every value of its parameters",
+                     "report the scene; give the parameters values, or state the root with 'root:'");
+  }
+}
+
+}  // namespace
+
+void confirm(Solution& s) {
+  const std::vector<std::size_t> free = free_parameters(s.model);
+  if (free.empty()) return confirm_numeric(s);
+  // Closed forms in parameters without values: at sampled values of those parameters (kSamples
+  // of them, from a fixed sequence of candidates), the scene is solved as written with those
+  // numbers, its values compared with the closed forms there, and confirmed as a numeric scene
+  // is. A candidate where the solution's conditions fail, or where the scene with those numbers
+  // has no solution (a user's root the motion does not take, a body that does not get there), is
+  // passed over: outside the domain the closed forms hold in. Where no candidate is left, the
+  // residuals (at the model's own sample values) are all there is, and said so.
+  std::vector<Solution> done;
+  std::vector<std::string> values;  // each sample's values, as text
+  std::string skipped;  // why the first candidate passed over was
+  int passed_over = 0;
+  // a sample at which every analysis is confirmed by simulation (or the equations of motion) is
+  // taken before one where some analysis has only its residuals (a run beyond the steps allowed
+  // at those values): weak ones fill up only after kSampleCandidates / 4 candidates
+  std::vector<Solution> weak;
+  std::vector<std::string> weak_values;
+  auto full = [](const Solution& n) {
+    return std::all_of(n.confirmed.begin(), n.confirmed.end(),
+                       [](const Confirmed& c) { return c.by == Confirmed::By::Simulation || c.by == Confirmed::By::EquationsOfMotion; });
+  };
+  for (int k = 0; k < kSampleCandidates && static_cast<int>(done.size()) < kSamples &&
+                  !(static_cast<int>(done.size() + weak.size()) >= kSamples && k >= kSampleCandidates / 4);
+       ++k) {
+    Solution at = s;  // the closed forms, their parameters given the sample
+    scene::SceneDef def = s.scene;  // the scene as written, with those numbers
+    std::string shown;
+    for (std::size_t i : free) {
+      model::Parameter& p = at.model.params[i];
+      const numeric v = model::Model::sample_value(p, 1, k);  // (stream 1: not the solve's choices')
+      p.value = v;
+      const std::string unit = units::si_name(p.dim), text = numerics::format(v, 3) + (unit.empty() ? "" : " " + unit);
+      shown += (shown.empty() ? "" : ", ") + p.name + " = " + text;
+      for (auto& d : def.parameters)
+        if (d.name == p.name) d.value.s = text;
+    }
+    std::string why;
+    std::optional<Solution> n;
+    if (admissible(at, why)) {
+      try {
+        n = solve_scene(def);
+      } catch (const SceneError& err) {
+        why = err.problem();
+      }
+    }
+    if (!n) {
+      if (skipped.empty()) skipped = why + " (at " + shown + ")";
+      ++passed_over;
+      continue;
+    }
+    same_values(at, *n, shown);
+    try {
+      confirm_numeric(*n);
+    } catch (const SceneError& err) {
+      throw SceneError(err.pos(), err.problem() + " (at the sampled values " + shown + ")", err.fix());
+    }
+    // a momentum analysis whose end the scene's effects do not take the motion to at these
+    // values (cords that would pull the balls in, sampled with the end further out): outside
+    // the domain too
+    const std::string unreached = "not confirmed by simulation: the simulation does not reach";
+    if (auto c = std::find_if(n->confirmed.begin(), n->confirmed.end(), [&](const Confirmed& x) { return x.note.rfind(unreached, 0) == 0; });
+        c != n->confirmed.end()) {
+      if (skipped.empty()) skipped = c->note.substr(std::string("not confirmed by simulation: ").size()) + " (at " + shown + ")";
+      ++passed_over;
+      continue;
+    }
+    if (full(*n)) {
+      done.push_back(std::move(*n));
+      values.push_back(shown);
+    } else {
+      weak.push_back(std::move(*n));
+      weak_values.push_back(shown);
+    }
+  }
+  for (std::size_t i = 0; i < weak.size() && static_cast<int>(done.size()) < kSamples; ++i) {
+    done.push_back(std::move(weak[i]));
+    values.push_back(weak_values[i]);
+  }
+  if (done.empty()) {
+    confirm_numeric(s);
+    for (auto& c : s.confirmed)
+      c.note = (c.note.empty() ? "" : c.note + "; ") + "no sampled values of the parameters without values met the solution's conditions" +
+               (skipped.empty() ? "" : ": " + skipped);
+    return;
+  }
+  // each analysis: the weakest way any sample confirmed it (simulation, the equations of motion,
+  // residuals), its largest difference
+  std::string names;
+  for (std::size_t i : free) names += (names.empty() ? "" : ", ") + s.model.params[i].name;
+  s.confirmed.clear();
+  for (std::size_t j = 0; j < done.front().confirmed.size(); ++j) {
+    Confirmed c = done.front().confirmed[j];
+    for (auto& at : done) {
+      const Confirmed& o = at.confirmed[j];
+      auto rank = [](Confirmed::By b) { return b == Confirmed::By::None ? 0 : b == Confirmed::By::Residuals ? 1 : 2; };
+      if (rank(o.by) < rank(c.by)) c = o;
+      else if (o.by == c.by) c.difference = std::max(c.difference, o.difference);
+    }
+    c.sampled = names;
+    c.samples = values;
+    // the static friction a rolling contact needs along the way: at those values only
+    if (std::find(s.friction_along.begin(), s.friction_along.end(), c.analysis) != s.friction_along.end())
+      c.note = (c.note.empty() ? "" : c.note + "; ") + "the static friction of the rolling along the way holds at these values; at others it is not checked";
+    // the candidates passed over tell where the closed forms do not hold
+    if (passed_over > 0)
+      c.note = (c.note.empty() ? "" : c.note + "; ") + "passed over " + std::to_string(passed_over) + " sampled value" + (passed_over > 1 ? "s" : "") +
+               " where the scene has no solution, first: " + skipped;
     s.confirmed.push_back(c);
   }
 }

@@ -1,4 +1,5 @@
 // Linear spring between two points: V = ½ k (|r_A − r_B| − L₀)².
+#include <algorithm>
 #include <functional>
 #include <optional>
 
@@ -78,6 +79,17 @@ public:
     w.effect = name;
     w.U = (e1 ? m.bind(V, s1) : ex(0)) - (e2 ? m.bind(V, s2) : ex(0));
     w.ends_only = true;
+    // what the equation took at each state, σ δ ≥ 0 where engaged and −σ δ ≥ 0 where not (σ = −1
+    // acting compressed): with parameters without values, stated with the closed forms (the
+    // launcher is left behind only where the block gets past its free length); with numbers,
+    // check() below says it first
+    const char* acting = side < 0 ? "compressed" : "stretched";
+    for (auto [st, en] : {std::pair{s1, e1}, std::pair{s2, e2}})
+      w.holds.push_back({(en ? side : -side) * m.bind(stretch(m), st),
+                         "spring '" + name + "' was taken as " + (en ? "" : "not ") + acting + " at state '" + m.states[st].name +
+                             "', but the solution puts it {} m the other way there",
+                         "give the position at state '" + m.states[st].name + "' so that it is known whether the spring acts there", pos,
+                         "spring '" + name + "' is " + (en ? "" : "not ") + acting + " at state '" + m.states[st].name + "'"});
     w.how = "U = V(" + m.states[s1].name + ") - V(" + m.states[s2].name + "), V = k*delta^2/2 where it is " +
             (side < 0 ? "compressed" : "stretched") + " (at " + (e1 && e2 ? "both states" : e1 ? "state " + m.states[s1].name : e2 ? "state " + m.states[s2].name : "neither state") + "), else 0";
     return w;
@@ -89,6 +101,9 @@ public:
     Knowledge before(m);
     for (auto& an : m.analyses) {
       if (an.type->impulsive() || (an.from != s && an.to != s) || activity(an) == Activity::None) continue;
+      // an energy analysis with parameters without values states its engagement (work's holds),
+      // not judged at the sample values that stand in for them
+      if (!an.type->at_state() && std::any_of(m.params.begin(), m.params.end(), [](const model::Parameter& p) { return !p.value && !p.unknown; })) continue;
       auto [e1, e2] = engagement(m, an.from, an.to, before);
       bool assumed = an.from == s ? e1 : e2;
       auto value = [&](const ex& e) -> std::optional<GiNaC::numeric> {

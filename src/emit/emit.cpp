@@ -42,9 +42,11 @@ static std::string analysis_name(const Solution& s, int i) {
 static std::string confirmed_text(const Confirmed& c) {
   const std::string d = c.difference > 0 ? "<= " + decade(c.difference) : "0";
   using By = Confirmed::By;
-  std::string t = c.by == By::Simulation          ? "by simulation, relative difference " + d
-                  : c.by == By::Residuals         ? "by the equations' residuals at 50 digits, relative " + d
-                  : c.by == By::EquationsOfMotion ? "by the equations of motion, relative difference " + d
+  // closed forms in parameters without values: at sampled values of them
+  const std::string at = c.sampled.empty() ? "" : " at " + std::to_string(c.samples.size()) + (c.samples.size() == 1 ? " sampled value of " : " sampled values of ") + c.sampled;
+  std::string t = c.by == By::Simulation          ? "by simulation" + at + ", relative difference " + d
+                  : c.by == By::Residuals         ? "by the equations' residuals at 50 digits" + at + ", relative " + d
+                  : c.by == By::EquationsOfMotion ? "by the equations of motion" + at + ", relative difference " + d
                   : c.by == By::Shared            ? "by a shared solution, confirmed where it was found"
                                         : "not confirmed";
   return t + (c.note.empty() ? "" : " (" + c.note + ")");
@@ -179,7 +181,13 @@ static std::string write_json(const Solution& s, const Options& o, const std::ve
       os << (i ? ", " : "") << "{\"analysis\": " << quote(analysis_name(s, c.analysis)) << ", \"by\": "
          << (c.by == Confirmed::By::None ? std::string("null") : quote(Confirmed::name(c.by))) << ", \"within\": "
          << (c.by == Confirmed::By::None ? std::string("null") : quote(decade(c.difference)))
-         << ", \"note\": " << quote(c.note) << "}";
+         << ", \"note\": " << quote(c.note);
+      if (!c.sampled.empty()) {  // the sampled values of parameters without values it was confirmed at
+        os << ", \"sampled\": " << quote(c.sampled) << ", \"samples\": [";
+        for (std::size_t k = 0; k < c.samples.size(); ++k) os << (k ? ", " : "") << quote(c.samples[k]);
+        os << "]";
+      }
+      os << "}";
     }
     os << "]";
   }

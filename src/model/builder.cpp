@@ -194,6 +194,11 @@ private:
       par.pos = p.pos;
       par.dim = q.unit.dim;
       par.unknown = q.unknown;
+      // an angle (written in rad, deg or rev), not a pure number: where it has no value, sampled
+      // as an angle is (Model::sample_value)
+      const std::string& u = p.value.s;
+      par.angle = par.dim.dimensionless() && (u.find("rad") != std::string::npos || u.find("deg") != std::string::npos ||
+                                              u.find("rev") != std::string::npos);
       if (q.has_number) par.value = q.si;
       bool pos = !q.unknown && (!q.has_number || q.number.is_positive());
       if (pos) par.sym = possymbol(p.name);
@@ -924,6 +929,8 @@ private:
       throw SceneError(name.pos, "'" + key + "' " + verb + " a parameter without a value, and '" + name.s + "' is " +
                                      (!p ? "no parameter" : p->value ? "given a value" : "an unknown"),
                        "declare it as 'NAME: UNIT' under parameters (e.g. '" + use + "'), use it at a state, and name it here");
+    for (auto& q : m_.params)
+      if (q.name == p->name) q.ranged = true;
     return *p;
   }
 

@@ -1,5 +1,8 @@
 #include "kinergy/model/model.hpp"
 
+#include <cmath>
+#include <cstdint>
+
 #include <algorithm>
 
 #include "kinergy/common/error.hpp"
@@ -258,9 +261,22 @@ exmap Model::numeric_environment() const {
   int i = 0;
   for (auto& p : params) {
     if (p.value) m[p.sym] = *p.value;
-    else if (!p.unknown) m[p.sym] = numeric(1) + numeric(37 * (++i) % 97, 97);  // in (1, 2)
+    else if (!p.unknown) m[p.sym] = sample == 0 ? numeric(1) + numeric(37 * (++i) % 97, 97) : sample_value(p, 0, sample);  // (the first in (1, 2))
   }
   return m;
+}
+
+numeric Model::sample_value(const Parameter& p, int stream, int k) {
+  std::uint64_t h = 1469598103934665603ULL;  // FNV-1a of the name, then split-mix of (h, stream, k)
+  for (unsigned char c : p.name) h = (h ^ c) * 1099511628211ULL;
+  std::uint64_t z = h + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(k + 1) + 0xD1B54A32D192ED03ULL * static_cast<std::uint64_t>(stream);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  z ^= z >> 31;
+  const double u = static_cast<double>(z >> 11) / 9007199254740992.0;  // in [0, 1)
+  const double v = p.angle ? 0.2 + 1.2 * u : p.dim.dimensionless() ? 0.1 + 0.8 * u : std::exp(std::log(0.1) + u * std::log(100.0));
+  const double scale = std::pow(10.0, 2 - std::floor(std::log10(v)));  // three significant digits
+  return numeric(static_cast<long>(std::lround(v * scale))) / numeric(static_cast<long>(std::lround(scale)));
 }
 
 int Model::fixed_sign(const ex& e) const {

@@ -74,7 +74,13 @@ EnergyBalance energy(const Model& m, const model::Analysis& a, const Knowledge& 
     } else {
       w = work(m, e, a.from, a.to, k);
     }
-    if (w.U.is_zero()) continue;
+    // a work of zero is left out (what it took for granted still checked: a launcher spring not
+    // compressed at either state), but not one split where its force switches: the case taken,
+    // past how many switching points, is part of the solution, and another may be tried
+    if (w.U.is_zero() && w.switch_cases <= 1) {
+      b.unshown.insert(b.unshown.end(), w.holds.begin(), w.holds.end());
+      continue;
+    }
     U += w.U;
     b.works.push_back(w);
     b.working.push_back(e.name);

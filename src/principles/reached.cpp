@@ -73,6 +73,12 @@ public:
     w.n = m.coords.size();
     w.nc = cs.size();
     if (w.n == 0 || w.nc + 1 != w.n) return std::nullopt;
+    // an effect switched on or off at a state inside the analysis does its work over part of the
+    // way only (Q (x − x@2) from the state it is switched on at): the equation with state 2's
+    // positions moved to q does not say the energy there — not decided here (the simulation that
+    // confirms the analysis follows the switch)
+    for (auto& e : m.effects)
+      if (e.activity(a) == model::Effect::Activity::Part) return std::nullopt;
     const auto &S1 = m.states[a.from], &S2 = m.states[a.to];
     if (numerics::tracing()) note_way(m, a, bal, cs.empty());
     w.q1.resize(w.n);

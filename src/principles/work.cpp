@@ -60,6 +60,10 @@ namespace {
 /// Φ with dΦ = Σ Q_i dq_i when that form is exact (checked), else nothing.
 std::optional<ex> potential(const Model& m, const std::vector<ex>& Q) {
   std::size_t n = Q.size();
+  // a force that switches (abs, max, min of the motion): its work is split where it switches
+  // (piecewise_work), the only way an end the motion does not know yet is placed on its side
+  for (auto& q : Q)
+    if (q.has(abs(wild()))) return std::nullopt;
   exmap env = m.numeric_environment();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-2, 2);

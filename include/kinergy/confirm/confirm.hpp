@@ -5,6 +5,7 @@
 /// the chosen solution at 50 digits. `solve`, `verify`, `derive`, batch and the Python module
 /// confirm by default; `--no-confirm` (confirm=False) skips it.
 #pragma once
+#include "kinergy/confirm/check.hpp"
 #include "kinergy/problem.hpp"
 
 namespace kinergy {
@@ -18,6 +19,12 @@ constexpr double kConfirmFloor = 1e-6;
 /// Relative size a residual may have at the solution (numeric roots are refined to 40 digits).
 constexpr double kConfirmResidual = 1e-25;
 
+/// Closed forms in parameters without values are confirmed at this many sampled values of them,
+/// drawn from at most kSampleCandidates candidates (those where the solution's conditions fail
+/// are passed over).
+constexpr int kSamples = 3;
+constexpr int kSampleCandidates = 64;
+
 /// Kinetics at a state against the simulator's equations of motion there (Kane's form, compiled
 /// apart): the largest relative difference of the accelerations q̈ (relative to their own size,
 /// or q̇² where they vanish), which one, and whether it is within kConfirmSimulation and every
@@ -29,6 +36,13 @@ struct KineticsCheck {
   bool ok = false;
 };
 KineticsCheck check_kinetics(const Solution& s, int analysis);
+
+/// Is run `c` of analysis `a` no second opinion rather than a disagreement? A run that does not
+/// reach the end of an analysis over impulses: the scene's effects alone may not take the motion
+/// there (a person walking on a turntable, balls drawn in by a mechanism a conservation claim
+/// leaves out). (An energy analysis has every effect that works: there it is a disagreement.)
+/// One rule for solve's confirmation and `simulate --check`.
+bool no_second_opinion(const model::Analysis& a, const simulate::LegCheck& c);
 
 /// Confirm every analysis of `s`, in order (fills s.confirmed).
 /// @throws SceneError at the analysis whose second way disagrees, showing both numbers.

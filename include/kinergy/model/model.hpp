@@ -26,6 +26,10 @@ struct Parameter {
   Dimension dim;
   std::optional<ex> value; ///< exact SI value
   bool unknown = false;    ///< "unknown UNIT": solved for
+  /// A result runs over it or asks for it (an extreme's variable, a least value's parameter): not
+  /// a parameter of the closed forms, so never given a sampled value.
+  bool ranged = false;
+  bool angle = false;      ///< written in rad, deg or rev (dimensionless, but not a pure number)
 };
 
 struct Coordinate {
@@ -305,6 +309,17 @@ public:
   /// Values for numeric decisions (root choice, directions, zero tests): the parameters' values,
   /// and for a parameter given without a value (taken as positive) a fixed sample value.
   GiNaC::exmap numeric_environment() const;
+  /// Which sample values numeric_environment gives parameters without values: 0, the first;
+  /// another where a solve at the first has no solution there (masses that would have to move a
+  /// heavier one up): the choices are then made at sample `sample` (sample_value(p, 0, sample)).
+  int sample = 0;
+  /// Value k of stream `stream` of a parameter without a value, exact to three digits, from a
+  /// fixed sequence of its name, the stream and k (the same on every run and machine): an angle
+  /// in [0.2, 1.4] rad, a pure number in [0.1, 0.9] (a friction coefficient, a restitution),
+  /// anything else — taken as positive, as the closed forms take it — in [1/10, 10] of its SI
+  /// unit, spread evenly in its logarithm (wide enough that a stiff spring or a heavy block the
+  /// solution needs is among them).
+  static GiNaC::numeric sample_value(const Parameter& p, int stream, int k);
   const Parameter* parameter(const std::string& n) const;
   /// The sign of an expression of parameters that all have values (+1 or −1), 0 when it depends
   /// on anything else or is zero: a factor that keeps its sign for the scene as given.

@@ -65,8 +65,10 @@ struct EnergyBalance : Balance {
   bool conservative = true;  ///< no non-conservative effect did work
 
   std::vector<Equation> equations() const override { return {equation}; }
+  /// What works of zero, left out of `works`, took for granted.
+  std::vector<Condition> unshown;
   std::vector<Condition> conditions() const override {
-    std::vector<Condition> out;
+    std::vector<Condition> out = unshown;
     for (auto& w : works) out.insert(out.end(), w.holds.begin(), w.holds.end());
     return out;
   }

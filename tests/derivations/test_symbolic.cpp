@@ -1,0 +1,147 @@
+// Issue 43: every derivation with its parameters as symbols, as an author writes it (`m: 2 kg` →
+// `m: kg`, results asked without `unit:`), solves; its closed forms equal the numeric scene's at
+// the derivation's values; and where the numeric scene is confirmed by simulation, the symbolic
+// one is too, at sampled values of its parameters. (tests/symbolic/symbolize.py makes the same
+// scenes for the command line.)
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <regex>
+#include <sstream>
+
+#include "../support/helpers.hpp"
+#include "kinergy/confirm/confirm.hpp"
+#include "kinergy/numeric/evaluate.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The derivation's text with every parameter given a number made a symbol with its unit
+/// (`mu: 0.25` → `mu: number`), `unit:` left out of every result and the `expect` claims left out.
+std::string symbolize(const std::string& text) {
+  static const std::regex top(R"(^([A-Za-z_]\w*):.*)");
+  static const std::regex param(R"(^(\s+)([A-Za-z_]\w*):\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?:\s+(\S.*?))?\s*$)");
+  static const std::regex unit(R"(,\s*unit:\s*[^,}]+)");
+  std::istringstream in(text);
+  std::string line, block, out;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_match(line, m, top)) block = m[1];
+    if (block == "expect") continue;
+    if (block == "parameters" && line.find('{') != std::string::npos) {  // flow style: parameters: {m: 40 kg, …}
+      const auto a = line.find('{'), b = line.rfind('}');
+      std::istringstream items(line.substr(a + 1, b - a - 1));
+      std::string item, made;
+      while (std::getline(items, item, ',')) {
+        const std::string indented = "  " + item;
+        std::smatch pm;
+        if (std::regex_match(indented, pm, param)) item = " " + pm[2].str() + ": " + (pm[3].matched ? pm[3].str() : std::string("number"));
+        made += (made.empty() ? "" : ",") + item;
+      }
+      line = line.substr(0, a + 1) + made + "}";
+    }
+    if (block == "parameters" && std::regex_match(line, m, param))
+      line = m[1].str() + m[2].str() + ": " + (m[3].matched ? m[3].str() : std::string("number"));
+    if (block == "find") line = std::regex_replace(line, unit, "");
+    out += line + "\n";
+  }
+  return out;
+}
+
+// Not yet solved with symbols (issue 43 open): each refused with an error, never a wrong number.
+const std::map<std::string, std::string> kNotYet = {
+    {"collar_spring_least_speed.yaml", "'over' with a symbolic range"},
+    {"rod_full_revolution_least_speed.yaml", "a least value in parameters without values"},
+    {"linkage_collar.yaml", "a root the motion fixes, not chosen symbolically"},
+    {"sphere_onto_step.yaml", "the angle at the top of a pivot, chosen at one sample"},
+    {"wheel_over_step.yaml", "the angle at the top of a pivot, chosen at one sample"},
+    {"wheel_cam_couple_angle.yaml", "no closed form: refused by design (neither a form nor a number)"},
+};
+
+}  // namespace
+
+TEST_CASE("symbolic derivations: each solves, equals the numeric scene at its values, confirmed at sampled values", "[derivations][symbolic]") {
+  std::vector<std::string> files;
+  for (auto& e : fs::recursive_directory_iterator(fs::path(KINERGY_SOURCE_DIR) / "derivations"))
+    if (e.path().extension() == ".yaml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  REQUIRE(files.size() >= 80);
+  int solved = 0;
+  for (auto& f : files) {
+    const std::string name = fs::path(f).filename().string();
+    DYNAMIC_SECTION(name) {
+      const std::string text = symbolize(kt::read_file(f));
+      if (kNotYet.count(name)) {
+        CHECK_THROWS_AS([&] { auto s = kt::solve_text(text); kinergy::confirm(s); }(), kinergy::SceneError);
+        continue;
+      }
+      kinergy::Solution num = kinergy::solve_file(f);
+      kinergy::confirm(num);
+      kinergy::Solution sym = kt::solve_text(text);
+      kinergy::confirm(sym);
+      ++solved;
+      // the closed forms at the derivation's values: the numeric scene's values (in SI)
+      const GiNaC::exmap at = num.model.parameter_values();
+      GiNaC::exmap by_name;  // the symbolic scene's symbols → the numeric scene's values
+      for (auto& p : sym.model.params)
+        if (const auto* q = num.model.parameter(p.name); q && q->value) by_name[p.sym] = *q->value;
+      REQUIRE(sym.results.size() == num.results.size());
+      for (std::size_t i = 0; i < num.results.size(); ++i) {
+        INFO(num.results[i].name << " = " << sym.results[i].closed);
+        REQUIRE(sym.results[i].closed_form);
+        auto v = kinergy::numerics::evaluate(sym.results[i].closed.subs(by_name), at, 30);
+        REQUIRE(v);
+        REQUIRE(num.results[i].si);
+        const double a = v->to_double(), b = num.results[i].si->to_double();
+        CHECK(std::fabs(a - b) <= 1e-12 * std::max(1.0, std::fabs(b)));
+      }
+      // where the numeric scene is confirmed by simulation (or the equations of motion), the
+      // symbolic one is, at sampled values
+      REQUIRE(sym.confirmed.size() == num.confirmed.size());
+      for (std::size_t j = 0; j < num.confirmed.size(); ++j) {
+        INFO("analysis " << j << ": " << sym.confirmed[j].note);
+        if (num.confirmed[j].by == kinergy::Confirmed::By::Residuals) continue;
+        CHECK(sym.confirmed[j].by == num.confirmed[j].by);
+        CHECK(sym.confirmed[j].samples.size() == static_cast<std::size_t>(kinergy::kSamples));
+      }
+    }
+  }
+}
+
+TEST_CASE("symbolic scenes: what the confirmation says, the forms of an ambiguous root, a root without a form", "[symbolic]") {
+  // the compound pendulum with every parameter a symbol: confirmed by simulation at three sampled
+  // values, the same on every run (the samples drawn from a fixed sequence)
+  const std::string pendulum = symbolize(kt::derivation("energy/compound_pendulum.yaml"));
+  auto s = kt::solve_text(pendulum);
+  kinergy::confirm(s);
+  REQUIRE(s.confirmed.size() == 1);
+  CHECK(s.confirmed[0].by == kinergy::Confirmed::By::Simulation);
+  CHECK(s.confirmed[0].sampled == "m, L, g, theta0");
+  REQUIRE(s.confirmed[0].samples.size() == 3);
+  auto again = kt::solve_text(pendulum);
+  kinergy::confirm(again);
+  CHECK(again.confirmed[0].samples == s.confirmed[0].samples);
+  // the rod leaving its wall, with symbols: the first angle along the motion where N = 0, by hand
+  // from energy and Newton's law along x, cos θ₂ = 2 cos θ₀/3 + 2 v_A0²/(9 g L cos² θ₀) — not π,
+  // the horizontal rod that the sample its choices were first made at left as the only root
+  s = kt::solve_text(symbolize(kt::derivation("kinetics/rod_leaves_wall.yaml")));
+  const GiNaC::ex th0 = kt::param(s.model, "theta0"), v = kt::param(s.model, "vA0"), g = kt::param(s.model, "g"), L = kt::param(s.model, "L");
+  const GiNaC::ex want = GiNaC::acos(2 * GiNaC::cos(th0) / 3 + 2 * v * v / (9 * g * L * GiNaC::pow(GiNaC::cos(th0), 2)));
+  for (auto at : {GiNaC::exmap{{th0, GiNaC::numeric(1, 3)}, {v, GiNaC::numeric(1, 2)}, {g, GiNaC::numeric(981, 100)}, {L, 3}},
+                  GiNaC::exmap{{th0, GiNaC::numeric(1, 2)}, {v, GiNaC::numeric(1, 5)}, {g, 2}, {L, GiNaC::numeric(3, 2)}}}) {
+    auto x = kinergy::numerics::evaluate(kt::result(s, "theta2").closed, at, 30), y = kinergy::numerics::evaluate(want, at, 30);
+    REQUIRE(x);
+    REQUIRE(y);
+    CHECK(x->to_double() == Approx(y->to_double()).epsilon(1e-14));
+  }
+  // a rate whose sign the solve does not yet fix with symbols (the linkage's crank): both forms
+  // shown, never "? or ?"
+  REQUIRE_THROWS_WITH(kt::solve_text(symbolize(kt::derivation("energy/linkage_collar.yaml"))),
+                      Catch::Contains("'omega2' has more than one solution (") && Catch::Contains("sqrt(3)") && Catch::Contains(" or -") &&
+                          !Catch::Contains("?"));
+  // a root of an equation in parameters without values: neither a form nor a number, refused
+  REQUIRE_THROWS_WITH(kt::solve_text(symbolize(kt::derivation("energy/wheel_cam_couple_angle.yaml"))),
+                      Catch::Contains("'phi2' has no closed form (it is a root of an equation found numerically), and parameter '") &&
+                          Catch::Contains("has no value, so neither a form nor a number can be given"));
+}
