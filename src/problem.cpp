@@ -19,6 +19,7 @@
 #include "kinergy/numeric/evaluator.hpp"
 #include "kinergy/numeric/trace.hpp"
 #include "kinergy/principles/kinetics.hpp"
+#include "kinergy/print/plain.hpp"
 
 namespace kinergy {
 
@@ -275,7 +276,8 @@ struct Selector {
     std::string s;
     for (auto& b : bs) {
       auto v = find_value(f, b);
-      std::string one = forms || !v ? model::text(model::tidy_result(find_form(f, b))) : numerics::format(*v, 6);
+      // (the printer of results: the same text on every run, whatever GiNaC's term order)
+      std::string one = forms || !v ? emit::plain(model::tidy_result(find_form(f, b))) : numerics::format(*v, 6);
       s += (s.empty() ? "" : " or ") + one;
     }
     return s;

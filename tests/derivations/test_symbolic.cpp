@@ -138,7 +138,7 @@ TEST_CASE("symbolic scenes: what the confirmation says, the forms of an ambiguou
   // a rate whose sign the solve does not yet fix with symbols (the linkage's crank): both forms
   // shown, never "? or ?"
   REQUIRE_THROWS_WITH(kt::solve_text(symbolize(kt::derivation("energy/linkage_collar.yaml"))),
-                      Catch::Contains("'omega2' has more than one solution (") && Catch::Contains("sqrt(3)") && Catch::Contains(" or -") &&
+                      Catch::Contains("'omega2' has more than one solution (") && Catch::Contains(" or -") &&
                           !Catch::Contains("?"));
   // a root of an equation in parameters without values: neither a form nor a number, refused
   REQUIRE_THROWS_WITH(kt::solve_text(symbolize(kt::derivation("energy/wheel_cam_couple_angle.yaml"))),
