@@ -11,14 +11,7 @@
 
 namespace {
 
-/// The scene written to a file of the temporary directory, for the command line.
-std::string written(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "kinergy-confirm-findings";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / (name + ".yaml")).string();
-  std::ofstream(path) << text;
-  return kt::shell_quoted(path);
-}
+std::string written(const std::string& name, const std::string& text) { return kt::written("kinergy-confirm-findings", name, text); }
 
 const std::string kSwitchedOn = R"(title: A block pushed from rest, a second force switched on half-way
 parameters:

@@ -18,14 +18,7 @@ using kt::solve_text;
 std::string incline() { return kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/kinetics/disk_rolls_incline_friction.yaml"); }
 std::string pushed() { return kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/derivations/energy/disk_pushed_static_friction.yaml"); }
 
-/// The scene written to a file of the build tree, for the command line.
-std::string written(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "kinergy-static-friction-test";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / (name + ".yaml")).string();
-  std::ofstream(path) << text;
-  return kt::shell_quoted(path);
-}
+std::string written(const std::string& name, const std::string& text) { return kt::written("kinergy-static-friction-test", name, text); }
 
 const char* kRolling = "  rolling: {constraint: \"x + r*phi = 0\", between: [disk, O], at: [x*cos(beta), -x*sin(beta)], mu_s: mus, normal: incline}\n";
 

@@ -250,6 +250,16 @@ inline std::string shell_quoted(const std::string& s) {
   return o + "'";
 }
 
+/// `text` written to NAME.yaml in the temporary directory's `dir`, for the command line: its
+/// path, quoted for the shell.
+inline std::string written(const std::string& dir, const std::string& name, const std::string& text) {
+  const auto d = std::filesystem::temp_directory_path() / dir;
+  std::filesystem::create_directories(d);
+  const std::string path = (d / (name + ".yaml")).string();
+  std::ofstream(path) << text;
+  return shell_quoted(path);
+}
+
 /// Standard output of a shell command; its exit status in `status` (when given).
 inline std::string run_command(const std::string& cmd, int* status = nullptr) {
   FILE* p = popen(cmd.c_str(), "r");
