@@ -239,6 +239,7 @@ std::string names_of(const std::vector<ex>& xs) {
 /// (a force the scene does not declare).
 struct Independent {
   std::vector<std::size_t> chosen;
+  std::vector<double> u;  ///< the unknowns at the sample point
 };
 Independent independent_rows(const Model& m, const std::vector<KineticsBalance::Row>& rows, const std::vector<ex>& unknowns, const exmap& at,
                              const exmap& env_all, const std::string& what, const SourcePos& pos) {
@@ -303,6 +304,7 @@ Independent independent_rows(const Model& m, const std::vector<KineticsBalance::
     bs.push_back(b[i]);
   }
   const std::vector<double> u = solve_dense(As, bs);
+  out.u = u;
   // every other row follows from the chosen ones, or a force is missing from it
   for (std::size_t i = 0; i < rows.size(); ++i) {
     if (std::find(out.chosen.begin(), out.chosen.end(), i) != out.chosen.end()) continue;
@@ -337,26 +339,22 @@ KineticsBalance kinetics(const Model& m, const model::Analysis& a, const Knowled
   out.state = S;
   out.unknowns = kinetics_unknowns(m, a);
   const Instant in = instant_of(m, a);
-  std::vector<BodyLoad> loads = body_loads(m, in);
+  const std::vector<BodyLoad> loads = body_loads(m, in);
   const std::vector<BodyAcceleration> acc = accelerations(m);
-  out.rows = generic_rows(m, in, loads, acc);
+  const std::vector<KineticsBalance::Row> rows = generic_rows(m, in, loads, acc);
   for (int b : a.bodies) {
     const BodyAcceleration& g = acc[static_cast<std::size_t>(b)];
     out.accelerations.push_back({b, m.bind(g.ax, S), m.bind(g.ay, S), m.bind(g.alpha, S)});
   }
-  for (auto& r : out.rows) r.equation = {m.bind(r.equation.lhs, S), m.bind(r.equation.rhs, S), r.equation.principle, r.equation.label, r.equation.pos};
-  for (auto& l : loads)
-    if (std::find(a.bodies.begin(), a.bodies.end(), l.body) != a.bodies.end())
-      out.loads.push_back({l.effect, l.body, m.bind(l.x, S), m.bind(l.y, S), m.bind(l.Fx, S), m.bind(l.Fy, S), m.bind(l.M, S), l.unknown, l.symbol});
 
   // a sample point: the parameters' values, the values given at S, and for every other symbol of
   // the state a fixed sample (the rows are linear in the unknowns: which of them are independent,
   // and whether the others follow, does not depend on where)
   const exmap env = m.numeric_environment();
   exmap at;
-  for (auto& [k, v] : m.states[static_cast<std::size_t>(S)].given) at[k] = v;
-  int j = 0;
   const model::State& st = m.states[static_cast<std::size_t>(S)];
+  for (auto& [k, v] : st.given) at[k] = v;
+  int j = 0;
   for (auto& c : m.coords)
     for (const ex& x : {ex(st.sym.at(c.name).first), ex(st.sym.at(c.name).second)})
       if (!at.count(x)) at[x] = numeric(30 + 17 * (j++), 100);
@@ -364,9 +362,87 @@ KineticsBalance kinetics(const Model& m, const model::Analysis& a, const Knowled
   exmap env_all = env;
   for (auto& p : m.params)
     if (p.unknown) env_all[p.sym] = numeric(1) + numeric(13 * (++j) % 29, 29);
-  const Independent ind = independent_rows(m, out.rows, out.unknowns, at, env_all, "the kinetics at state '" + m.states[static_cast<std::size_t>(S)].name + "'", a.pos);
-  for (std::size_t i : ind.chosen) out.rows[i].used = true;
-  return out;
+  const std::string what = "the kinetics at state '" + st.name + "'";
+
+  // The rows bound to S, each friction couple at rest there taken with sense σ: its couple
+  // −M ω/|ω| is −σ M (|ω| = σ ω).
+  auto bound = [&](const exmap& sense) {
+    KineticsBalance b = out;
+    b.rows = rows;
+    for (auto& r : b.rows)
+      r.equation = {m.bind(r.equation.lhs.subs(sense), S), m.bind(r.equation.rhs.subs(sense), S), r.equation.principle, r.equation.label, r.equation.pos};
+    for (auto& l : loads)
+      if (std::find(a.bodies.begin(), a.bodies.end(), l.body) != a.bodies.end())
+        b.loads.push_back({l.effect, l.body, m.bind(l.x, S), m.bind(l.y, S), m.bind(l.Fx.subs(sense), S), m.bind(l.Fy.subs(sense), S),
+                           m.bind(l.M.subs(sense), S), l.unknown, l.symbol});
+    const Independent ind = independent_rows(m, b.rows, b.unknowns, at, env_all, what, a.pos);
+    for (std::size_t i : ind.chosen) b.rows[i].used = true;
+    return std::make_pair(b, ind.u);
+  };
+  // A friction couple at rest at S (a body just released against its bearing's couple): its
+  // sense is that of the motion that follows. Each sense (the declared one, else both) is tried,
+  // and the one whose relative angular acceleration turns that way kept: σ α_rel ≥ 0, checked on
+  // the solution (stated where it holds parameters without values).
+  struct AtRest {
+    ex w;  // ω_rel, generic
+    std::optional<int> declared;
+    std::string effect;
+  };
+  std::vector<AtRest> rest;
+  for (std::size_t i = 0; i < m.effects.size(); ++i)
+    if (in.effect[i])
+      for (const model::Load& l : m.effects[i].loads(m))
+        if (l.kind == model::Load::Kind::Turn) {
+          const ex w = model::relative_omega(m, l);
+          if (m.bind(w, S).subs(st.given).subs(st.given).is_zero()) rest.push_back({w, l.direction, m.effects[i].name});
+        }
+  if (rest.empty() || rest.size() > 3) return bound({}).first;  // (more than three at once: undefined, as at any state of rest)
+  std::vector<KineticsBalance> consistent;
+  std::vector<std::string> tried;
+  for (unsigned mask = 0; mask < (1u << rest.size()); ++mask) {
+    exmap sense;
+    std::vector<int> sigma;
+    bool allowed = true;
+    for (std::size_t i = 0; i < rest.size(); ++i) {
+      sigma.push_back(mask & (1u << i) ? -1 : 1);
+      allowed = allowed && (!rest[i].declared || *rest[i].declared == sigma[i]);
+      sense[abs(rest[i].w)] = sigma[i] * rest[i].w;
+    }
+    if (!allowed) continue;
+    auto [b, u] = bound(sense);
+    exmap solved;
+    for (std::size_t k = 0; k < b.unknowns.size() && k < u.size(); ++k) solved[b.unknowns[k]] = numeric(u[k]);
+    bool turns = true;
+    std::string these;
+    for (std::size_t i = 0; i < rest.size(); ++i) {
+      // α_rel = dω_rel/dt at S
+      const ex alpha = m.bind(m.d_dt(rest[i].w), S);
+      const double v = number(alpha.subs(solved), at, env_all);
+      turns = turns && std::isfinite(v) && sigma[i] * v > 0;
+      these += (these.empty() ? "" : ", ") + rest[i].effect + (sigma[i] > 0 ? " against a positive turning" : " against a negative turning") +
+               " (the relative angular acceleration " + numerics::format_double(v, 6) + " rad/s^2)";
+      b.holds.push_back({sigma[i] * alpha, "the friction couple of '" + rest[i].effect + "' was taken against the turning that follows the state of rest at '" + st.name +
+                                               "', but the solution turns the other way ({} rad/s^2)",
+                         "the body stays at rest there (its couple balances the others): take the kinetics at another state", a.pos,
+                         "the motion that follows state '" + st.name + "' turns against the friction couple of '" + rest[i].effect + "'"});
+    }
+    tried.push_back(these);
+    if (turns) consistent.push_back(b);
+  }
+  if (consistent.size() == 1) return consistent.front();
+  std::string all;
+  for (auto& t : tried) all += (all.empty() ? "" : "; ") + t;
+  const bool declared = std::any_of(rest.begin(), rest.end(), [](const AtRest& r) { return r.declared.has_value(); });
+  if (consistent.empty() && declared)
+    throw SceneError(a.pos, what + ": at rest there, a friction couple's sense is that of the motion that follows, but taken as its 'direction:' says, the body turns against it (" +
+                                all + ")",
+                     "leave 'direction:' out (the sense is found from the motion that follows), or check it");
+  if (consistent.empty())
+    throw SceneError(a.pos, what + ": at rest there, a friction couple's sense is that of the motion that follows, but taken either way the body turns against it (" +
+                                all + "): the couples hold it at rest",
+                     "the body stays at rest at that state: there is no motion to take the kinetics of");
+  throw SceneError(a.pos, what + ": at rest there, the motion that follows may turn either way against the friction couples (" + all + ")",
+                   "give the couple's 'direction:' (the sense of the turning that follows)");
 }
 
 std::vector<ex> support_forces(const Model& m, const std::vector<bool>& on, const std::vector<bool>& held, const std::vector<int>& bodies,

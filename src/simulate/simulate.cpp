@@ -50,12 +50,37 @@ void Simulator::modes_at(const double* y, double t) {
     if (std::fabs(p.aux[p.a_gap + k]) <= 1e-9 * sq && std::fabs(p.rate_v(p.o_cont[k].first)) <= 1e-9 * sv) p.rest(k);
   // a friction that slips at y: sliding, against that slip, F = −μN v̂ (its rates were laid out by
   // the rhs call above)
+  std::vector<std::size_t> at_rest;
   for (std::size_t k = 0; k < p.eq.friction.size(); ++k) {
     const auto v = p.slip(k);
     const double sp = std::hypot(v[0], v[1]);
-    if (!(sp > 0)) continue;
+    if (!(sp > 0)) {
+      at_rest.push_back(k);
+      continue;
+    }
     p.fmode[k] = FrictionMode::Slide;
     p.fdir[k] = {v[0] / sp, v[1] / sp};
+  }
+  // a friction at rest at y (a body just released against its bearing's couple): against the
+  // slip that starts there, the way the other loads push it, a_slip = J q̈ + J̇ q̇ with this
+  // friction left out. (Where it holds the body at rest, there is no kinetics to check: the
+  // analysis refuses that state.)
+  for (std::size_t k : at_rest) {
+    const double keep = p.flimit[k];
+    p.flimit[k] = 0;
+    p.rhs(y, t, dy.data());
+    p.flimit[k] = keep;
+    const auto [rx, ry] = p.o_fric[k];
+    const bool rot = p.eq.friction[k].rotary;
+    double ax = p.rate_a0(rx), ay = rot ? 0.0 : p.rate_a0(ry);
+    for (std::size_t i = 0; i < p.n; ++i) {
+      ax += p.rate_J(rx)[i] * dy[p.n + i];
+      if (!rot) ay += p.rate_J(ry)[i] * dy[p.n + i];
+    }
+    const double a = std::hypot(ax, ay);
+    if (!(a > 0)) continue;
+    p.fmode[k] = FrictionMode::Slide;
+    p.fdir[k] = {ax / a, ay / a};
   }
 }
 Run Simulator::run(const State& s0, const Stop& stop) { return p_->run(s0, stop); }

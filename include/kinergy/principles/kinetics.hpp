@@ -52,7 +52,9 @@ struct KineticsBalance : Balance {
       if (r.used) out.push_back(r.equation);
     return out;
   }
-  std::vector<Condition> conditions() const override { return {}; }
+  /// What it took for granted: the sense of a friction couple at rest at the state (σ α_rel ≥ 0).
+  std::vector<Condition> holds;
+  std::vector<Condition> conditions() const override { return holds; }
   std::vector<Equation> checked() const override {
     std::vector<Equation> out;
     for (auto& r : rows)
