@@ -1455,9 +1455,7 @@ GiNaC::exmap parameter_values(const Solution& s) {
   return v;
 }
 
-/// Does every condition the solution states for parameters without values hold at the sample
-/// values its choices were made at?
-static bool inside(const Solution& s) {
+const principles::Condition* failing_condition(const Solution& s) {
   const exmap env = s.model.numeric_environment();
   for (auto& c : s.valid_where) {
     std::optional<numeric> v;
@@ -1465,9 +1463,9 @@ static bool inside(const Solution& s) {
       v = numerics::evaluate(c.e, env, 30);
     } catch (const std::exception&) {
     }
-    if (!v || !v->is_real() || v->is_negative()) return false;
+    if (!v || !v->is_real() || v->is_negative()) return &c;
   }
-  return true;
+  return nullptr;
 }
 
 Solution solve_scene(const scene::SceneDef& def) {
@@ -1494,7 +1492,7 @@ Solution solve_scene(const scene::SceneDef& def) {
       Solution sol{base, {}, {}, {}, {}, {}, {}, def, {}, {}, {}, {}};
       try {
         SceneSolver(sol, fewer).run();
-        if (!free || inside(sol)) return sol;
+        if (!free || !failing_condition(sol)) return sol;
         if (!outside) outside = std::move(sol);
         continue;
       } catch (const NoFormError&) {

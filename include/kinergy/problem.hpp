@@ -137,6 +137,11 @@ struct Solution {
 /// drawing and simulating the solved scene).
 GiNaC::exmap parameter_values(const Solution& s);
 
+/// The first condition of s.valid_where that fails at the model's numeric environment (its
+/// parameters' values, and samples for those without): where the choices made there lie outside
+/// the solution's domain, or a sample of them does. nullptr where every one holds.
+const principles::Condition* failing_condition(const Solution& s);
+
 /// Sample values of parameters without values a solve tries its choices at (Model::sample).
 constexpr int kSolveSamples = 8;
 

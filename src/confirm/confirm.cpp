@@ -307,12 +307,9 @@ bool admissible(const Solution& at, std::string& why) {
       return std::nullopt;
     }
   };
-  for (auto& c : at.valid_where) {
-    auto v = number(c.e);
-    if (!v || !v->is_real() || v->is_negative()) {
-      why = c.assumed.empty() ? "a condition of the solution fails" : c.assumed;
-      return false;
-    }
+  if (const principles::Condition* c = failing_condition(at)) {
+    why = c->assumed.empty() ? "a condition of the solution fails" : c->assumed;
+    return false;
   }
   for (auto& r : at.results) {
     std::optional<numeric> v;
