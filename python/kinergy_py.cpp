@@ -544,7 +544,9 @@ PYBIND11_MODULE(_kinergy, m) {
       .def_property_readonly(
           "confirmed",
           [](const PySolution& s) {
-            // how each analysis was confirmed a second way: [{analysis, by, difference, note}]
+            // how each analysis was confirmed a second way: [{analysis, by, difference, note}], and
+            // for closed forms in parameters without values, the sampled values they were
+            // confirmed at ({sampled: "m, L", samples: ["m = 5.07 kg, L = 0.578 m", …]})
             py::list out;
             for (auto& c : s.s->confirmed) {
               const auto& a = s.s->model.analyses[static_cast<std::size_t>(c.analysis)];
@@ -554,6 +556,10 @@ PYBIND11_MODULE(_kinergy, m) {
               d["by"] = c.by == kinergy::Confirmed::By::None ? py::object(py::none()) : py::object(py::str(kinergy::Confirmed::name(c.by)));
               d["difference"] = c.difference;
               d["note"] = c.note;
+              if (!c.sampled.empty()) {
+                d["sampled"] = c.sampled;
+                d["samples"] = c.samples;
+              }
               out.append(d);
             }
             return out;

@@ -184,6 +184,10 @@ def test_solve_confirms_each_analysis_a_second_way():
     [c] = solution.confirmed
     assert c["analysis"] == "energy 1 -> 2" and c["by"] == "simulation" and c["difference"] <= 1e-8
     assert kinergy.load(ROD).solve(confirm=False).confirmed == []
+    # the rod's length a symbol: its closed form confirmed by simulation at three sampled values
+    text = open(ROD).read().replace("  l: 1.2 m", "  l: m").replace(", unit: rad/s", "")
+    [c] = kinergy.loads(text.split("expect:")[0]).solve().confirmed
+    assert c["by"] == "simulation" and c["sampled"] == "l" and len(c["samples"]) == 3 and c["samples"][0].startswith("l = ")
     # energy alone for a ball rising through half its drop height after a bounce it does not see:
     # the simulation meets h/2 falling, and the disagreement is an error, never an answer
     ball = open(os.path.join(ROOT, "tests", "data", "silent", "ball_bounce_energy.yaml")).read()
