@@ -270,8 +270,7 @@ struct Selector {
     bool forms = false;
     for (auto& b : bs) {
       const ex form = find_form(f, b);
-      forms = forms || !find_value(f, b) ||
-              std::any_of(m.params.begin(), m.params.end(), [&](const model::Parameter& p) { return !p.value && !p.unknown && form.has(p.sym); });
+      forms = forms || !find_value(f, b) || m.unvalued(form);
     }
     std::string s;
     for (auto& b : bs) {
@@ -871,7 +870,7 @@ private:
       if (!energy) continue;
       const auto& bal = *energy;
       if (std::any_of(bal.works.begin(), bal.works.end(), [](const principles::Work& w) { return w.ends_only; })) continue;
-      if (unvalued(bal.equation.residual().subs(given))) continue;
+      if (m.unvalued(bal.equation.residual().subs(given))) continue;
       static const std::vector<principles::PushAlong> none;
       auto along = one_sided_.along.find(static_cast<int>(ai));
       principles::check_reached(m, a, bal, values, along == one_sided_.along.end() ? none : along->second);
@@ -879,13 +878,6 @@ private:
     // a surface that can only push does so at every state where it acts (a state past the place
     // the body leaves it is not reached)
     for (const principles::OneSidedLimit& l : one_sided_.at_states) hold(l.pushes, b);
-  }
-
-  /// Does e hold a parameter without a value (a symbolic one, not an unknown)?
-  bool unvalued(const ex& e) const {
-    for (auto& p : m.params)
-      if (!p.value && !p.unknown && e.has(p.sym)) return true;
-    return false;
   }
 
   /// The conditions of the chosen branch that hold parameters without values: each e ≥ 0 is
@@ -905,7 +897,7 @@ private:
       } catch (const std::exception&) {
         continue;
       }
-      if (!unvalued(e)) continue;
+      if (!m.unvalued(e)) continue;
       principles::Condition k = c;
       k.e = e;
       if (k.assumed.empty()) k.assumed = c.what.substr(0, c.what.find(" ({}"));
@@ -918,7 +910,7 @@ private:
   /// closed form, not judged at the sample values that stand in for it (Solution::valid_where).
   /// @throws SceneError when it does not, showing by how much ("{}") and c.shown ("{v}").
   void hold(const principles::Condition& c, const solve::Branch& b) const {
-    if (unvalued(c.e.subs(given).subs(b.sol))) return;
+    if (m.unvalued(c.e.subs(given).subs(b.sol))) return;
     auto v = numerics::evaluate(c.e.subs(given).subs(b.sol), env, 30);
     if (!v || !v->is_negative()) return;
     // a value at the edge, left negative by rounding alone (a normal force that is zero where
@@ -1410,7 +1402,7 @@ private:
   // a numeric root holds the parameters of its equation (every one, where it does not say)
   auto holds = [&](const model::Parameter& p) {
     if (r.closed_form) return r.closed.has(p.sym);
-    if (r.roots.empty()) return !p.unknown && !p.ranged;
+    if (r.roots.empty()) return p.without_value() && !p.ranged;
     return std::any_of(r.roots.begin(), r.roots.end(), [&](const numerics::RootOf& x) { return x.residual.has(p.sym); });
   };
   for (auto& p : m.params)
@@ -1470,7 +1462,7 @@ const principles::Condition* failing_condition(const Solution& s) {
 
 Solution solve_scene(const scene::SceneDef& def) {
   Model base = Model::build(def);
-  const bool free = std::any_of(base.params.begin(), base.params.end(), [](const model::Parameter& p) { return !p.value && !p.unknown && !p.ranged; });
+  const bool free = std::any_of(base.params.begin(), base.params.end(), [](const model::Parameter& p) { return p.without_value() && !p.ranged; });
   // A force that switches on the way to a state whose position is unknown: the case taken first
   // is past every switching point; while it has no solution, one switching point fewer.
   // Parameters without values: the numeric choices (a root, a sign, the first state along the

@@ -86,6 +86,8 @@ struct Confirmed {
   /// is the weakest way any sample was confirmed, `difference` the largest.
   std::string sampled;
   std::vector<std::string> samples;
+  /// Its simulation did not reach the analysis' end (no_second_opinion): no second opinion.
+  bool unreached = false;
 };
 
 struct Solution {

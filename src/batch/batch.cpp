@@ -124,7 +124,7 @@ public:
                              "the solution found at batch line " + std::to_string(line_) + " (confirmed there " +
                                  (c.by == Confirmed::By::None ? std::string("not at all") : "by " + Confirmed::name(c.by)) +
                                  "), shown to hold at these values: every choice it made falls the same way",
-                             {}, {}});
+                             {}, {}, false});
       template_ = emit::json_template(base_, o, confirmed);
     }
     last_.clear();

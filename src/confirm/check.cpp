@@ -142,7 +142,7 @@ std::vector<Leg> legs(const Solution& s) {
     for (int st : {a.from, a.to})
       for (auto& [sym, val] : m.states[st].given)
         for (auto& p : m.params)
-          if (leg.why_not.empty() && !p.value && !p.unknown && val.has(p.sym))
+          if (leg.why_not.empty() && p.without_value() && val.has(p.sym))
             leg.why_not = "state '" + m.states[st].name + "' depends on '" + p.name + "', which has no value";
     for (std::size_t i = 0; i < m.coords.size(); ++i)
       if (leg.why_not.empty() && (std::isnan(leg.start.q[i]) || std::isnan(leg.start.qd[i])))

@@ -244,6 +244,7 @@ void confirm_numeric(Solution& s) {
       } else if (run && run->worst_what.rfind("no solved value", 0) == 0) {
         c.note = "not simulated: " + run->worst_what;
       } else if (run && no_second_opinion(a, *run)) {
+        c.unreached = true;
         // over a duration the scene's effects alone may not take the motion there (balls drawn in
         // by a mechanism the scene leaves out, under a conservation claim): no value to compare,
         // not a disagreement. (An energy analysis has every effect that works in it: a state its
@@ -290,7 +291,7 @@ void confirm_numeric(Solution& s) {
 std::vector<std::size_t> free_parameters(const model::Model& m) {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < m.params.size(); ++i)
-    if (!m.params[i].value && !m.params[i].unknown && !m.params[i].ranged) out.push_back(i);
+    if (m.params[i].without_value() && !m.params[i].ranged) out.push_back(i);
   return out;
 }
 
@@ -420,9 +421,7 @@ void confirm(Solution& s) {
     // a momentum analysis whose end the scene's effects do not take the motion to at these
     // values (cords that would pull the balls in, sampled with the end further out): outside
     // the domain too
-    const std::string unreached = "not confirmed by simulation: the simulation does not reach";
-    if (auto c = std::find_if(n->confirmed.begin(), n->confirmed.end(), [&](const Confirmed& x) { return x.note.rfind(unreached, 0) == 0; });
-        c != n->confirmed.end()) {
+    if (auto c = std::find_if(n->confirmed.begin(), n->confirmed.end(), [](const Confirmed& x) { return x.unreached; }); c != n->confirmed.end()) {
       if (skipped.empty()) skipped = c->note.substr(std::string("not confirmed by simulation: ").size()) + " (at " + shown + ")";
       ++passed_over;
       continue;

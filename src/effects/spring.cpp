@@ -103,7 +103,7 @@ public:
       if (an.type->impulsive() || (an.from != s && an.to != s) || activity(an) == Activity::None) continue;
       // an energy analysis with parameters without values states its engagement (work's holds),
       // not judged at the sample values that stand in for them
-      if (!an.type->at_state() && std::any_of(m.params.begin(), m.params.end(), [](const model::Parameter& p) { return !p.value && !p.unknown; })) continue;
+      if (!an.type->at_state() && m.unvalued()) continue;
       auto [e1, e2] = engagement(m, an.from, an.to, before);
       bool assumed = an.from == s ? e1 : e2;
       auto value = [&](const ex& e) -> std::optional<GiNaC::numeric> {

@@ -279,6 +279,13 @@ numeric Model::sample_value(const Parameter& p, int stream, int k) {
   return numeric(static_cast<long>(std::lround(v * scale))) / numeric(static_cast<long>(std::lround(scale)));
 }
 
+bool Model::unvalued(const ex& e) const {
+  return std::any_of(params.begin(), params.end(), [&](const Parameter& p) { return p.without_value() && e.has(p.sym); });
+}
+bool Model::unvalued() const {
+  return std::any_of(params.begin(), params.end(), [](const Parameter& p) { return p.without_value(); });
+}
+
 int Model::fixed_sign(const ex& e) const {
   exmap vals;
   for (auto& p : params)

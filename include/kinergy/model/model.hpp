@@ -30,6 +30,8 @@ struct Parameter {
   /// a parameter of the closed forms, so never given a sampled value.
   bool ranged = false;
   bool angle = false;      ///< written in rad, deg or rev (dimensionless, but not a pure number)
+  /// Without a value and not solved for (`r: m`): its closed forms hold it as a symbol.
+  bool without_value() const { return !value && !unknown; }
 };
 
 struct Coordinate {
@@ -320,6 +322,10 @@ public:
   /// unit, spread evenly in its logarithm (wide enough that a stiff spring or a heavy block the
   /// solution needs is among them).
   static GiNaC::numeric sample_value(const Parameter& p, int stream, int k);
+  /// Does e hold a parameter without a value (Parameter::without_value)? Every one when e is
+  /// left out: does the scene have any?
+  bool unvalued(const GiNaC::ex& e) const;
+  bool unvalued() const;
   const Parameter* parameter(const std::string& n) const;
   /// The sign of an expression of parameters that all have values (+1 or −1), 0 when it depends
   /// on anything else or is zero: a factor that keeps its sign for the scene as given.
