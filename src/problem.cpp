@@ -883,6 +883,27 @@ private:
   /// The conditions of the chosen branch that hold parameters without values: each e ≥ 0 is
   /// stated with the closed forms (Solution::valid_where).
   void valid_where() {
+    // a root the scene itself takes of an expression of its parameters (a state's place,
+    // -sqrt(r^2 - (r - h)^2)) is real: that expression is ≥ 0 wherever the scene holds, and fixes
+    // the sign of its factors under a root of a condition (√((2hr − h²)²/r²) = (2hr − h²)/r)
+    std::vector<ex> radicands;
+    for (auto& [k, v] : m.given_values()) {
+      (void)k;
+      for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
+        if (is_a<GiNaC::power>(*it) && it->op(1).is_equal(numeric(1, 2)) && m.unvalued(it->op(0))) radicands.push_back(normal(it->op(0)));
+    }
+    const model::SignOf sign = [&](const ex& y) {
+      if (int s = m.fixed_sign(y)) return s;
+      for (const ex& r : radicands) {
+        try {
+          const ex q = normal(r / y);
+          if (q.info(info_flags::positive)) return 1;
+          if ((-q).info(info_flags::positive)) return -1;
+        } catch (const std::exception&) {
+        }
+      }
+      return 0;
+    };
     std::vector<principles::Condition> all;
     for (const principles::FrictionLimit& l : sol_.friction_limits) {
       all.push_back(l.holds);
@@ -893,7 +914,7 @@ private:
     for (const principles::Condition& c : all) {
       ex e;
       try {
-        e = factor(normal(model::trig_simplify(c.e.subs(given).subs(sol_.branch.sol))));
+        e = factor(normal(model::root_simplify(model::trig_simplify(c.e.subs(given).subs(sol_.branch.sol)), radicands.empty() ? nullptr : sign)));
       } catch (const std::exception&) {
         continue;
       }
@@ -959,6 +980,29 @@ private:
       }
   }
 
+  /// "the parameters' values", or, where some have none, the sample taken for them ("a = 0.15, …").
+  std::string values_text() const {
+    std::string out;
+    for (auto& p : m.params)
+      if (p.without_value())
+        if (auto it = env.find(p.sym); it != env.end() && is_a<numeric>(it->second))
+          out += (out.empty() ? "" : ", ") + p.name + " = " + numerics::format(ex_to<numeric>(it->second), 3);
+    return out.empty() ? "the parameters' values" : "the sampled values " + out;
+  }
+
+  /// A range `over: [lo, hi]` at the parameters' values (samples for those without: where lo ≥ hi
+  /// there, the sample lies outside the scene's domain).
+  std::pair<numeric, numeric> range_at(const ex& lo_e, const ex& hi_e, const SourcePos& pos, const std::string& name, int digits) const {
+    auto lo = numerics::evaluate(lo_e, env, digits), hi = numerics::evaluate(hi_e, env, digits);
+    if (!lo || !hi || !lo->is_real() || !hi->is_real())
+      throw SceneError(pos, "the range of '" + name + "' has no value", "give its ends as numbers, or as expressions of the parameters");
+    if (!(*lo < *hi))
+      throw SceneError(pos, "the range of '" + name + "' is empty at " + values_text() + ": its lower end " + numerics::format(*lo, 6) +
+                                " is not below its upper end " + numerics::format(*hi, 6),
+                       "write the range [lo, hi] with lo < hi for every value of the parameters");
+    return {*lo, *hi};
+  }
+
   /// The greatest or least value of r.closed as f's parameter p runs over [lo, hi] (or where it
   /// is reached): the stationary points df/dp = 0 inside (sign changes of df/dp on a grid of 400,
   /// refined by bisection to 45 digits), the second derivative there (< 0 at a maximum, > 0 at a
@@ -976,8 +1020,8 @@ private:
       return numerics::evaluate(e, at, digits);
     };
     ex F = r.closed, dF = F.diff(p), d2F = dF.diff(p);
-    auto lo = numerics::evaluate(x.lo, env, digits), hi = numerics::evaluate(x.hi, env, digits);
-    if (!lo || !hi) throw SceneError(x.pos, "the range of '" + x.p_name + "' has no value", "give its ends as numbers");
+    const auto [lo_v, hi_v] = range_at(x.lo, x.hi, x.pos, x.p_name, digits);
+    const std::optional<numeric> lo = lo_v, hi = hi_v;
     const std::string what = x.largest ? "greatest" : "least";
     // the candidates: (p, F(p), how)
     struct Cand {
@@ -1090,11 +1134,9 @@ private:
     if (!K.has(x.p))
       throw SceneError(x.pos, "the kinetic energy at state '" + S + "' does not depend on '" + x.p_name + "' (" + model::text(K) + ")",
                        "name the parameter that sets the motion toward state '" + S + "' (a speed or position at an earlier state)");
-    for (auto& q : m.params)
-      if (!q.value && !q.unknown && K.has(q.sym) && !q.sym.is_equal(x.p) && !(x.along && q.sym.is_equal(*x.along)))
-        throw SceneError(q.pos, "parameter '" + q.name + "' has no value, but the " + what + " value of '" + x.p_name + "' needs numbers",
-                         "give '" + q.name + "' a value with its unit" +
-                             (x.along ? std::string() : ", or name it with 'along:' if it places state '" + S + "' on the path"));
+    // another parameter without a value: the bound is found at a sample of it, and stands only
+    // in closed form (reach_closed), else refused as neither a form nor a number (result())
+    (void)what;
   }
 
   /// A stationary binding position exactly: a simple rational (or a rational multiple of π,
@@ -1203,10 +1245,7 @@ private:
       return v;
     };
     numeric lo = 0, hi = 0;
-    if (x.along) {
-      lo = *numerics::evaluate(x.lo, env, digits);
-      hi = *numerics::evaluate(x.hi, env, digits);
-    }
+    if (x.along) std::tie(lo, hi) = range_at(x.lo, x.hi, x.pos, x.along_name, digits);
     // the lowest kinetic energy over the path, on a grid of n intervals
     PathScan scan(lo, hi, x.along.has_value(), numerics::tracing() ? std::nullopt : tape_of(K, x),
                   [&](const numeric& s, const numeric& p) { return K_at(K, s, p); });
@@ -1286,6 +1325,16 @@ private:
     std::optional<ex> exact_s;
     if (x.along && at_end) exact_s = bind->i == 0 ? x.lo : x.hi;
     if (x.along && !at_end) exact_s = exact_position(K, x, s_bind, p_star, digits, K_at);
+    // in parameters without values, where no simple number is it: ∂K/∂along = 0 solved for it
+    // (a form free of p, the root that is the number found)
+    const bool in_symbols = std::any_of(m.params.begin(), m.params.end(), [&](const model::Parameter& q) {
+      return q.without_value() && K.has(q.sym) && !q.sym.is_equal(x.p) && !(x.along && q.sym.is_equal(*x.along));
+    });
+    if (x.along && !at_end && !exact_s && in_symbols) {
+      const ex dK = K.diff(ex_to<symbol>(*x.along));
+      if (!dK.has(x.p))
+        if (auto c = stationary_place(dK, ex_to<symbol>(*x.along), s_bind); c && !c->has(x.p)) exact_s = c;
+    }
     // the closed form, where the binding position is exact: K(s, p) = 0 of degree ≤ 2 in p
     std::optional<ex> closed;
     if (!x.along || exact_s) closed = reach_closed(K, x, exact_s, p_star, digits);
@@ -1412,7 +1461,10 @@ private:
     }
   // neither a form nor a number: a root of an equation in parameters without values
   if (!all_values && !r.closed_form)
-    throw NoFormError(f.pos, "'" + f.name + "' has no closed form (it is a root of an equation found numerically), and parameter '" + missing->name +
+    throw NoFormError(f.pos, "'" + f.name + "' has no closed form (" +
+                                 (f.reach ? std::string("its bound is found numerically, by a scan and bisection") :
+                                  f.extreme ? std::string("its extreme is found numerically, by a scan") :
+                                              std::string("it is a root of an equation found numerically")) + "), and parameter '" + missing->name +
                                 "' has no value, so neither a form nor a number can be given",
                      "give the parameters values (the root is then found for them), e.g. '" + missing->name + ": " +
                          (units::si_name(missing->dim).empty() ? std::string("30 deg") : "2 " + units::si_name(missing->dim)) + "'");
@@ -1460,6 +1512,42 @@ const principles::Condition* failing_condition(const Solution& s) {
   return nullptr;
 }
 
+bool admissible(const Solution& at, std::string& why) {
+  const model::Model& m = at.model;
+  const exmap given = m.given_values(), env = m.numeric_environment();
+  auto number = [&](const ex& e) -> std::optional<numeric> {
+    try {
+      return numerics::evaluate(e.subs(given).subs(at.branch.sol).subs(given), env, 30);
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  };
+  if (const principles::Condition* c = failing_condition(at)) {
+    why = c->assumed.empty() ? "a condition of the solution fails" : c->assumed;
+    return false;
+  }
+  for (auto& r : at.results) {
+    std::optional<numeric> v;
+    try {
+      v = r.value(env, 15);
+    } catch (const std::exception&) {
+    }
+    if (!v || !v->is_real()) {
+      why = "'" + r.name + "' has no real value there";
+      return false;
+    }
+  }
+  for (auto& a : m.analyses) {
+    if (a.from < 0 || a.to < 0 || a.instant()) continue;
+    auto t1 = number(m.states[static_cast<std::size_t>(a.from)].t), t2 = number(m.states[static_cast<std::size_t>(a.to)].t);
+    if (t1 && t2 && t1->is_real() && t2->is_real() && *t2 < *t1) {
+      why = "state '" + m.states[static_cast<std::size_t>(a.to)].name + "' comes before '" + m.states[static_cast<std::size_t>(a.from)].name + "'";
+      return false;
+    }
+  }
+  return true;
+}
+
 Solution solve_scene(const scene::SceneDef& def) {
   Model base = Model::build(def);
   const bool free = std::any_of(base.params.begin(), base.params.end(), [](const model::Parameter& p) { return p.without_value() && !p.ranged; });
@@ -1475,11 +1563,22 @@ Solution solve_scene(const scene::SceneDef& def) {
   // chose outside its domain (a rod whose sampled speed would take it off the wall at once, where
   // only the horizontal rod has N = 0): the next sample is tried, and that solution kept only
   // where none does better.
+  // Once a solution is found outside its domain, further samples are first tried on its closed
+  // forms (admissible: its conditions met, its results real — no solve), up to kSampleSearch, and
+  // the scene solved again only at one that passes.
   std::optional<SceneError> first;
   std::optional<Solution> outside;
   int cases = 1;
   for (int fewer = 0; fewer < cases; ++fewer) {
-    for (int k = 0; k < (free ? kSolveSamples : 1); ++k) {
+    int solves = 0;
+    for (int k = 0; k < (free ? kSampleSearch : 1) && solves < kSolveSamples; ++k) {
+      if (outside) {
+        Solution probe = *outside;
+        probe.model.sample = k;
+        std::string why;
+        if (!admissible(probe, why)) continue;
+      }
+      ++solves;
       base.sample = k;
       Solution sol{base, {}, {}, {}, {}, {}, {}, def, {}, {}, {}, {}};
       try {

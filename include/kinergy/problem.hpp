@@ -144,8 +144,15 @@ GiNaC::exmap parameter_values(const Solution& s);
 /// the solution's domain, or a sample of them does. nullptr where every one holds.
 const principles::Condition* failing_condition(const Solution& s);
 
-/// Sample values of parameters without values a solve tries its choices at (Model::sample).
-constexpr int kSolveSamples = 8;
+/// Does solution `at` hold at its model's parameter values (samples for those without)? Every
+/// condition it states for values it could not check (valid_where) met, every result a real
+/// number, every analysis forward in time. `why`: the first that fails.
+bool admissible(const Solution& at, std::string& why);
+
+/// Sample values of parameters without values a solve tries its choices at (Model::sample): at
+/// most kSolveSamples solves, among the first kSampleSearch samples.
+constexpr int kSolveSamples = 24;
+constexpr int kSampleSearch = 256;
 
 /// Solve a scene. @throws SceneError (bad scene, no solution, ambiguous roots).
 Solution solve_scene(const scene::SceneDef& def);

@@ -295,45 +295,6 @@ std::vector<std::size_t> free_parameters(const model::Model& m) {
   return out;
 }
 
-/// Does the solution hold at the sampled values in `at` (its parameters given them)? Every
-/// condition it states for values it could not check (valid_where) met, every result a real
-/// number, every analysis forward in time. `why`: the first that fails.
-bool admissible(const Solution& at, std::string& why) {
-  const model::Model& m = at.model;
-  const exmap given = m.given_values(), env = m.numeric_environment();
-  auto number = [&](const ex& e) -> std::optional<numeric> {
-    try {
-      return numerics::evaluate(e.subs(given).subs(at.branch.sol).subs(given), env, 30);
-    } catch (const std::exception&) {
-      return std::nullopt;
-    }
-  };
-  if (const principles::Condition* c = failing_condition(at)) {
-    why = c->assumed.empty() ? "a condition of the solution fails" : c->assumed;
-    return false;
-  }
-  for (auto& r : at.results) {
-    std::optional<numeric> v;
-    try {
-      v = r.value(env, 15);
-    } catch (const std::exception&) {
-    }
-    if (!v || !v->is_real()) {
-      why = "'" + r.name + "' has no real value there";
-      return false;
-    }
-  }
-  for (auto& a : m.analyses) {
-    if (a.from < 0 || a.to < 0 || a.instant()) continue;
-    auto t1 = number(m.states[static_cast<std::size_t>(a.from)].t), t2 = number(m.states[static_cast<std::size_t>(a.to)].t);
-    if (t1 && t2 && t1->is_real() && t2->is_real() && *t2 < *t1) {
-      why = "state '" + m.states[static_cast<std::size_t>(a.to)].name + "' comes before '" + m.states[static_cast<std::size_t>(a.from)].name + "'";
-      return false;
-    }
-  }
-  return true;
-}
-
 /// The closed forms of `at` (its parameters given a sample) against the scene solved with those
 /// numbers: each result to 1e-12 relative. @throws SceneError at the result that differs, with
 /// both numbers.
@@ -376,15 +337,16 @@ void confirm(Solution& s) {
   int passed_over = 0;
   // a sample at which every analysis is confirmed by simulation (or the equations of motion) is
   // taken before one where some analysis has only its residuals (a run beyond the steps allowed
-  // at those values): weak ones fill up only after kSampleCandidates / 4 candidates
+  // at those values): weak ones fill up only after kSampleCandidates / 16 candidates
   std::vector<Solution> weak;
   std::vector<std::string> weak_values;
   auto full = [](const Solution& n) {
     return std::all_of(n.confirmed.begin(), n.confirmed.end(),
                        [](const Confirmed& c) { return c.by == Confirmed::By::Simulation || c.by == Confirmed::By::EquationsOfMotion; });
   };
-  for (int k = 0; k < kSampleCandidates && static_cast<int>(done.size()) < kSamples &&
-                  !(static_cast<int>(done.size() + weak.size()) >= kSamples && k >= kSampleCandidates / 4);
+  int solves = 0;
+  for (int k = 0; k < kSampleCandidates && solves < kSampleSolves && static_cast<int>(done.size()) < kSamples &&
+                  !(static_cast<int>(done.size() + weak.size()) >= kSamples && k >= kSampleCandidates / 16);
        ++k) {
     Solution at = s;  // the closed forms, their parameters given the sample
     scene::SceneDef def = s.scene;  // the scene as written, with those numbers
@@ -393,7 +355,7 @@ void confirm(Solution& s) {
       model::Parameter& p = at.model.params[i];
       const numeric v = model::Model::sample_value(p, 1, k);  // (stream 1: not the solve's choices')
       p.value = v;
-      const std::string unit = units::si_name(p.dim), text = numerics::format(v, 3) + (unit.empty() ? "" : " " + unit);
+      const std::string unit = units::si_name(p.dim), text = numerics::format(v, model::Model::sample_digits(v)) + (unit.empty() ? "" : " " + unit);
       shown += (shown.empty() ? "" : ", ") + p.name + " = " + text;
       for (auto& d : def.parameters)
         if (d.name == p.name) d.value.s = text;
@@ -401,6 +363,7 @@ void confirm(Solution& s) {
     std::string why;
     std::optional<Solution> n;
     if (admissible(at, why)) {
+      ++solves;
       try {
         n = solve_scene(def);
       } catch (const SceneError& err) {

@@ -200,7 +200,8 @@ private:
       par.angle = par.dim.dimensionless() && (u.find("rad") != std::string::npos || u.find("deg") != std::string::npos ||
                                               u.find("rev") != std::string::npos);
       if (q.has_number) par.value = q.si;
-      bool pos = !q.unknown && (!q.has_number || q.number.is_positive());
+      if (p.in) par.in = parameter_range(p, par);
+      bool pos = !q.unknown && (!q.has_number ? !par.in || !ex_to<numeric>(par.in->first.evalf()).is_negative() : q.number.is_positive());
       if (pos) par.sym = possymbol(p.name);
       else par.sym = realsymbol(p.name);
       // the symbol's kind follows the value's sign (a positive symbol's simplifications hold only
@@ -210,6 +211,42 @@ private:
       m_.names_[p.name] = par.sym;
       m_.params.push_back(par);
     }
+  }
+
+  /// `in: [lo, hi]` of parameter p: numbers in p's unit (an angle's bounds with their angle unit,
+  /// `180 deg`), lo < hi, p's value inside; an unknown's range is its result's root choice.
+  std::pair<ex, ex> parameter_range(const scene::ParameterDef& p, const Parameter& par) {
+    if (par.unknown)
+      throw SceneError(p.in_pos, "'in' gives the range of a parameter with or without a value, and '" + p.name + "' is an unknown",
+                       "remove 'in', and choose the unknown's root on its result: 'root: {in: [lo, hi]}'");
+    auto bound = [&](const Text& b, const char* end) {
+      // an end names a parameter (read as a unit otherwise): a range of numbers only
+      if (std::any_of(d_.parameters.begin(), d_.parameters.end(), [&](const scene::ParameterDef& x) { return x.name == b.s; }))
+        throw SceneError(b.pos, std::string("the ") + end + " end of 'in' of parameter '" + p.name + "' is not a number: '" + b.s + "' is a parameter",
+                         "write a number with the parameter's unit, e.g. 'in: [0, 90 deg]'");
+      units::Quantity q = read_at(b, units::parse_quantity);
+      if (!q.has_number || q.unknown)
+        throw SceneError(b.pos, std::string("the ") + end + " end of 'in' of parameter '" + p.name + "' is not a number",
+                         "write a number with the parameter's unit, e.g. 'in: [0, 90 deg]'");
+      if (q.unit.dim != par.dim)
+        throw SceneError(b.pos, std::string("the ") + end + " end of 'in' of parameter '" + p.name + "' has dimension " + q.unit.dim.str() +
+                                    ", and the parameter " + par.dim.str(),
+                         "write it in the parameter's unit");
+      // a bare number is an angle in rad: said with its unit, as the parameter is (0 alone is plain)
+      if (par.angle && q.unit.text.empty() && !q.si.is_zero())
+        throw SceneError(b.pos, std::string("the ") + end + " end of 'in' of angle '" + p.name + "' has no unit",
+                         "write its unit, e.g. '" + b.s + " deg' or '" + b.s + " rad'");
+      return q.si;
+    };
+    std::pair<ex, ex> r{bound(p.in->first, "lower"), bound(p.in->second, "upper")};
+    auto num = [](const ex& e) { return ex_to<numeric>(e.evalf()); };
+    if (!(num(r.first) < num(r.second)))
+      throw SceneError(p.in_pos, "'in' of parameter '" + p.name + "' must be a range [lo, hi] with lo < hi", "write e.g. 'in: [0, 90 deg]'");
+    if (par.value && (num(*par.value) < num(r.first) || num(*par.value) > num(r.second)))
+      throw SceneError(p.value.pos, "parameter '" + p.name + "' = " + p.value.s + " lies outside its range 'in: [" + p.in->first.s + ", " +
+                                        p.in->second.s + "]'",
+                       "give a value inside the range, or widen the range");
+    return r;
   }
 
   void coordinates() {
@@ -934,7 +971,8 @@ private:
     return *p;
   }
 
-  /// [lo, hi] of numbers (or of parameters with values), lo < hi.
+  /// [lo, hi] of numbers or of parameters, lo < hi: checked here where the parameters have
+  /// values, else at the values the solve and its confirmation take for them (SceneSolver).
   std::pair<ex, ex> range_of(const Node& r, const std::string& key) {
     if (!r.is_list() || r.items.size() != 2)
       throw SceneError(r.pos, "'" + key + "' is a range [lo, hi]", "write e.g. '" + key + ": [0, 90 deg]'");
@@ -942,6 +980,7 @@ private:
     std::pair<ex, ex> x{bound(r.items[0]), bound(r.items[1])};
     auto lo = value_of(x.first, r.items[0].pos, "the lower end of '" + key + "'"),
          hi = value_of(x.second, r.items[1].pos, "the upper end of '" + key + "'");
+    if (m_.unvalued(x.first) || m_.unvalued(x.second)) return x;
     if (!lo || !hi || !(*lo < *hi))
       throw SceneError(r.pos, "'" + key + "' must be a range [lo, hi] of numbers with lo < hi", "write e.g. '" + key + ": [0, 90 deg]'");
     return x;

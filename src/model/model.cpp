@@ -261,10 +261,18 @@ exmap Model::numeric_environment() const {
   int i = 0;
   for (auto& p : params) {
     if (p.value) m[p.sym] = *p.value;
-    else if (!p.unknown) m[p.sym] = sample == 0 ? numeric(1) + numeric(37 * (++i) % 97, 97) : sample_value(p, 0, sample);  // (the first in (1, 2))
+    else if (!p.unknown) m[p.sym] = sample == 0 && !p.in ? numeric(1) + numeric(37 * (++i) % 97, 97) : sample_value(p, 0, sample);  // (the first in (1, 2))
   }
   return m;
 }
+
+namespace {
+numeric pow_ten(int n) {
+  numeric r = 1;
+  for (int i = 0; i < n; ++i) r *= 10;
+  return r;
+}
+}  // namespace
 
 numeric Model::sample_value(const Parameter& p, int stream, int k) {
   std::uint64_t h = 1469598103934665603ULL;  // FNV-1a of the name, then split-mix of (h, stream, k)
@@ -274,9 +282,36 @@ numeric Model::sample_value(const Parameter& p, int stream, int k) {
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
   z ^= z >> 31;
   const double u = static_cast<double>(z >> 11) / 9007199254740992.0;  // in [0, 1)
-  const double v = p.angle ? 0.2 + 1.2 * u : p.dim.dimensionless() ? 0.1 + 0.8 * u : std::exp(std::log(0.1) + u * std::log(100.0));
-  const double scale = std::pow(10.0, 2 - std::floor(std::log10(v)));  // three significant digits
-  return numeric(static_cast<long>(std::lround(v * scale))) / numeric(static_cast<long>(std::lround(scale)));
+  // where it has a range `in: [lo, hi]`: inside its middle 90 % (the ends are often where the
+  // motion starts or a form is singular), log-evenly for a positive range of a quantity with a
+  // dimension, else evenly
+  double lo = 0, hi = 0, v = 0;
+  if (p.in) {
+    lo = ex_to<numeric>(p.in->first.evalf()).to_double();
+    hi = ex_to<numeric>(p.in->second.evalf()).to_double();
+    const double w = 0.05 + 0.9 * u;
+    v = !p.dim.dimensionless() && lo > 0 ? std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo))) : lo + w * (hi - lo);
+  } else {
+    v = p.angle ? 0.2 + 1.2 * u : p.dim.dimensionless() ? 0.1 + 0.8 * u : std::exp(std::log(0.1) + u * std::log(100.0));
+  }
+  // three significant digits (more where three would take it out of its range)
+  for (int digits = 3;; ++digits) {
+    if (v == 0) return numeric(0);
+    const double e = std::floor(std::log10(std::fabs(v)));
+    const numeric r = digits - 1 - e >= 0 ? numeric(static_cast<long>(std::llround(v * std::pow(10.0, digits - 1 - e)))) / pow_ten(static_cast<int>(digits - 1 - e))
+                                           : numeric(static_cast<long>(std::llround(v * std::pow(10.0, digits - 1 - e)))) * pow_ten(static_cast<int>(e + 1 - digits));
+    if (!p.in || digits >= 15 || (r.to_double() > lo && r.to_double() < hi)) return r;
+  }
+}
+
+int Model::sample_digits(const numeric& v) {
+  if (v.is_zero()) return 1;
+  for (int digits = 3; digits < 15; ++digits) {
+    const int e = static_cast<int>(std::floor(std::log10(std::fabs(v.to_double()))));
+    const numeric scaled = v * (digits - 1 - e >= 0 ? pow_ten(digits - 1 - e) : numeric(1) / pow_ten(e + 1 - digits));
+    if (scaled.is_integer()) return digits;
+  }
+  return 15;
 }
 
 bool Model::unvalued(const ex& e) const {

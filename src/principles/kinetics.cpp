@@ -640,7 +640,13 @@ OneSidedLimits one_sided_limits(const Model& m) {
                                            "ask for the state where it " + w.verb + ", " + w.ask + ", or take state '" + st + "' before it",
                                            e.pos, w.acts + " at state '" + st + "' (N >= 0)"}});
     };
-    for (std::size_t ai = 0; ai < m.analyses.size(); ++ai) {
+    // the analyses at a state first: where one solves the force there, N ≥ 0 at that state is said
+    // in the solved force, not in the longer form Newton–Euler gives along a motion that ends there
+    std::vector<std::size_t> order;
+    for (int pass = 0; pass < 2; ++pass)
+      for (std::size_t ai = 0; ai < m.analyses.size(); ++ai)
+        if ((m.analyses[ai].type && m.analyses[ai].type->at_state()) == (pass == 0)) order.push_back(ai);
+    for (const std::size_t ai : order) {
       const model::Analysis& a = m.analyses[ai];
       if (a.instant()) continue;  // an impact's reaction is an impulse (its sign: the impact's own check)
       const bool instant = a.type && a.type->at_state();

@@ -580,7 +580,26 @@ struct Loader {
       for (auto& [k, v] : p->entries) {
         not_a_section(k, r, "parameters");
         check_name(k, "parameter");
-        s.parameters.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": 5 kg")});
+        if (v.is_map()) {  // {value: 210 deg, in: [180 deg, 270 deg]}
+          for (auto& [kk, vv] : v.entries)
+            if (kk.scalar == "unit")
+              throw SceneError(kk.pos, "parameter '" + k.scalar + "' takes its unit in its value, not under 'unit'",
+                               "write '" + k.scalar + ": {value: 5 kg}' (or '" + k.scalar + ": 5 kg')");
+          only_keys(v, "parameter '" + k.scalar + "'", {"value", "in"});
+          auto* val = v.get("value");
+          auto* in = v.get("in");
+          if (!val)
+            throw SceneError(v.pos, "parameter '" + k.scalar + "' has no 'value'",
+                             "write '" + k.scalar + ": {value: 30 deg, in: [0, 90 deg]}' (or 'value: deg' for one without a number)");
+          ParameterDef d{k.scalar, k.pos, text(*val, "value", k.scalar + ": {value: 5 kg}"), std::nullopt, v.pos};
+          if (in) {
+            d.in = pair(*in, "in", "'in: [0, 90 deg]'");
+            d.in_pos = in->pos;
+          }
+          s.parameters.push_back(d);
+          continue;
+        }
+        s.parameters.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": 5 kg"), std::nullopt, {}});
       }
     }
     if (auto* p = r.get("points")) {

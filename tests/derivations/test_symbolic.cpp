@@ -23,13 +23,19 @@ std::string symbolize(const std::string& text) {
   static const std::regex top(R"(^([A-Za-z_]\w*):.*)");
   static const std::regex param(R"(^(\s+)([A-Za-z_]\w*):\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?:\s+(\S.*?))?\s*$)");
   static const std::regex unit(R"(,\s*unit:\s*[^,}]+)");
+  // theta2: {value: 210 deg, in: [180 deg, 270 deg]} → theta2: {value: deg, in: […]}
+  static const std::regex ranged(R"(^(\s+)([A-Za-z_]\w*):\s*\{value:\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?:\s+([^,}]+?))?\s*(,.*)$)");
   std::istringstream in(text);
   std::string line, block, out;
   while (std::getline(in, line)) {
     std::smatch m;
     if (std::regex_match(line, m, top)) block = m[1];
     if (block == "expect") continue;
-    if (block == "parameters" && line.find('{') != std::string::npos) {  // flow style: parameters: {m: 40 kg, …}
+    if (block == "parameters" && std::regex_match(line, m, ranged)) {
+      out += m[1].str() + m[2].str() + ": {value: " + (m[3].matched ? m[3].str() : std::string("number")) + m[4].str() + "\n";
+      continue;
+    }
+    if (block == "parameters" && line.rfind("parameters:", 0) == 0 && line.find('{') != std::string::npos) {  // flow style: parameters: {m: 40 kg, …}
       const auto a = line.find('{'), b = line.rfind('}');
       std::istringstream items(line.substr(a + 1, b - a - 1));
       std::string item, made;
@@ -51,11 +57,6 @@ std::string symbolize(const std::string& text) {
 
 // Not yet solved with symbols (issue 43 open): each refused with an error, never a wrong number.
 const std::map<std::string, std::string> kNotYet = {
-    {"collar_spring_least_speed.yaml", "'over' with a symbolic range"},
-    {"rod_full_revolution_least_speed.yaml", "a least value in parameters without values"},
-    {"linkage_collar.yaml", "a root the motion fixes, not chosen symbolically"},
-    {"sphere_onto_step.yaml", "the angle at the top of a pivot, chosen at one sample"},
-    {"wheel_over_step.yaml", "the angle at the top of a pivot, chosen at one sample"},
     {"wheel_cam_couple_angle.yaml", "no closed form: refused by design (neither a form nor a number)"},
 };
 
@@ -135,13 +136,65 @@ TEST_CASE("symbolic scenes: what the confirmation says, the forms of an ambiguou
     REQUIRE(y);
     CHECK(x->to_double() == Approx(y->to_double()).epsilon(1e-14));
   }
-  // a rate whose sign the solve does not yet fix with symbols (the linkage's crank): both forms
-  // shown, never "? or ?"
-  REQUIRE_THROWS_WITH(kt::solve_text(symbolize(kt::derivation("energy/linkage_collar.yaml"))),
+  // the linkage's crank angle without its range: near 0 (where angles are sampled) the crank
+  // would turn the other way from pi, and sin theta2 has the other sign — both forms shown, never
+  // "? or ?" (with 'in: [180 deg, 270 deg]', as the derivation states it, it solves)
+  const std::string linkage = symbolize(kt::derivation("energy/linkage_collar.yaml"));
+  REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(linkage, "{value: deg, in: [180 deg, 270 deg]}", "deg")),
                       Catch::Contains("'omega2' has more than one solution (") && Catch::Contains(" or -") &&
                           !Catch::Contains("?"));
   // a root of an equation in parameters without values: neither a form nor a number, refused
   REQUIRE_THROWS_WITH(kt::solve_text(symbolize(kt::derivation("energy/wheel_cam_couple_angle.yaml"))),
                       Catch::Contains("'phi2' has no closed form (it is a root of an equation found numerically), and parameter '") &&
                           Catch::Contains("has no value, so neither a form nor a number can be given"));
+}
+
+TEST_CASE("symbolic scenes: a parameter's range 'in:' places its samples, and a range 'over:' may hold parameters", "[symbolic]") {
+  // the crank angle sampled inside its range [180 deg, 270 deg] (its middle 90 %), by the solve
+  // and by the confirmation alike
+  const std::string linkage = symbolize(kt::derivation("energy/linkage_collar.yaml"));
+  auto s = kt::solve_text(linkage);
+  kinergy::confirm(s);
+  REQUIRE(s.confirmed.size() == 2);
+  REQUIRE(s.confirmed[0].samples.size() == 3);
+  const double pi = 3.14159265358979;
+  for (auto& text : s.confirmed[0].samples) {
+    std::smatch m;
+    REQUIRE(std::regex_search(text, m, std::regex(R"(theta2 = ([0-9.]+))")));
+    INFO(text);
+    CHECK(std::stod(m[1]) > pi + 0.05 * pi / 2);
+    CHECK(std::stod(m[1]) < 1.5 * pi - 0.05 * pi / 2);
+  }
+  for (int k = 0; k < 200; ++k) {
+    const GiNaC::numeric v = kinergy::model::Model::sample_value(*s.model.parameter("theta2"), k % 2, k);
+    CHECK(v.to_double() > pi);
+    CHECK(v.to_double() < 1.5 * pi);
+  }
+  // a positive range with a unit, sampled evenly in its logarithm and inside it; a narrow one
+  // given more digits than three where three would leave it
+  auto narrow = kt::model_of(kt::edit(kt::derivation("energy/compound_pendulum.yaml"), "L: 0.9 m", "L: {value: m, in: [1.2 m, 1.2001 m]}"));
+  for (int k = 0; k < 50; ++k) {
+    const GiNaC::numeric v = kinergy::model::Model::sample_value(*narrow.parameter("L"), 1, k);
+    CHECK(v > GiNaC::numeric(12, 10));
+    CHECK(v < GiNaC::numeric(12001, 10000));
+    CHECK(kinergy::model::Model::sample_digits(v) > 3);
+  }
+  // the collar's least speed with every parameter a symbol, its path 'over: [-a, a]': by hand,
+  // the collar must get past x = 0 (directly below A), where the spring is shortest,
+  // v0² = k ((L0 - h)² - (sqrt(a² + h²) - L0)²)/m
+  s = kt::solve_text(symbolize(kt::derivation("energy/collar_spring_least_speed.yaml")));
+  {
+    const GiNaC::ex k = kt::param(s.model, "k"), m = kt::param(s.model, "m"), h = kt::param(s.model, "h"), L0 = kt::param(s.model, "L0"),
+                    a = kt::param(s.model, "a");
+    const GiNaC::ex want = GiNaC::sqrt(k * (GiNaC::pow(L0 - h, 2) - GiNaC::pow(GiNaC::sqrt(a * a + h * h) - L0, 2)) / m);
+    const GiNaC::exmap at{{k, 200}, {m, 2}, {h, GiNaC::numeric(3, 10)}, {L0, GiNaC::numeric(1, 2)}, {a, GiNaC::numeric(2, 5)}};
+    auto x = kinergy::numerics::evaluate(kt::result(s, "v0_min").closed, at, 30), y = kinergy::numerics::evaluate(want, at, 30);
+    REQUIRE(x);
+    REQUIRE(y);
+    CHECK(x->to_double() == Approx(y->to_double()).epsilon(1e-14));
+    CHECK(x->to_double() == Approx(2.0).epsilon(1e-12));
+  }
+  // a range empty at the parameters' values, said with the values
+  REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(symbolize(kt::derivation("energy/collar_spring_least_speed.yaml")), "over: [-a, a]", "over: [a, -a]")),
+                      Catch::Contains("the range of 's' is empty at the sampled values") && Catch::Contains("is not below its upper end"));
 }

@@ -216,7 +216,7 @@ TEST_CASE("wrong types: a list, a map or a text where another is needed", "[erro
     auto t = rod("    mass: m\n", "    mass: {value: m}\n");
     expect_error(t, at(t, "{value: m}"), "'mass' must be a single value, not a map", "mass: m");
     auto t2 = rod("  m: 5 kg", "  m: {value: 5, unit: kg}");
-    expect_error(t2, at(t2, "{value: 5"), "'m' must be a single value, not a map");
+    expect_error(t2, at(t2, "unit: kg"), "parameter 'm' takes its unit in its value, not under 'unit'", "m: {value: 5 kg}");
     auto t3 = rod("title: Rod sliding on two tracks", "title: [a, b]");
     expect_error(t3, at(t3, "[a, b]"), "'title' must be a single value, not a list");
   }
@@ -477,6 +477,48 @@ TEST_CASE("parameters: reserved names, duplicates, no value where a number is as
   SECTION("a parameter that is not a quantity") {
     auto t = rod("m: 5 kg", "m: [5, kg]");
     expect_error(t, at(t, "[5, kg]"), "'m' must be a single value, not a list");
+  }
+}
+
+TEST_CASE("parameters: the range a parameter lies in, 'in: [lo, hi]'", "[errors][parameters]") {
+  SECTION("a value inside its range solves") {
+    expect_ok(rod("theta2: 30 deg", "theta2: {value: 30 deg, in: [10 deg, 80 deg]}"));
+  }
+  SECTION("a value outside its range, blamed where the value is written") {
+    auto t = rod("theta2: 30 deg", "theta2: {value: 30 deg, in: [40 deg, 80 deg]}");
+    expect_error(t, at(t, "30 deg,"), "parameter 'theta2' = 30 deg lies outside its range 'in: [40 deg, 80 deg]'", "inside the range");
+  }
+  SECTION("a map without 'value'") {
+    auto t = rod("theta2: 30 deg", "theta2: {in: [40 deg, 80 deg]}");
+    expect_error(t, at(t, "{in:"), "parameter 'theta2' has no 'value'", "value: deg");
+  }
+  SECTION("an unknown key beside 'value' and 'in'") {
+    auto t = rod("theta2: 30 deg", "theta2: {value: 30 deg, range: [40 deg, 80 deg]}");
+    expect_error(t, at(t, "range:"), "range");
+  }
+  SECTION("a range of three ends") {
+    auto t = rod("theta2: 30 deg", "theta2: {value: 30 deg, in: [0, 40 deg, 80 deg]}");
+    expect_error(t, at(t, "[0, 40"), "'in' must have 2 entries", "in: [0, 90 deg]");
+  }
+  SECTION("an end that is no number") {
+    auto t = rod("theta2: 30 deg", "theta2: {value: 30 deg, in: [0, l]}");
+    expect_error(t, at(t, "l]"), "the upper end of 'in' of parameter 'theta2' is not a number");
+  }
+  SECTION("an end of another dimension") {
+    auto t = rod("l: 1.2 m", "l: {value: 1.2 m, in: [1 m, 2 s]}");
+    expect_error(t, at(t, "2 s]"), "the upper end of 'in' of parameter 'l' has dimension", "in the parameter's unit");
+  }
+  SECTION("an angle's end without its unit (180 would be 180 rad)") {
+    auto t = rod("theta2: 30 deg", "theta2: {value: 30 deg, in: [0, 90]}");
+    expect_error(t, at(t, "90]"), "the upper end of 'in' of angle 'theta2' has no unit", "90 deg");
+  }
+  SECTION("an empty range") {
+    auto t = rod("theta2: 30 deg", "theta2: {value: 30 deg, in: [80 deg, 10 deg]}");
+    expect_error(t, at(t, "[80 deg"), "must be a range [lo, hi] with lo < hi");
+  }
+  SECTION("an unknown takes no range: its root is chosen on its result") {
+    auto t = rod("l: 1.2 m", "l: {value: unknown m, in: [1 m, 2 m]}");
+    expect_error(t, at(t, "[1 m"), "'l' is an unknown", "root: {in: [lo, hi]}");
   }
 }
 

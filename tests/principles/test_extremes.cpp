@@ -128,7 +128,29 @@ TEST_CASE("least and greatest parameter values: what is refused", "[extremes][re
   refused(p, "{x: d}", "  f: {least: v, reaches: 2, along: d}\n", "'along' needs the range of the path");
   refused(p, "{x: d}", "  f: {least: v, reaches: 2, over: [0, 1 m]}\n", "'over' gives the range of the parameter named by 'along'");
   refused(p, "{x: d}", "  f: {least: v, reaches: 2, along: v, over: [0, 1 m]}\n", "names the parameter whose least value is asked");
-  refused(p + "  s: m\n", "{x: s}", "  f: {least: v, reaches: 2}\n", "parameter 's' has no value, but the least value of 'v' needs numbers");
+  // another parameter without a value: the bound in closed form, (1/2) m v^2 = mu m g s
+  {
+    auto s = solve_text(sliding("  mu: 0.25\n  s: m\n  v: m/s\n", "{x: s}", "  f: {least: v, reaches: 2}\n"));
+    const auto& r = kt::result(s, "f");
+    REQUIRE(r.closed_form);
+    const GiNaC::ex sv = kt::param(s.model, "s");
+    for (int d : {1, 2, 7}) {
+      GiNaC::exmap at = s.model.parameter_values();
+      at[sv] = d;
+      CHECK(kt::value(r.closed, at).to_double() == Approx(std::sqrt(0.5 * 9.81 * d)).epsilon(1e-14));
+    }
+  }
+  // ... and where the bound has no closed form (the top of a hump where cos(x/a) = x/(2 a), a
+  // transcendental place): neither a form nor a number, refused
+  const std::string hump =
+      "title: hump\nparameters:\n  m: 2 kg\n  k: 5 N/m\n  a: m\n  v: m/s\n  s: m\ncoordinates:\n  x: m\nbodies:\n"
+      "  b: {mass: m, inertia: particle, position: [x, 0]}\neffects:\n  push: {force: b, F: [\"k*(x/2 - a*cos(x/a))\", 0]}\n"
+      "states:\n  1: {x: 0, x_dot: v}\n  2: {x: s}\nanalyses:\n  - energy: {from: 1, to: 2}\nfind:\n"
+      "  f: {least: v, reaches: 2, along: s, over: [0, 3*a]}\n";
+  REQUIRE_THROWS_WITH(solve_text(hump), Catch::Contains("'f' has no closed form (its bound is found numerically, by a scan and bisection), and parameter '") &&
+                                            Catch::Contains("neither a form nor a number"));
+  // (with a number for a, the bound is found: the scene itself is good)
+  CHECK_NOTHROW(solve_text(edit(hump, "  a: m\n", "  a: 1.3 m\n")));
   // the kinetic energy at 2 does not depend on the parameter
   refused("  mu: 0.25\n  d: 2 m\n  v: 4 m/s\n  w: m/s\n", "{x: d}", "  f: {least: w, reaches: 2}\n", "does not depend on 'w'");
   // never reached: a greatest speed (the energy only grows with v) / always reached

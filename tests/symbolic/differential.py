@@ -75,6 +75,12 @@ def perturbed(text, rng):
                 m = re.match(r"^(" + NUMBER + r")(?:\s+(\S.*))?$", value)
                 items.append(f"{name}: {scaled(name, m.group(1), m.group(2)) + (' ' + m.group(2) if m.group(2) else '')}" if m else f"{name}: {value}")
             line = "parameters: {" + ", ".join(items) + "}\n"
+        elif block == "parameters" and not top and re.match(r"^\s+[A-Za-z_]\w*:\s*\{value:", line):
+            # theta2: {value: 210 deg, in: [180 deg, 270 deg]} (the scaled value kept inside its range)
+            m = re.match(r"^(\s+)([A-Za-z_]\w*):\s*\{value:\s*(" + NUMBER + r")(?:\s+([^,}]+?))?\s*(,.*)$", line.rstrip("\n"))
+            if m:
+                indent, name, number, unit, rest = m.groups()
+                line = f"{indent}{name}: {{value: {scaled(name, number, unit)}" + (f" {unit}" if unit else "") + rest + "\n"
         elif block == "parameters" and not top:
             m = re.match(r"^(\s+)([A-Za-z_]\w*):\s*(" + NUMBER + r")(?:\s+(\S.*?))?\s*$", line.rstrip("\n"))
             if m:

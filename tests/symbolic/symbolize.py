@@ -24,6 +24,13 @@ def symbolize(text):
                 m = re.match(r"^(" + NUMBER + r")(?:\s+(\S.*))?$", value)
                 items.append(f"{name}: {(m.group(2) or 'number') if m else value}")
             line = "parameters: {" + ", ".join(items) + "}\n"
+        if block == "parameters" and not top:  # theta2: {value: 210 deg, in: [180 deg, 270 deg]}
+            m = re.match(r"^(\s+)([A-Za-z_]\w*):\s*\{value:\s*(" + NUMBER + r")(?:\s+([^,}]+?))?\s*,(.*)$", line.rstrip("\n"))
+            if m:
+                indent, name, value, unit, rest = m.groups()
+                values[name] = (value, unit)
+                out.append(f"{indent}{name}: {{value: {unit if unit else 'number'},{rest}\n")
+                continue
         if block == "parameters" and not top:
             m = re.match(r"^(\s+)([A-Za-z_]\w*):\s*(" + NUMBER + r")(?:\s+(\S.*?))?\s*(#.*)?$", line.rstrip("\n"))
             if m:

@@ -21,9 +21,10 @@ constexpr double kConfirmResidual = 1e-25;
 
 /// Closed forms in parameters without values are confirmed at this many sampled values of them,
 /// drawn from at most kSampleCandidates candidates (those where the solution's conditions fail
-/// are passed over).
+/// are passed over without a solve), the scene solved at no more than kSampleSolves of them.
 constexpr int kSamples = 3;
-constexpr int kSampleCandidates = 64;
+constexpr int kSampleCandidates = 256;
+constexpr int kSampleSolves = 32;
 
 /// Kinetics at a state against the simulator's equations of motion there (Kane's form, compiled
 /// apart): the largest relative difference of the accelerations q̈ (relative to their own size,

@@ -30,6 +30,9 @@ struct Parameter {
   /// a parameter of the closed forms, so never given a sampled value.
   bool ranged = false;
   bool angle = false;      ///< written in rad, deg or rev (dimensionless, but not a pure number)
+  /// `in: [lo, hi]` (SI): the range it lies in — a value is checked against it, and where it has
+  /// none, its sampled values are drawn inside it.
+  std::optional<std::pair<ex, ex>> in;  ///< (exact: `180 deg` is π)
   /// Without a value and not solved for (`r: m`): its closed forms hold it as a symbol.
   bool without_value() const { return !value && !unknown; }
 };
@@ -320,8 +323,11 @@ public:
   /// in [0.2, 1.4] rad, a pure number in [0.1, 0.9] (a friction coefficient, a restitution),
   /// anything else — taken as positive, as the closed forms take it — in [1/10, 10] of its SI
   /// unit, spread evenly in its logarithm (wide enough that a stiff spring or a heavy block the
-  /// solution needs is among them).
+  /// solution needs is among them); one with a range `in: [lo, hi]` inside the middle 90 % of it
+  /// (more digits where three would leave it).
   static GiNaC::numeric sample_value(const Parameter& p, int stream, int k);
+  /// The significant digits a sampled value is exact to (3, or more: sample_value).
+  static int sample_digits(const GiNaC::numeric& v);
   /// Does e hold a parameter without a value (Parameter::without_value)? Every one when e is
   /// left out: does the scene have any?
   bool unvalued(const GiNaC::ex& e) const;

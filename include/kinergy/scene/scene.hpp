@@ -39,7 +39,15 @@ struct Text {
   SourcePos pos;
 };
 
-struct ParameterDef { std::string name; SourcePos pos; Text value; };
+/// `m: 5 kg` | `m: kg` | `k: unknown N/m`, or `theta2: {value: 210 deg, in: [180 deg, 270 deg]}`:
+/// the same text under `value:`, with the range the parameter lies in.
+struct ParameterDef {
+  std::string name;
+  SourcePos pos;
+  Text value;
+  std::optional<std::pair<Text, Text>> in;  ///< [lo, hi] it lies in (checked on a value, sampled in without one)
+  SourcePos in_pos;
+};
 struct PointDef { std::string name; SourcePos pos; Text x, y; };
 struct CoordinateDef { std::string name; SourcePos pos; Text unit; };
 
