@@ -38,6 +38,15 @@ bool has_float(const ex& e) {
 }
 
 
+/// ": the root for u of 0 = …" — the equation a result found by one numeric root solves, where
+/// it is short enough to read in one line (its implicit form, for an author who wants one).
+std::string solves_text(const Result& r) {
+  if (r.roots.size() != 1) return "";
+  const std::string eq = emit::plain(model::tidy(r.roots[0].residual)), u = emit::plain(r.roots[0].u);
+  if (eq.size() > 240) return "";
+  return ": the root for " + u + " of 0 = " + eq;
+}
+
 /// A result with neither a closed form nor a number (a numeric root of an equation in parameters
 /// without values): so at every sample of them, so not tried at another.
 struct NoFormError : SceneError {
@@ -1464,7 +1473,7 @@ private:
     throw NoFormError(f.pos, "'" + f.name + "' has no closed form (" +
                                  (f.reach ? std::string("its bound is found numerically, by a scan and bisection") :
                                   f.extreme ? std::string("its extreme is found numerically, by a scan") :
-                                              std::string("it is a root of an equation found numerically")) + "), and parameter '" + missing->name +
+                                              std::string("it is a root of an equation found numerically") + solves_text(r)) + "), and parameter '" + missing->name +
                                 "' has no value, so neither a form nor a number can be given",
                      "give the parameters values (the root is then found for them), e.g. '" + missing->name + ": " +
                          (units::si_name(missing->dim).empty() ? std::string("30 deg") : "2 " + units::si_name(missing->dim)) + "'");

@@ -1,5 +1,6 @@
-// Issue 43's findings 3 and 4: an energy analysis across a force switched on at a state inside it,
-// and one verdict from `solve` and `simulate --check`. Expected values by hand.
+// Issue 43's findings 2, 3 and 4: a residual at the 50-digit noise floor, an energy analysis across
+// a force switched on at a state inside it, and one verdict from `solve` and `simulate --check`.
+// Expected values by hand.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -36,7 +37,64 @@ find:
   v3: {value: x_dot@3, root: positive, unit: m/s}
 )";
 
+// A hoop that strikes a step's edge without bouncing or slipping and pivots over it: at the top
+// its weight passes through the edge, so the moments about its centre vanish on both sides and
+// what is left at 50 digits is rounding of the other terms' size.
+const std::string kHoopOverStep = R"(title: A hoop rolls onto a step and pivots over its edge
+parameters:
+  m: 3 kg
+  r: 0.25 m
+  h: 0.05 m
+  v1: 1.2 m/s
+  g: 9.81 m/s^2
+points:
+  E: [0, 0]
+coordinates:
+  x: m
+  y: m
+  phi: rad
+bodies:
+  hoop:
+    mass: m
+    inertia: {hoop: r}
+    position: [x, y]
+    angle: phi
+    points: {C: [sqrt(r^2 - (r - h)^2), -(r - h)]}
+effects:
+  gravity: {g: g}
+  edge: {contact: [E, hoop.C], normal: [-sqrt(r^2 - (r - h)^2)/r, (r - h)/r], e: 0, tangential: stick, surface: hoop}
+states:
+  before: {x: -sqrt(r^2 - (r - h)^2), y: r - h, phi: 0, x_dot: v1, y_dot: 0, phi_dot: -v1/r}
+  after: {}
+  top: {x: 0, y: r, phi: -acos((r - h)/r)}
+analyses:
+  - impact: {from: before, to: after, contact: edge}
+  - energy: {from: after, to: top}
+  - kinetics: {at: top}
+find:
+  omega_top: {value: phi_dot@top, root: negative, unit: rad/s}
+  N_top: {value: N(edge)@top, unit: N}
+  alpha_top: {value: phi_ddot@top, unit: rad/s^2}
+)";
+
 }  // namespace
+
+TEST_CASE("a residual at the 50-digit noise floor holds: kinetics where both sides vanish (issue 43, finding 2)", "[confirm][findings]") {
+  // By hand: angular momentum about E through the impact, m v1 (r - h) + m r^2 (v1/r) = 2 m r^2 w2,
+  // so w2 = v1 (2 r - h)/(2 r^2) = 4.32 rad/s; energy to the top (G rises by h), 2 m r^2 (w2^2 - w^2)/2
+  // = m g h, w^2 = w2^2 - g h/r^2; at the top the weight passes through E: alpha = 0, and along G->E
+  // m r w^2 = m g - N, N = m (g - r w^2). Before the fix the check took the moment equation's
+  // leftover of 1e-50 of its terms for a failure ("off by 1 of its size") and refused the scene.
+  auto s = kt::solve_text(kHoopOverStep);
+  kinergy::confirm(s);
+  const double m = 3, r = 0.25, h = 0.05, v1 = 1.2, g = 9.81;
+  const double w2 = v1 * (2 * r - h) / (2 * r * r), w = std::sqrt(w2 * w2 - g * h / (r * r));
+  CHECK(kt::result(s, "omega_top").si->to_double() == Approx(-w).epsilon(1e-12));
+  CHECK(kt::result(s, "N_top").si->to_double() == Approx(m * (g - r * w * w)).epsilon(1e-12));
+  CHECK(kt::result(s, "alpha_top").si->is_zero());
+  REQUIRE(s.confirmed.size() == 3);
+  CHECK(s.confirmed[2].by == kinergy::Confirmed::By::EquationsOfMotion);
+}
 
 TEST_CASE("an energy analysis across a force switched on at a state inside it is solved, the same on every run (issue 43, finding 3)",
           "[confirm][switch]") {
