@@ -30,6 +30,57 @@ namespace {
 
 
 
+/// The sign e is proven to keep wherever it is real, from its form alone (+1: e ≥ 0, −1: e ≤ 0,
+/// 0: not proven): positive symbols and numbers, even powers, square roots (principal, ≥ 0),
+/// exp, cosh, abs and acos; a product by its factors, a sum whose terms all share a sign.
+int proven_sign(const ex& e) {
+  if (is_a<numeric>(e)) return !ex_to<numeric>(e).is_real() ? 0 : ex_to<numeric>(e).is_negative() ? -1 : 1;
+  if (is_a<symbol>(e)) return e.info(info_flags::positive) ? 1 : 0;
+  if (is_a<GiNaC::power>(e)) {
+    if (!is_a<numeric>(e.op(1))) return proven_sign(e.op(0)) == 1 ? 1 : 0;
+    const numeric k = ex_to<numeric>(e.op(1));
+    if (k.is_even()) return 1;
+    if (k.is_integer()) return proven_sign(e.op(0));
+    if (k.denom() == 2) return 1;  // a square root's powers, where real
+    return proven_sign(e.op(0)) == 1 ? 1 : 0;
+  }
+  if (is_a<mul>(e)) {
+    int s = 1;
+    for (std::size_t i = 0; i < e.nops() && s; ++i) s *= proven_sign(e.op(i));
+    return s;
+  }
+  if (is_a<add>(e)) {
+    int s = proven_sign(e.op(0));
+    for (std::size_t i = 1; i < e.nops() && s; ++i)
+      if (proven_sign(e.op(i)) != s) s = 0;
+    return s;
+  }
+  if (is_ex_the_function(e, exp) || is_ex_the_function(e, cosh) || is_ex_the_function(e, abs) || is_ex_the_function(e, acos)) return 1;
+  return 0;
+}
+
+/// What decides the sign of e where it is not proven: e's factors of unproven sign (a
+/// denominator's as a numerator: 1/x has x's sign), times the sign of the rest. e ≥ 0 exactly
+/// where this is ≥ 0 (and e real).
+ex sign_core(const ex& e) {
+  if (!is_a<mul>(e)) return e;
+  ex core = 1;
+  int sign = 1;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    const ex f = e.op(i);
+    if (const int s = proven_sign(f)) {
+      sign *= s;
+      continue;
+    }
+    // x^(-n) (n odd) has the sign of x
+    if (is_a<GiNaC::power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_integer() && ex_to<numeric>(f.op(1)).is_negative())
+      core *= f.op(0);
+    else
+      core *= f;
+  }
+  return sign * core;
+}
+
 bool has_float(const ex& e) {
   if (is_a<numeric>(e)) return !ex_to<numeric>(e).is_rational() && !ex_to<numeric>(e).is_crational();
   for (std::size_t i = 0; i < e.nops(); ++i)
@@ -920,6 +971,26 @@ private:
     for (auto& bal : sol_.balances)
       for (const principles::Condition& c : bal->conditions()) all.push_back(c);
     for (const principles::OneSidedLimit& l : one_sided_.at_states) all.push_back(l.pushes);
+    // the root a result asks for, chosen at a sample: stated where its form does not prove it,
+    // by what decides its sign (−sqrt(X)/(r sin θ₂) > 0 where −sin θ₂ ≥ 0)
+    for (auto& f : m.finds) {
+      if (f.root.kind != model::RootSpec::Kind::Positive && f.root.kind != model::RootSpec::Kind::Negative) continue;
+      const bool positive = f.root.kind == model::RootSpec::Kind::Positive;
+      ex v;
+      try {
+        v = model::tidy(f.value.subs(given).subs(sol_.branch.sol));
+      } catch (const std::exception&) {
+        continue;
+      }
+      if (!m.unvalued(v) || proven_sign(v) == (positive ? 1 : -1)) continue;
+      principles::Condition k;
+      k.e = sign_core(positive ? v : -v);
+      k.what = "'" + f.name + "' has the other sign than 'root: " + (positive ? "positive" : "negative") + "' asks";
+      k.fix = "check 'root:' of '" + f.name + "'";
+      k.pos = f.pos;
+      k.assumed = "'" + f.name + "' " + (positive ? "> 0" : "< 0") + ", the root asked for";
+      all.push_back(k);
+    }
     for (const principles::Condition& c : all) {
       ex e;
       try {

@@ -168,6 +168,19 @@ TEST_CASE("symbolic scenes: a parameter's range 'in:' places its samples, and a 
     CHECK(std::stod(m[1]) > pi + 0.05 * pi / 2);
     CHECK(std::stod(m[1]) < 1.5 * pi - 0.05 * pi / 2);
   }
+  // the root asked for, chosen at a sample, stated where the form does not prove it: omega2 =
+  // -sqrt(X)/(r sin theta2) (X >= 0 where real) is positive where -sin theta2 >= 0
+  {
+    const GiNaC::ex th2 = kt::param(s.model, "theta2");
+    const auto root = std::find_if(s.valid_where.begin(), s.valid_where.end(),
+                                   [](const kinergy::principles::Condition& c) { return c.assumed.find("the root asked for") != std::string::npos; });
+    REQUIRE(root != s.valid_where.end());
+    CHECK(kt::symbolically_zero(root->e + GiNaC::sin(th2)));
+    CHECK(root->assumed == "'omega2' > 0, the root asked for");
+    // (omega3 = sqrt(...)/r is positive by its form: nothing stated for it)
+    CHECK(std::count_if(s.valid_where.begin(), s.valid_where.end(),
+                        [](const kinergy::principles::Condition& c) { return c.assumed.find("the root asked for") != std::string::npos; }) == 1);
+  }
   for (int k = 0; k < 200; ++k) {
     const GiNaC::numeric v = kinergy::model::Model::sample_value(*s.model.parameter("theta2"), k % 2, k);
     CHECK(v.to_double() > pi);
