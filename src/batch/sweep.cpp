@@ -81,6 +81,22 @@ Range parse_range(const std::string& text, const scene::SceneDef& def) {
   }
   if (!q.has_number) throw InputError("parameter '" + r.name + "' has no value to sweep", "sweep a parameter written with a value, such as 'l: 1.2 m'");
   r.unit = q.unit.text;
+  // inside the range the scene gives the parameter (`in: [lo, hi]`), where it gives one: its
+  // closed forms are carried to every point without the scene's own check of the value
+  if (p->in) {
+    try {
+      const double f = GiNaC::ex_to<GiNaC::numeric>(q.unit.factor.evalf()).to_double();
+      const double lo = GiNaC::ex_to<GiNaC::numeric>(units::parse_quantity(p->in->first.s).si.evalf()).to_double(),
+                   hi = GiNaC::ex_to<GiNaC::numeric>(units::parse_quantity(p->in->second.s).si.evalf()).to_double();
+      if (std::min(r.lo, r.hi) * f < lo * (1 - 1e-15) - 1e-300 || std::max(r.lo, r.hi) * f > hi * (1 + 1e-15) + 1e-300)
+        throw InputError("'" + text + "' leaves the range the scene gives '" + r.name + "', in: [" + p->in->first.s + ", " + p->in->second.s + "]",
+                         "sweep '" + r.name + "' inside that range, or widen it in the scene");
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception&) {
+      // (a range the scene cannot read is refused where the scene is read)
+    }
+  }
   return r;
 }
 

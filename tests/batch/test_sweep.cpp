@@ -64,6 +64,20 @@ TEST_CASE("sweep: a range is refused with what is wrong", "[batch][sweep][errors
       {"l=1..inf:3", "the end of 'l=1..inf:3' is not a number", form},
       {"q=1..2:3", "the scene has no parameter 'q'", "sweep one of its parameters: m, l, g, theta2"},
   };
+  // a parameter the scene gives a range: a sweep that leaves it is refused (inside it, taken)
+  {
+    auto ranged = def;
+    for (auto& p : ranged.parameters)
+      if (p.name == "theta2") p.in = std::make_pair(kinergy::scene::Text{"10 deg", {}}, kinergy::scene::Text{"80 deg", {}});
+    CHECK_NOTHROW(kinergy::batch::parse_range("theta2=10..80:8", ranged));
+    try {
+      kinergy::batch::parse_range("theta2=5..60:8", ranged);
+      FAIL("accepted");
+    } catch (const kinergy::InputError& e) {
+      CHECK(std::string(e.what()) == "'theta2=5..60:8' leaves the range the scene gives 'theta2', in: [10 deg, 80 deg]");
+      CHECK(e.fix() == "sweep 'theta2' inside that range, or widen it in the scene");
+    }
+  }
   for (auto& c : cases) {
     INFO(c.text);
     try {

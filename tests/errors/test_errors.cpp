@@ -494,7 +494,7 @@ TEST_CASE("parameters: the range a parameter lies in, 'in: [lo, hi]'", "[errors]
   }
   SECTION("an unknown key beside 'value' and 'in'") {
     auto t = rod("theta2: 30 deg", "theta2: {value: 30 deg, range: [40 deg, 80 deg]}");
-    expect_error(t, at(t, "range:"), "range");
+    expect_error(t, at(t, "range:"), "unknown key 'range' in parameter 'theta2'", "value, in");
   }
   SECTION("a range of three ends") {
     auto t = rod("theta2: 30 deg", "theta2: {value: 30 deg, in: [0, 40 deg, 80 deg]}");
