@@ -55,6 +55,12 @@ struct Parser {
                "write a smaller number, or give the value as a decimal with an exponent (e.g. 1e30)", at);
       }
     }
+    // any other base to an exponent beyond kMaxExponent, before GiNaC::pow: it evaluates
+    // (12 (l² − r²))^n as 12^n (l² − r²)^n, and 12^n with n = 10^29 never returns
+    if (GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_real() && abs(GiNaC::ex_to<numeric>(x)) > kMaxExponent &&
+        !(GiNaC::is_a<numeric>(b) && (b.is_zero() || abs(GiNaC::ex_to<numeric>(b)) == 1)))
+      fail("a power here has the exponent " + text_of(x) + ", too large for exact arithmetic",
+           "check the exponent: at most " + std::to_string(kMaxExponent) + " in size (no physical quantity needs more)", at);
     // 0 to a negative power: refused before GiNaC::pow, whose node would leak when its
     // evaluation throws the division by zero
     if (b.is_zero() && GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_real() && GiNaC::ex_to<numeric>(x).is_negative())

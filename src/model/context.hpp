@@ -18,7 +18,6 @@ using namespace GiNaC;
 /// billion-bit denominator): an integer exponent beyond 10^5, written or given by the parameters'
 /// values, is refused. @returns e. @throws InputError.
 inline ex guard_powers(const Model& m, const ex& e) {
-  static const numeric kMaxExponent(100000);
   std::optional<exmap> params, given;  // built once, and only for an exponent that is not a number
   for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
     if (!is_a<GiNaC::power>(*it)) continue;
@@ -36,10 +35,10 @@ inline ex guard_powers(const Model& m, const ex& e) {
       }
     }
     // any real exponent: GiNaC splits 0.5^(10^9 + 1/2) into an integer power and a root
-    if (!is_a<numeric>(n) || !ex_to<numeric>(n).is_real() || abs(ex_to<numeric>(n)) <= kMaxExponent) continue;
+    if (!is_a<numeric>(n) || !ex_to<numeric>(n).is_real() || abs(ex_to<numeric>(n)) <= expr::kMaxExponent) continue;
     // (the power itself is not printed: GiNaC's own printer orders its terms by addresses)
     throw InputError("a power here has the exponent " + text(n) + ", too large for exact arithmetic",
-                     "check the exponent: at most 100000 in size (no physical quantity needs more)");
+                     "check the exponent: at most " + std::to_string(expr::kMaxExponent) + " in size (no physical quantity needs more)");
   }
   return e;
 }

@@ -685,6 +685,15 @@ TEST_CASE("pathological expressions end with an error, not a hang or a crash", "
     auto t = rod("    mass: m\n", "    mass: m*10^10^10\n");
     expect_error(t, at(t, "^10^10"), "too large to compute exactly");
   }
+  SECTION("a claimed form whose power of a product with a number has a huge exponent (was a hang, 1.6 GB)") {
+    // GiNaC writes (12 l)^n as 12^n l^n: 12^(10^29) never returns; refused where it is written
+    const std::string n = "123456789012345678901234567890";
+    auto t = rod("form: sqrt(3*g*sin(theta2)/l)", "form: sqrt(3*g*sin(theta2)/l)*(12*l)^" + n + "/(12*l)^" + n);
+    expect_error(t, at(t, "(12*l)^" + n + "/", 6), "a power here has the exponent 12345678901234567..., too large for exact arithmetic", "at most 100000");
+    // a rational exponent too (GiNaC splits it into an integer power and a root)
+    auto t2 = rod("form: sqrt(3*g*sin(theta2)/l)", "form: sqrt(3*g*sin(theta2)/l)*(2*l)^(" + n + "/2)");
+    expect_error(t2, at(t2, "^(" + n), "too large for exact arithmetic");
+  }
   SECTION("100000 nested parentheses (was a stack overflow)") {
     auto t = rod("    mass: m\n", "    mass: " + std::string(100000, '(') + "m" + std::string(100000, ')') + "\n");
     auto e = error_of(t);

@@ -29,6 +29,12 @@ public:
   virtual GiNaC::ex at_state(const GiNaC::ex& e, const std::string& state) = 0;
 };
 
+/// The largest exponent an exact power may have: b^n costs time and memory in proportion to n
+/// (0.5^1000000000 has a billion-bit denominator, and GiNaC expands (2x)^n into 2^n x^n), and no
+/// physical quantity needs more. Refused where it is written, and again where a parameter's value
+/// makes it (model/context.hpp).
+constexpr long kMaxExponent = 100000;
+
 /// Parse one expression. @throws InputError with the 1-based column of the fault.
 GiNaC::ex parse(const std::string& text, Context& ctx);
 
