@@ -330,7 +330,7 @@ void confirm(Solution& s) {
   // is. A candidate where the solution's conditions fail, or where the scene with those numbers
   // has no solution (a user's root the motion does not take, a body that does not get there), is
   // passed over: outside the domain the closed forms hold in. Where no candidate is left, the
-  // residuals (at the model's own sample values) are all there is, and said so.
+  // closed forms are refused (confirmed nowhere).
   std::vector<Solution> done;
   std::vector<std::string> values;  // each sample's values, as text
   std::string skipped;  // why the first candidate passed over was
@@ -355,7 +355,7 @@ void confirm(Solution& s) {
       model::Parameter& p = at.model.params[i];
       const numeric v = model::Model::sample_value(p, 1, k);  // (stream 1: not the solve's choices')
       p.value = v;
-      const std::string unit = units::si_name(p.dim), text = numerics::format(v, model::Model::sample_digits(v)) + (unit.empty() ? "" : " " + unit);
+      const std::string unit = p.angle ? "rad" : units::si_name(p.dim), text = numerics::format(v, model::Model::sample_digits(v)) + (unit.empty() ? "" : " " + unit);
       shown += (shown.empty() ? "" : ", ") + p.name + " = " + text;
       for (auto& d : def.parameters)
         if (d.name == p.name) d.value.s = text;
@@ -401,12 +401,16 @@ void confirm(Solution& s) {
     done.push_back(std::move(weak[i]));
     values.push_back(weak_values[i]);
   }
+  // no sample inside the domain the closed forms hold in: they are confirmed nowhere (the
+  // model's own sample, where the solve made its choices, lies outside it too), so not printed
   if (done.empty()) {
-    confirm_numeric(s);
-    for (auto& c : s.confirmed)
-      c.note = (c.note.empty() ? "" : c.note + "; ") + "no sampled values of the parameters without values met the solution's conditions" +
-               (skipped.empty() ? "" : ": " + skipped);
-    return;
+    std::string names;
+    for (std::size_t i : free) names += (names.empty() ? "" : ", ") + s.model.params[i].name;
+    throw SceneError(s.model.analyses.front().pos,
+                     "the closed forms are confirmed nowhere: at none of the " + std::to_string(passed_over) + " sampled values of " + names +
+                         " does the scene have a solution that meets their conditions (first: " + skipped + ")",
+                     "give the parameters the range the problem means, e.g. 'theta0: {value: deg, in: [100 deg, 170 deg]}' "
+                     "(an angle is otherwise sampled in [0.2, 1.4] rad), or give them values");
   }
   // each analysis: the weakest way any sample confirmed it (simulation, the equations of motion,
   // residuals), its largest difference

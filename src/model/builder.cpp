@@ -216,6 +216,9 @@ private:
   /// `in: [lo, hi]` of parameter p: numbers in p's unit (an angle's bounds with their angle unit,
   /// `180 deg`), lo < hi, p's value inside; an unknown's range is its result's root choice.
   std::pair<ex, ex> parameter_range(const scene::ParameterDef& p, const Parameter& par) {
+    const auto kind = [](const units::Dimension& d) {
+      return d.dimensionless() ? std::string("a pure number (or an angle)") : "in " + units::si_name(d);
+    };
     if (par.unknown)
       throw SceneError(p.in_pos, "'in' gives the range of a parameter with or without a value, and '" + p.name + "' is an unknown",
                        "remove 'in', and choose the unknown's root on its result: 'root: {in: [lo, hi]}'");
@@ -229,9 +232,9 @@ private:
         throw SceneError(b.pos, std::string("the ") + end + " end of 'in' of parameter '" + p.name + "' is not a number",
                          "write a number with the parameter's unit, e.g. 'in: [0, 90 deg]'");
       if (q.unit.dim != par.dim)
-        throw SceneError(b.pos, std::string("the ") + end + " end of 'in' of parameter '" + p.name + "' has dimension " + q.unit.dim.str() +
-                                    ", and the parameter " + par.dim.str(),
-                         "write it in the parameter's unit");
+        throw SceneError(b.pos, std::string("the ") + end + " end of 'in' of parameter '" + p.name + "' is " + kind(q.unit.dim) + ", and the parameter " +
+                                    kind(par.dim),
+                         "write it with a unit of the parameter's kind" + (par.dim.dimensionless() ? std::string(" (a bare number)") : " (" + units::si_name(par.dim) + ")"));
       // a bare number is an angle in rad: said with its unit, as the parameter is (0 alone is plain)
       if (par.angle && q.unit.text.empty() && !q.si.is_zero())
         throw SceneError(b.pos, std::string("the ") + end + " end of 'in' of angle '" + p.name + "' has no unit",

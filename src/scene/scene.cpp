@@ -584,7 +584,7 @@ struct Loader {
           for (auto& [kk, vv] : v.entries)
             if (kk.scalar == "unit")
               throw SceneError(kk.pos, "parameter '" + k.scalar + "' takes its unit in its value, not under 'unit'",
-                               "write '" + k.scalar + ": {value: 5 kg}' (or '" + k.scalar + ": 5 kg')");
+                               "write the unit after the number: '" + k.scalar + ": {value: 5 kg}' (or '" + k.scalar + ": 5 kg')");
           only_keys(v, "parameter '" + k.scalar + "'", {"value", "in"});
           auto* val = v.get("value");
           auto* in = v.get("in");

@@ -214,3 +214,57 @@ TEST_CASE("symbolic scenes: a parameter's range 'in:' places its samples, and a 
   REQUIRE_THROWS_WITH(kt::solve_text(kt::edit(symbolize(kt::derivation("energy/collar_spring_least_speed.yaml")), "over: [-a, a]", "over: [a, -a]")),
                       Catch::Contains("the range of 's' is empty at the sampled values") && Catch::Contains("is not below its upper end"));
 }
+
+TEST_CASE("symbolic scenes: closed forms confirmed at no sample are refused, not printed", "[symbolic]") {
+  // a rod released past the upward vertical (100 deg < theta0 < 170 deg) falls counter-clockwise
+  // through q = pi; by hand w3^2 = 3 g sin(theta0)/L. With the range it solves, confirmed by
+  // simulation at samples inside it; without, theta0 is sampled in [0.2, 1.4] rad, where the rod
+  // falls the other way and never reaches q = pi: the forms are confirmed nowhere, and refused
+  const std::string rod = R"(title: Rod released from rest past the upward vertical
+description: >
+  Uniform slender rod OA, mass m, length L, pinned at O; q is the angle of OA from the x axis.
+  Released from rest at q = theta0 with 100 deg < theta0 < 170 deg (A up and to the left of O),
+  it falls counter-clockwise. Angular velocity as OA passes the left horizontal (q = pi) and the
+  downward vertical (q = 3 pi/2).
+  Hand: w3^2 = 3 g sin(theta0)/L, w2^2 = 3 g (1 + sin(theta0))/L.
+parameters:
+  m: kg
+  L: m
+  g: m/s^2
+  theta0: {value: deg, in: [100 deg, 170 deg]}
+points:
+  O: [0, 0]
+coordinates:
+  q: rad
+bodies:
+  rod:
+    mass: m
+    inertia: {slender_rod: L}
+    position: [L/2*cos(q), L/2*sin(q)]
+    angle: q
+    points: {O: [-L/2, 0], A: [L/2, 0]}
+effects:
+  gravity: {g: g}
+  pivot: {pin: [O, rod.O]}
+states:
+  1: {q: theta0, q_dot: 0}
+  3: {q: pi}
+  2: {q: 3*pi/2}
+analyses:
+  - energy: {from: 1, to: 3}
+  - energy: {from: 1, to: 2}
+find:
+  w3: {value: q_dot@3, root: positive}
+  w2: {value: q_dot@2, root: positive}
+  xA1: x(rod.A)@1
+)";
+  auto s = kt::solve_text(rod);
+  kinergy::confirm(s);
+  const GiNaC::ex th = kt::param(s.model, "theta0"), g = kt::param(s.model, "g"), L = kt::param(s.model, "L");
+  const GiNaC::exmap at{{th, GiNaC::numeric(23, 10)}, {g, GiNaC::numeric(981, 100)}, {L, GiNaC::numeric(3, 2)}};
+  CHECK(kt::value(kt::result(s, "w3").closed, at).to_double() == Approx(std::sqrt(3 * 9.81 * std::sin(2.3) / 1.5)).epsilon(1e-14));
+  CHECK(s.confirmed[0].by == kinergy::Confirmed::By::Simulation);
+  auto bare = kt::solve_text(kt::edit(rod, "theta0: {value: deg, in: [100 deg, 170 deg]}", "theta0: deg"));
+  REQUIRE_THROWS_WITH(kinergy::confirm(bare), Catch::Contains("the closed forms are confirmed nowhere: at none of the") &&
+                                                  Catch::Contains("does the scene have a solution that meets their conditions"));
+}

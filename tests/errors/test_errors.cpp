@@ -506,7 +506,7 @@ TEST_CASE("parameters: the range a parameter lies in, 'in: [lo, hi]'", "[errors]
   }
   SECTION("an end of another dimension") {
     auto t = rod("l: 1.2 m", "l: {value: 1.2 m, in: [1 m, 2 s]}");
-    expect_error(t, at(t, "2 s]"), "the upper end of 'in' of parameter 'l' has dimension", "in the parameter's unit");
+    expect_error(t, at(t, "2 s]"), "the upper end of 'in' of parameter 'l' is in s, and the parameter in m", "a unit of the parameter's kind (m)");
   }
   SECTION("an angle's end without its unit (180 would be 180 rad)") {
     auto t = rod("theta2: 30 deg", "theta2: {value: 30 deg, in: [0, 90]}");
