@@ -13,6 +13,7 @@
 // after another. Parallel solving is by processes (batch, multiprocessing, Dask). A thread
 // never waits for the core while it holds the GIL: the core's holder takes the GIL to check
 // for Ctrl-C (check_signals), and would wait for it for ever.
+#include <optional>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pythread.h>
@@ -136,16 +137,21 @@ struct PyScene {
   }
   // (in the core) the scene at a state ("" the first) as SVG; a parameter without a value at a
   // sample value, said in `samples`
-  std::string draw(const std::string& state, std::string& samples) const {
+  // (without a state: the first that fixes every coordinate, those before it in `left_out`)
+  std::string draw(const std::string& state, std::string& samples, std::vector<std::string>& left_out) const {
     model::Model m = model::Model::build(def);
     int st = 0;
     if (!state.empty()) {
       st = m.state_index(state);
       if (st < 0) throw InputError("there is no state '" + state + "'", "name a state of the scene's 'states'");
     }
-    if (def.analyses.empty()) return draw::scene_at(m, {}, draw::with_samples(m, m.parameter_values(), &samples), st).svg();
-    const Solution s = solve_scene(def);
-    return draw::scene_at(s.model, s.branch.sol, draw::with_samples(s.model, parameter_values(s), &samples), st).svg();
+    std::optional<Solution> s;
+    if (!def.analyses.empty()) s = solve_scene(def);
+    const model::Model& at = s ? s->model : m;
+    const GiNaC::exmap solved = s ? s->branch.sol : GiNaC::exmap{};
+    const GiNaC::exmap values = draw::with_samples(at, s ? parameter_values(*s) : m.parameter_values(), &samples);
+    if (state.empty()) return draw::first_drawable(at, solved, values, left_out).svg();
+    return draw::scene_at(at, solved, values, st).svg();
   }
 };
 
@@ -748,7 +754,9 @@ PYBIND11_MODULE(_kinergy, m) {
           [](const PyScene& s, const py::object& state) {
             const std::string st = state.is_none() ? std::string() : py::str(state).cast<std::string>();
             std::string samples;
-            std::string svg = in_core([&] { return s.draw(st, samples); });
+            std::vector<std::string> left_out;
+            std::string svg = in_core([&] { return s.draw(st, samples, left_out); });
+            for (auto& why : left_out) py::module_::import("warnings").attr("warn")("left out of the drawing: " + why);
             if (!samples.empty()) {
               py::module_::import("warnings").attr("warn")("drawn with sample values for the parameters that have none: " + samples +
                                                            " (give them with scene.set(NAME, VALUE))");
@@ -756,7 +764,8 @@ PYBIND11_MODULE(_kinergy, m) {
             return svg;
           },
           py::arg("state") = py::none(),
-          sig("draw(self, state=None)", "the scene at a state (the first by default) as SVG; a parameter without a value is drawn at a "
+          sig("draw(self, state=None)", "the scene at a state (by default the first that fixes every coordinate, the states before it named in a "
+                                        "warning) as SVG; a parameter without a value is drawn at a "
                                         "sample value (1 in SI units), with a warning that names it"))
       .def("__repr__",
            [](const PyScene& s) {
@@ -775,7 +784,8 @@ PYBIND11_MODULE(_kinergy, m) {
             std::string svg;
             std::string samples;  // (said under the picture in the HTML)
             try {
-              svg = in_core([&] { return s.draw("", samples); });
+              std::vector<std::string> left_out;  // (the first state drawn is named by its figure)
+              svg = in_core([&] { return s.draw("", samples, left_out); });
             } catch (const std::exception&) {
               return py::none();  // (a scene that cannot be drawn shows as its repr)
             }

@@ -77,9 +77,20 @@ def _cache(build):
     return out
 
 
-def _same_interpreter(a, b):
+def _configure_command(build, cache, executable):
+    """The CMake configuration the build directory needs for the interpreter `executable`, or None
+    where it has it. A directory configured for another interpreter — another venv, one since
+    deleted (recreating a venv is routine), or another Python — is configured again for this one:
+    FindPython's cached choice dropped (-U), the interpreter given; CMake then rebuilds only what
+    that changes (the module, where the headers differ)."""
+    if not cache:
+        return ["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DBUILD_TESTING=OFF", "-DPython_EXECUTABLE=" + executable]
+    # the interpreter FindPython took (CMakeLists.txt sets Python_EXECUTABLE without caching it)
+    configured = cache.get("_Python_EXECUTABLE") or cache.get("Python_EXECUTABLE")
     # a venv's python is a link to its base interpreter: the same headers, the same module
-    return bool(a) and bool(b) and os.path.realpath(a) == os.path.realpath(b)
+    if configured and os.path.exists(configured) and os.path.realpath(configured) == os.path.realpath(executable):
+        return None
+    return ["cmake", "-S", ROOT, "-B", build, "-U_Python_*", "-DPython_EXECUTABLE=" + executable]
 
 
 def _build_dir(config_settings):
@@ -97,14 +108,9 @@ def _run(cmd):
 def _compile(config_settings):
     """The package's files in the build directory, built for this interpreter: its path."""
     build = _build_dir(config_settings)[0]
-    cache = _cache(build)
-    # the interpreter FindPython took (CMakeLists.txt sets Python_EXECUTABLE without caching it)
-    configured = cache.get("_Python_EXECUTABLE") or cache.get("Python_EXECUTABLE")
-    if cache and not _same_interpreter(configured, sys.executable):
-        raise RuntimeError("the build directory %s was configured for the Python %s, not for %s: give another (KINERGY_BUILD_DIR)"
-                           % (build, configured, sys.executable))
-    if not cache:
-        _run(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DBUILD_TESTING=OFF", "-DPython_EXECUTABLE=" + sys.executable])
+    configure = _configure_command(build, _cache(build), sys.executable)
+    if configure:
+        _run(configure)
     jobs = str(os.cpu_count() or 1)
     _run(["cmake", "--build", build, "--target", "kinergy_python", "-j", jobs])
     package = os.path.join(build, "python", NAME)

@@ -254,7 +254,7 @@ struct DrawCommand {
   void add(CLI::App& app) {
     auto* draw = app.add_subcommand("draw", "draw the scene at a state from its model: bodies, points, supports, springs, forces");
     draw->add_option("SCENE", scene, "scene file (YAML)")->required();
-    draw->add_option("--state", draw_state, "the state to draw (default: the first; 'all': every state side by side)");
+    draw->add_option("--state", draw_state, "the state to draw (default: the first that fixes every coordinate, those before it said as left out; 'all': every state side by side)");
     draw->add_option("--figure", draw_figure, "figure N of the worked solution (kinergy derive --pdf numbers them): the scene at its states, "
                                               "an impulse-momentum diagram")
         ->check(CLI::Range(1, 1000000));
@@ -302,8 +302,10 @@ struct DrawCommand {
       }
       const GiNaC::exmap solved = sol ? sol->branch.sol : GiNaC::exmap{};
       std::vector<std::string> left_out;
-      const kinergy::draw::Sheet sheet = states.size() == 1 ? kinergy::draw::Sheet(kinergy::draw::scene_at(m, solved, values, states[0]))
-                                                            : kinergy::draw::states_at(m, solved, values, states, &left_out);
+      // by default the first state that can be drawn, those before it said as left out
+      const kinergy::draw::Sheet sheet = draw_state.empty() ? kinergy::draw::Sheet(kinergy::draw::first_drawable(m, solved, values, left_out))
+                                         : states.size() == 1 ? kinergy::draw::Sheet(kinergy::draw::scene_at(m, solved, values, states[0]))
+                                                              : kinergy::draw::states_at(m, solved, values, states, &left_out);
       if (sheet.size() == 0)
         throw kinergy::SceneError({scene, 1, 1}, "no state of the scene fixes every coordinate, so none can be drawn",
                                   "give every coordinate at one state at least");

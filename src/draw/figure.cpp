@@ -930,6 +930,20 @@ Figure scene_at(const model::Model& m, const exmap& solved, const exmap& params,
   return drawing(m, at, glyph_for(m, at));
 }
 
+Figure first_drawable(const model::Model& m, const exmap& solved, const exmap& params, std::vector<std::string>& left_out) {
+  std::optional<SceneError> first;
+  for (std::size_t i = 0; i < m.states.size(); ++i) {
+    try {
+      return scene_at(m, solved, params, static_cast<int>(i));
+    } catch (const SceneError& e) {
+      if (!first) first = e;
+      left_out.push_back(e.problem());
+    }
+  }
+  if (first) throw *first;
+  throw SceneError(m.analyses.empty() ? SourcePos{} : m.analyses.front().pos, "the scene has no states to draw", "add a state with every coordinate");
+}
+
 Sheet states_at(const model::Model& m, const exmap& solved, const exmap& params, const std::vector<int>& states,
                 std::vector<std::string>* left_out) {
   std::vector<std::pair<int, At>> ats;

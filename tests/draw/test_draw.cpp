@@ -191,6 +191,52 @@ TEST_CASE("kinergy draw --state all: the states side by side at one scale, each 
   CHECK(out.find("data-panel=\"3\"") == std::string::npos);
 }
 
+TEST_CASE("kinergy draw without --state: the first state that fixes every coordinate, those before it said (issue 44, item 10)", "[draw][cli]") {
+  // a disk sliding while it spins: state 1 gives its place and rates but not its angle
+  const std::string scene = R"(title: A disk spinning as it slides
+parameters:
+  m: 2 kg
+  r: 0.1 m
+  mu: 0.2
+  g: 9.81 m/s^2
+coordinates:
+  x: m
+  phi: rad
+bodies:
+  disk: {mass: m, inertia: {disk: r}, position: [x, r], angle: phi}
+effects:
+  gravity: {g: g}
+states:
+  1: {x: 0, x_dot: 3 m/s, phi_dot: 0}
+  2: {x: 1 m, phi: 0, phi_dot: 0}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  v2: {value: x_dot@2, root: positive, unit: m/s}
+)";
+  const std::string file = kt::written("kinergy-draw-first", "nofix", scene);
+  int st = 0;
+  std::string out = kt::run_cli("draw " + file, st);
+  INFO(out);
+  CHECK(st == 0);
+  CHECK(out.find("left out of the drawing: state '1' does not fix phi, so it cannot be drawn") != std::string::npos);
+  CHECK(out.find("<svg") != std::string::npos);
+  // state 2 itself, the same figure
+  const auto s = kt::solve_text(scene);
+  std::vector<std::string> left_out;
+  const std::string first = kinergy::draw::first_drawable(s.model, s.branch.sol, s.model.parameter_values(), left_out).svg();
+  CHECK(first == kinergy::draw::scene_at(s.model, s.branch.sol, s.model.parameter_values(), 1).svg());
+  CHECK(left_out.size() == 1);
+  // named, state 1 is still refused, saying why
+  out = kt::run_cli("draw " + file + " --state 1", st);
+  CHECK(st == 1);
+  CHECK(out.find("state '1' does not fix phi, so it cannot be drawn") != std::string::npos);
+  // where no state fixes every coordinate, the first state's reason
+  out = kt::run_cli("draw " + kt::written("kinergy-draw-first", "none", kt::edit(scene, "phi: 0, phi_dot: 0}", "phi_dot: 0}")), st);
+  CHECK(st == 1);
+  CHECK(out.find("state '1' does not fix phi") != std::string::npos);
+}
+
 TEST_CASE("kinergy draw -o FILE.tex: a TikZ picture that pdflatex compiles", "[draw][cli][latex]") {
   const auto dir = std::filesystem::temp_directory_path() / "kinergy-draw-tex";
   std::filesystem::create_directories(dir);

@@ -198,6 +198,11 @@ double glyph_for(const model::Model& m, const At& at);
 /// effect as it draws itself. @throws SceneError when the state does not fix a coordinate.
 Figure scene_at(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int state);
 
+/// The scene at the first state that fixes every coordinate (given or solved): what `draw`
+/// shows without a state named. Each state before it is left out, and why is added to
+/// `left_out`. @throws the first state's SceneError where no state can be drawn.
+Figure first_drawable(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, std::vector<std::string>& left_out);
+
 /// The scene at each of `states` side by side, at one scale and with one glyph size, each titled
 /// "state NAME". A state that does not fix a coordinate is left out, and why is added to
 /// `left_out`; without `left_out` it throws that SceneError.
