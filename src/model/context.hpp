@@ -160,6 +160,25 @@ public:
       if (args.size() == 2) return m_.angular_momentum(m_.point(args[0]), {body(args[1])});
       return m_.angular_momentum(m_.point(one("P")));
     }
+    if (f == "I" || f == "k") {
+      // the moment of inertia about the mass centre, Ī, or about a point P by the parallel-axis
+      // theorem, I_P = Ī + m d², d = |r_P − r_G| (at a state where P is not on the body); the
+      // radius of gyration k = √(I/m)
+      if (args.empty() || args.size() > 2)
+        throw InputError(f + " takes a body and, optionally, a point, not " + std::to_string(args.size()) + " arguments",
+                         "write " + f + "(rod) about its mass centre, or " + f + "(rod, O) about a point");
+      const Body& B = m_.bodies[static_cast<std::size_t>(body(args[0]))];
+      ex I = B.inertia;
+      if (args.size() == 2) {
+        const auto [xp, yp] = m_.position(m_.point(args[1]));
+        const ex dx = xp - B.x, dy = yp - B.y;
+        I = I + B.mass * trig_simplify(dx * dx + dy * dy);
+      }
+      if (f == "I") return I;
+      if (B.mass.is_zero())
+        throw InputError("'" + args[0] + "' is a light body (no mass): it has no radius of gyration", "ask for I(" + args[0] + ") instead");
+      return sqrt(I / B.mass);
+    }
     if (f == "px" || f == "py") {
       std::vector<int> set;
       if (args.empty())
@@ -207,7 +226,8 @@ public:
     throw InputError("unknown function '" + f + "'",
                      "use T, V, T(body), omega(body), alpha(body), x(P), y(P), vx(P), vy(P), speed(P), ax(P), ay(P), a(P), "
                      "Rx(pin), Ry(pin), R(pin), N(track), F(constraint), power(effect), "
-                     "H(P), H(P, body), px, py, impulse(effect, S1, S2), impulse_x, impulse_y, loss(contact, S1, S2), force(effect, S1, S2) "
+                     "H(P), H(P, body), I(body), I(body, P), k(body), px, py, impulse(effect, S1, S2), impulse_x, impulse_y, loss(contact, S1, S2), "
+                     "force(effect, S1, S2) "
                      "or a math function");
   }
 

@@ -314,3 +314,58 @@ bodies:
   ex hand = 2 * x * xd * sin(th) + x * x * cos(th) * thd - a * w0 * sin(w0 * m.t);
   CHECK(kt::symbolically_zero(m.rate(e) - hand));
 }
+
+TEST_CASE("the moment of inertia and the radius of gyration as results: I(body), I(body, P), k(body) (issue 44, item 5)", "[model][inertia]") {
+  // By hand: a slender rod of mass m = 3 kg, length L = 1.2 m, pinned at its end O, swinging from
+  // theta = 0: Ī = m L²/12 = 0.36 kg·m², about its end m L²/3 = 1.44 kg·m² (parallel axis:
+  // Ī + m (L/2)²), k = L/√12 = 0.34641 m, about O k_O = L/√3 = 0.69282 m; a disk of mass 2 kg,
+  // radius 0.25 m: Ī = m r²/2 = 0.0625, about a rim point 3 m r²/2 = 0.1875 kg·m²; H_O = I_O ω.
+  const std::string scene = R"Y(title: inertia results
+parameters:
+  m: 3 kg
+  L: 1.2 m
+  md: 2 kg
+  r: 0.25 m
+  g: 9.81 m/s^2
+points:
+  O: [0, 0]
+coordinates:
+  theta: rad
+bodies:
+  rod: {mass: m, inertia: {slender_rod: L}, position: [L/2*sin(theta), -L/2*cos(theta)], angle: theta - pi/2, points: {O: [-L/2, 0]}}
+  wheel: {mass: md, inertia: {disk: r}, position: [3*L, 0], points: {E: [r, 0]}}
+effects:
+  gravity: {g: g}
+  pivot: {pin: [O, rod.O]}
+states:
+  1: {theta: 0, theta_dot: 5 rad/s}
+  2: {theta: 1}
+analyses:
+  - energy: {from: 1, to: 2}
+find:
+  I_G: {value: I(rod), unit: kg*m^2}
+  I_end: {value: "I(rod, rod.O)", unit: kg*m^2}
+  I_O: {value: "I(rod, O)@2", unit: kg*m^2}
+  k_G: {value: k(rod), unit: m}
+  k_O: {value: "k(rod, O)@1", unit: m}
+  I_rim: {value: "I(wheel, wheel.E)", unit: kg*m^2}
+  H_ratio: {value: "H(O, rod)@1/theta_dot@1", unit: kg*m^2}
+)Y";
+  auto s = kt::solve_text(scene);
+  auto v = [&](const char* n) { return kt::result(s, n).si->to_double(); };
+  CHECK(v("I_G") == Approx(3 * 1.44 / 12).epsilon(1e-14));
+  CHECK(v("I_end") == Approx(3 * 1.44 / 3).epsilon(1e-14));
+  CHECK(v("I_O") == Approx(3 * 1.44 / 3).epsilon(1e-14));
+  CHECK(v("k_G") == Approx(1.2 / std::sqrt(12.0)).epsilon(1e-14));
+  CHECK(v("k_O") == Approx(1.2 / std::sqrt(3.0)).epsilon(1e-14));
+  CHECK(v("I_rim") == Approx(1.5 * 2 * 0.0625).epsilon(1e-14));
+  CHECK(v("H_ratio") == Approx(v("I_O")).epsilon(1e-14));
+  CHECK(kt::symbolically_zero(kt::result(s, "I_end").closed - kt::param(s.model, "m") * GiNaC::pow(kt::param(s.model, "L"), 2) / 3));
+  // what is refused: no body, three arguments, a light body's radius of gyration
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "value: I(rod), unit", "value: I(bar), unit")), Catch::Contains("no body named 'bar'"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "value: I(rod), unit", "value: \"I(rod, O, O)\", unit")),
+                    Catch::Contains("I takes a body and, optionally, a point, not 3 arguments"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(kt::edit(scene, "md: 2 kg", "md: 0 kg"), "  I_rim: {value: \"I(wheel, wheel.E)\", unit: kg*m^2}\n",
+                                            "  k_w: {value: k(wheel), unit: m}\n")),
+                    Catch::Contains("'wheel' is a light body (no mass): it has no radius of gyration"));
+}
