@@ -789,6 +789,12 @@ void outline(const At& at, const std::string& shape_name, const std::vector<ex>&
     case model::Outline::Rect:
       f.polyline({world(-a / 2, -bb / 2), world(a / 2, -bb / 2), world(a / 2, bb / 2), world(-a / 2, bb / 2)}, Ink::Body, true, true);
       break;
+    case model::Outline::EdgeOn: {
+      // a plate seen edge-on: a thin rectangle along its axis, a glyph thick
+      const double half = shape.span * a / 2, t = f.glyph() * 0.3;
+      f.polyline({world(-half, -t), world(half, -t), world(half, t), world(-half, t)}, Ink::Body, true, true);
+      break;
+    }
     case model::Outline::Dot: {
       // a particle: a small block, turned with its angle
       const double g = f.glyph();
@@ -823,6 +829,13 @@ void dimensions(const At& at, const std::string& shape_name, const std::vector<e
       auto [x3, y3] = world(a / 2, bb / 2);
       f.dimension(x1, y1, x2, y2, size_text(0));
       if (sizes.size() > 1) f.dimension(x2, y2, x3, y3, size_text(1));
+      break;
+    }
+    case model::Outline::EdgeOn: {
+      // its width (a rectangular plate), or its radius from the centre (a circular one)
+      auto [x1, y1] = world(shape.span == 1 ? -a / 2 : 0, 0);
+      auto [x2, y2] = world(a * (shape.span == 1 ? 0.5 : 1.0), 0);
+      f.dimension(x1, y1, x2, y2, size_text(0));
       break;
     }
     case model::Outline::Dot:

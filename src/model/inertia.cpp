@@ -20,6 +20,13 @@ const std::vector<InertiaShape>& inertia_shapes() {
       {"hoop", 1, false, "a hoop", [](const ex& m, const Sizes& a) { return m * pow(a[0], 2); }, Outline::Round},              // m r²
       {"plate", 2, false, "a rectangular plate",
        [](const ex& m, const Sizes& a) { return m * (pow(a[0], 2) + pow(a[1], 2)) / 12; }, Outline::Rect},          // m (a² + b²)/12
+      // a thin plate turning about an axis in its own plane, seen edge-on (a trapdoor, a plate
+      // falling flat): about a centreline, b its width across the axis; about a diameter of a
+      // circular plate of radius r. About an edge: pin it there (Ī + m (b/2)² = m b²/3)
+      {"plate_edge_on", 1, false, "a rectangular plate turning about a centreline in its plane",
+       [](const ex& m, const Sizes& a) { return m * pow(a[0], 2) / 12; }, Outline::EdgeOn, 1},                      // m b²/12
+      {"disk_edge_on", 1, false, "a circular plate turning about a diameter",
+       [](const ex& m, const Sizes& a) { return m * pow(a[0], 2) / 4; }, Outline::EdgeOn, 2},                       // m r²/4
       {"sphere", 1, false, "a sphere", [](const ex& m, const Sizes& a) { return 2 * m * pow(a[0], 2) / 5; }, Outline::Round},   // 2 m r²/5
       {"spherical_shell", 1, false, "a spherical shell",
        [](const ex& m, const Sizes& a) { return 2 * m * pow(a[0], 2) / 3; }, Outline::Round},                       // 2 m r²/3

@@ -9,8 +9,10 @@
 #include <filesystem>
 #include <functional>
 #include <random>
+#include <cmath>
 
 #include "../support/helpers.hpp"
+#include "kinergy/confirm/confirm.hpp"
 
 using namespace GiNaC;
 using kinergy::model::Model;
@@ -145,6 +147,8 @@ TEST_CASE("a body pinned at distance d from G: T = 1/2 (Ibar + m d^2) omega^2 fo
       {"{hoop: r}", "hoop", [&](const Model& m) { return P(m, "m") * pow(P(m, "r"), 2); }},
       {"{plate: [a, b]}", "plate",
        [&](const Model& m) { return P(m, "m") * (pow(P(m, "a"), 2) + pow(P(m, "b"), 2)) / 12; }},
+      {"{plate_edge_on: b}", "plate edge-on", [&](const Model& m) { return P(m, "m") * pow(P(m, "b"), 2) / 12; }},
+      {"{disk_edge_on: r}", "circular plate edge-on", [&](const Model& m) { return P(m, "m") * pow(P(m, "r"), 2) / 4; }},
       {"{sphere: r}", "sphere", [&](const Model& m) { return 2 * P(m, "m") * pow(P(m, "r"), 2) / 5; }},
       {"{spherical_shell: r}", "spherical shell",
        [&](const Model& m) { return 2 * P(m, "m") * pow(P(m, "r"), 2) / 3; }},
@@ -271,4 +275,45 @@ bodies:
   for (unsigned i = 0; i < 3; ++i)
     for (unsigned j = 0; j < 3; ++j)
       if (i != j) CHECK(M(i, j).is_zero());
+}
+
+TEST_CASE("a plate turning about an axis in its plane, hinged at an edge: plate_edge_on, disk_edge_on (issue 44, item 4)", "[model][kinetic][inertia]") {
+  // By hand: a trapdoor (width b across its hinge) falls from theta0 = 80 deg to flat:
+  // m g (b/2) sin(theta0) = (1/2)(m b^2/12 + m b^2/4) w^2, w = sqrt(3 g sin(theta0)/b); a circular
+  // plate hinged on a tangent at its rim: I = m r^2/4 + m r^2 = 5 m r^2/4, w = sqrt(8 g sin(theta0)/(5 r))
+  const std::string door = R"(title: A trapdoor falls shut
+parameters:
+  m: 12 kg
+  b: 0.8 m
+  g: 9.81 m/s^2
+points:
+  O: [0, 0]
+coordinates:
+  theta: rad
+bodies:
+  door:
+    mass: m
+    inertia: {plate_edge_on: b}
+    position: [b/2*cos(theta), b/2*sin(theta)]
+    angle: theta
+    points: {O: [-b/2, 0]}
+effects:
+  gravity: {g: g}
+  hinge: {pin: [O, door.O]}
+states:
+  open: {theta: 80 deg, theta_dot: 0}
+  shut: {theta: 0}
+analyses:
+  - energy: {from: open, to: shut}
+find:
+  w: {value: theta_dot@shut, root: negative, unit: rad/s}
+)";
+  const double s80 = std::sin(80 * M_PI / 180);
+  auto s = kt::solve_text(door);
+  kinergy::confirm(s);
+  CHECK(kt::result(s, "w").si->to_double() == Approx(-std::sqrt(3 * 9.81 * s80 / 0.8)).epsilon(1e-13));
+  CHECK(s.confirmed[0].by == kinergy::Confirmed::By::Simulation);
+  auto c = kt::solve_text(kt::edit(kt::edit(kt::edit(door, "{plate_edge_on: b}", "{disk_edge_on: b}"), "b/2*cos(theta), b/2*sin(theta)", "b*cos(theta), b*sin(theta)"),
+                                   "points: {O: [-b/2, 0]}", "points: {O: [-b, 0]}"));
+  CHECK(kt::result(c, "w").si->to_double() == Approx(-std::sqrt(8 * 9.81 * s80 / (5 * 0.8))).epsilon(1e-13));
 }

@@ -11,7 +11,9 @@ namespace kinergy::model {
 /// How a body of that shape is drawn (src/draw): a bar of length a[0] along its x axis, a round
 /// body of radius a[0] with a line showing its angle, a dashed circle of its radius of gyration
 /// a[0] (its true outline unknown), an a[0] × a[1] rectangle, or a dot.
-enum class Outline { Bar, Round, Gyration, Rect, Dot };
+/// How a shape is drawn: Bar a line of its first size; EdgeOn a plate seen edge-on (turning about
+/// an axis in its plane), a thick line `span` times its first size long.
+enum class Outline { Bar, Round, Gyration, Rect, Dot, EdgeOn };
 
 struct InertiaShape {
   std::string name;
@@ -21,6 +23,7 @@ struct InertiaShape {
   /// Ī from the mass and the sizes
   std::function<GiNaC::ex(const GiNaC::ex& m, const std::vector<GiNaC::ex>& a)> inertia;
   Outline outline = Outline::Dot;
+  double span = 1;  ///< EdgeOn: its drawn length over its first size (2 for a circular plate's radius)
 };
 
 /// The table of shapes (src/model/inertia.cpp), in the order messages list them.
