@@ -287,12 +287,21 @@ void confirm_numeric(Solution& s) {
 }
 
 
-/// The parameters a closed form holds without a value (not solved for): the sampled ones.
+/// The parameters without a value (not solved for): the sampled ones (the simulation needs each
+/// that the scene uses, a mass that cancels from the results too).
 std::vector<std::size_t> free_parameters(const model::Model& m) {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < m.params.size(); ++i)
     if (m.params[i].without_value() && !m.params[i].ranged) out.push_back(i);
   return out;
+}
+
+/// Does a result or a condition of s hold parameter p? (One that none holds — a length that only
+/// places the drawing, a mass that cancels — is sampled for the simulation, but the closed forms
+/// are not said to be confirmed at values of it.)
+bool in_closed_forms(const Solution& s, const model::Parameter& p) {
+  return std::any_of(s.results.begin(), s.results.end(), [&](const Result& r) { return r.closed.has(p.sym); }) ||
+         std::any_of(s.valid_where.begin(), s.valid_where.end(), [&](const principles::Condition& c) { return c.e.has(p.sym); });
 }
 
 /// The closed forms of `at` (its parameters given a sample) against the scene solved with those
@@ -415,7 +424,8 @@ void confirm(Solution& s) {
   // each analysis: the weakest way any sample confirmed it (simulation, the equations of motion,
   // residuals), its largest difference
   std::string names;
-  for (std::size_t i : free) names += (names.empty() ? "" : ", ") + s.model.params[i].name;
+  for (std::size_t i : free)
+    if (in_closed_forms(s, s.model.params[i])) names += (names.empty() ? "" : ", ") + s.model.params[i].name;
   s.confirmed.clear();
   for (std::size_t j = 0; j < done.front().confirmed.size(); ++j) {
     Confirmed c = done.front().confirmed[j];
@@ -426,7 +436,7 @@ void confirm(Solution& s) {
       else if (o.by == c.by) c.difference = std::max(c.difference, o.difference);
     }
     c.sampled = names;
-    c.samples = values;
+    if (!names.empty()) c.samples = values;  // (none that the closed forms hold: as a numeric scene's)
     // the static friction a rolling contact needs along the way: at those values only
     if (std::find(s.friction_along.begin(), s.friction_along.end(), c.analysis) != s.friction_along.end())
       c.note = (c.note.empty() ? "" : c.note + "; ") + "the static friction of the rolling along the way holds at these values; at others it is not checked";
