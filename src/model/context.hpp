@@ -108,15 +108,7 @@ public:
                          std::string("write ") + f + "(" + what + ")");
       return args[0];
     };
-    auto body = [&](const std::string& n) {
-      int b = m_.body_index(n);
-      if (b < 0) {
-        std::string near = nearest(n, m_.bodies);
-        throw InputError("no body named '" + n + "'",
-                         near.empty() ? "name a body of the scene" : "did you mean '" + near + "'?");
-      }
-      return b;
-    };
+    auto body = [&](const std::string& n) { return body_index(n); };
     if (f == "T") {
       if (args.empty()) return m_.kinetic_energy();
       // T(string): the tension of a cord (no body has the name), as N(string)
@@ -160,25 +152,7 @@ public:
       if (args.size() == 2) return m_.angular_momentum(m_.point(args[0]), {body(args[1])});
       return m_.angular_momentum(m_.point(one("P")));
     }
-    if (f == "I" || f == "k") {
-      // the moment of inertia about the mass centre, Ī, or about a point P by the parallel-axis
-      // theorem, I_P = Ī + m d², d = |r_P − r_G| (at a state where P is not on the body); the
-      // radius of gyration k = √(I/m)
-      if (args.empty() || args.size() > 2)
-        throw InputError(f + " takes a body and, optionally, a point, not " + std::to_string(args.size()) + " arguments",
-                         "write " + f + "(rod) about its mass centre, or " + f + "(rod, O) about a point");
-      const Body& B = m_.bodies[static_cast<std::size_t>(body(args[0]))];
-      ex I = B.inertia;
-      if (args.size() == 2) {
-        const auto [xp, yp] = m_.position(m_.point(args[1]));
-        const ex dx = xp - B.x, dy = yp - B.y;
-        I = I + B.mass * trig_simplify(dx * dx + dy * dy);
-      }
-      if (f == "I") return I;
-      if (B.mass.is_zero())
-        throw InputError("'" + args[0] + "' is a light body (no mass): it has no radius of gyration", "ask for I(" + args[0] + ") instead");
-      return sqrt(I / B.mass);
-    }
+    if (f == "I" || f == "k") return inertia(f, args);
     if (f == "px" || f == "py") {
       std::vector<int> set;
       if (args.empty())
@@ -229,6 +203,36 @@ public:
                      "H(P), H(P, body), I(body), I(body, P), k(body), px, py, impulse(effect, S1, S2), impulse_x, impulse_y, loss(contact, S1, S2), "
                      "force(effect, S1, S2) "
                      "or a math function");
+  }
+
+  /// The body named n. @throws InputError naming the nearest body where there is none.
+  int body_index(const std::string& n) const {
+    int b = m_.body_index(n);
+    if (b < 0) {
+      std::string near = nearest(n, m_.bodies);
+      throw InputError("no body named '" + n + "'", near.empty() ? "name a body of the scene" : "did you mean '" + near + "'?");
+    }
+    return b;
+  }
+
+  /// I(body [, P]) and k(body [, P]): the moment of inertia about the mass centre, Ī, or about a
+  /// point P by the parallel-axis theorem, I_P = Ī + m d², d = |r_P − r_G| (at a state where P is
+  /// not on the body); the radius of gyration k = √(I/m).
+  ex inertia(const std::string& f, const std::vector<std::string>& args) const {
+    if (args.empty() || args.size() > 2)
+      throw InputError(f + " takes a body and, optionally, a point, not " + std::to_string(args.size()) + " arguments",
+                       "write " + f + "(rod) about its mass centre, or " + f + "(rod, O) about a point");
+    const Body& B = m_.bodies[static_cast<std::size_t>(body_index(args[0]))];
+    ex I = B.inertia;
+    if (args.size() == 2) {
+      const auto [xp, yp] = m_.position(m_.point(args[1]));
+      const ex dx = xp - B.x, dy = yp - B.y;
+      I = I + B.mass * trig_simplify(dx * dx + dy * dy);
+    }
+    if (f == "I") return I;
+    if (B.mass.is_zero())
+      throw InputError("'" + args[0] + "' is a light body (no mass): it has no radius of gyration", "ask for I(" + args[0] + ") instead");
+    return sqrt(I / B.mass);
   }
 
   /// What a support pushes with at an instant (kinetics at a state): a pin's Rx, Ry on its first
