@@ -114,33 +114,13 @@ def test_derivation_drawing_and_notebook_views():
         solution.derive("pdf")
 
 
-SLIDING_SPINNING_DISK = """title: A disk spinning as it slides
-parameters:
-  m: 2 kg
-  r: 0.1 m
-  mu: 0.2
-  g: 9.81 m/s^2
-coordinates:
-  x: m
-  phi: rad
-bodies:
-  disk: {mass: m, inertia: {disk: r}, position: [x, r], angle: phi}
-effects:
-  gravity: {g: g}
-states:
-  1: {x: 0, x_dot: 3 m/s, phi_dot: 0}
-  2: {x: 1 m, phi: 0, phi_dot: 0}
-analyses:
-  - energy: {from: 1, to: 2}
-find:
-  v2: {value: x_dot@2, root: positive, unit: m/s}
-"""
+SLIDING_SPINNING_DISK = os.path.join(ROOT, "tests", "data", "disk_spins_as_it_slides.yaml")
 
 
 def test_draw_without_a_state_takes_the_first_that_fixes_every_coordinate():
     # state 1 gives the disk's place and rates, not its angle: state 2 is drawn, and a warning
     # says why state 1 was left out (issue 44, item 10)
-    scene = kinergy.loads(SLIDING_SPINNING_DISK)
+    scene = kinergy.load(SLIDING_SPINNING_DISK)
     with pytest.warns(UserWarning, match="state '1' does not fix phi"):
         svg = scene.draw()
     assert svg == scene.draw(state="2")

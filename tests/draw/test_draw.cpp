@@ -193,27 +193,7 @@ TEST_CASE("kinergy draw --state all: the states side by side at one scale, each 
 
 TEST_CASE("kinergy draw without --state: the first state that fixes every coordinate, those before it said (issue 44, item 10)", "[draw][cli]") {
   // a disk sliding while it spins: state 1 gives its place and rates but not its angle
-  const std::string scene = R"(title: A disk spinning as it slides
-parameters:
-  m: 2 kg
-  r: 0.1 m
-  mu: 0.2
-  g: 9.81 m/s^2
-coordinates:
-  x: m
-  phi: rad
-bodies:
-  disk: {mass: m, inertia: {disk: r}, position: [x, r], angle: phi}
-effects:
-  gravity: {g: g}
-states:
-  1: {x: 0, x_dot: 3 m/s, phi_dot: 0}
-  2: {x: 1 m, phi: 0, phi_dot: 0}
-analyses:
-  - energy: {from: 1, to: 2}
-find:
-  v2: {value: x_dot@2, root: positive, unit: m/s}
-)";
+  const std::string scene = kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/tests/data/disk_spins_as_it_slides.yaml");
   const std::string file = kt::written("kinergy-draw-first", "nofix", scene);
   int st = 0;
   std::string out = kt::run_cli("draw " + file, st);
