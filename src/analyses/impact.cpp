@@ -40,7 +40,8 @@ void section(emit::Sections& w, int k, const model::Analysis& a, const principle
       if (e.stick) {
         intro.push_back(W(" and "));
         intro.push_back(M(it->second.second));
-        intro.push_back(W(" along the tangent (rough: no sliding after)"));
+        intro.push_back(W(e.lodged ? " along the tangent (" + e.b.text + " embeds in " + e.a.text + ": they move together after)"
+                                   : std::string(" along the tangent (rough: no sliding after)")));
       }
     }
   }

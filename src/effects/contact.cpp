@@ -18,6 +18,7 @@ public:
   bool stick = false;  ///< rough: no sliding after the impact
   std::vector<std::size_t> holds;  ///< plastic and rough: r_b − r_a = 0 (x, y) once it has struck
   int turns = -1;                  ///< the body whose surface it is (its n̂ turns with it), −1: fixed
+  bool lodged = false;             ///< `lodges: true`: b embeds in a, held both ways from its impact on
 
   /// J n̂ + Jt t̂ on b, −that on a, in impacts
   std::optional<model::Reaction> reaction(const Model&) const override;
@@ -28,6 +29,7 @@ std::optional<model::Reaction> Contact::reaction(const Model&) const {
   model::Reaction r = model::Reaction::contact(a, b, nx, ny, e, stick);
   r.holds = holds;
   r.turns = turns;
+  r.lodged = lodged;
   return r;
 }
 
@@ -61,7 +63,7 @@ std::shared_ptr<Effect> read_contact(EffectReader& r, const EffectDef& ed) {
   if (!ed.arg.is_list() || ed.arg.items.size() != 2)
     throw SceneError(ed.arg.pos, "a contact names two parties",
                      "write 'contact: [ball, bar.Q]' (body points, bodies, fixed points or ground)");
-  r.only(ed, {"normal", "e", "tangential", "surface"});
+  r.only(ed, {"normal", "e", "tangential", "surface", "lodges"});
   c->a = r.party(ed.arg.items[0]);
   c->b = r.party(ed.arg.items[1]);
   if (c->a.body < 0 && c->b.body < 0)
@@ -76,14 +78,26 @@ std::shared_ptr<Effect> read_contact(EffectReader& r, const EffectDef& ed) {
   // n̂ = n / |n|
   c->nx = nx / sqrt(n2);
   c->ny = ny / sqrt(n2);
-  const scene::Node& en = r.option(ed, "e", "0.5");
-  c->e = r.quantity(r.text_of(en, "e", "0.5"), false, Dimension{}, "e", "a coefficient of restitution is a pure number");
+  // `lodges: true`: b embeds in a (a bullet in a block) — plastic (e = 0) and rough, and it holds
+  // both ways from then on; e and tangential are then not written
+  if (const scene::Node* lo = ed.options.get("lodges")) {
+    if (!lo->is_scalar() || (lo->scalar != "true" && lo->scalar != "false"))
+      throw SceneError(lo->pos, "'lodges' must be true or false", "write 'lodges: true' for a body that embeds in the other (a bullet in a block)");
+    c->lodged = lo->scalar == "true";
+    for (const char* k : {"e", "tangential"})
+      if (const scene::Node* x = ed.options.get(k); x && c->lodged)
+        throw SceneError(x->pos, std::string("contact '") + ed.name + "' lodges, which is e: 0 and tangential: stick already; '" + k + "' is not written beside it",
+                         std::string("remove '") + k + "'");
+  }
+  const scene::Node& en = c->lodged ? ed.arg : r.option(ed, "e", "0.5");
+  c->e = c->lodged ? ex(0) : r.quantity(r.text_of(en, "e", "0.5"), false, Dimension{}, "e", "a coefficient of restitution is a pure number");
   if (auto v = r.value_of(c->e, en.pos, "the coefficient of restitution"); v && (v->is_negative() || *v > 1))
     throw SceneError(r.value_place(c->e, en.pos),
                      "the coefficient of restitution of '" + ed.name + "' is " + model::text(*v) + ", outside [0, 1]",
                      std::string("give ") +
                          (GiNaC::is_a<GiNaC::symbol>(c->e) ? "'" + model::text(c->e) + "' a value" : std::string("e")) +
                          " between 0 (plastic: the parties move together) and 1 (elastic)");
+  if (c->lodged) c->stick = true;
   if (auto* tg = ed.options.get("tangential")) {
     if (!tg->is_scalar() || (tg->scalar != "stick" && tg->scalar != "smooth"))
       throw SceneError(tg->pos, "'tangential' must be stick or smooth",
@@ -95,6 +109,9 @@ std::shared_ptr<Effect> read_contact(EffectReader& r, const EffectDef& ed) {
   //   x_b − x_a = 0,  y_b − y_a = 0   from the state its impact ends at (Model::closed_from)
   const auto ev = r.value_of(c->e, en.pos, "the coefficient of restitution");
   const bool stays = c->stick && ev && ev->is_zero() && c->a.body != c->b.body && !c->a.ground && !c->b.ground;
+  if (c->lodged && !stays)
+    throw SceneError(ed.arg.pos, "contact '" + ed.name + "' lodges: one body embeds in another at a point, and its parties are not two (a body and another body or a fixed point)",
+                     "name a body or body point on each side, or a fixed point: 'contact: [block, bullet]' (the ground is a line, not a point to embed at)");
   const scene::Node* sn = ed.options.get("surface");
   if (sn) {
     if (!stays)

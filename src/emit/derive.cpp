@@ -374,9 +374,13 @@ private:
       const int S = m_.closed_from(e);
       if (S < 0) continue;
       const std::string turns = r->turns >= 0 ? "it turns with " + m_.bodies[static_cast<std::size_t>(r->turns)].name + ", whose surface it is" : "it stays as written";
-      para({W("From state " + m_.states[static_cast<std::size_t>(S)].name + " on, the contact " + e.name +
-              " (plastic and rough) holds " + r->b.text + " at " + r->a.text + ", as a pin that can only push along its normal (" + turns +
-              "): while its push N >= 0, its point keeps its place, with its rate:")});
+      if (r->lodged)
+        para({W("From state " + m_.states[static_cast<std::size_t>(S)].name + " on, " + r->b.text + " is embedded in " + r->a.text + " (contact " + e.name +
+                " lodges): it moves with it, held both ways, its point keeping its place, with its rate:")});
+      else
+        para({W("From state " + m_.states[static_cast<std::size_t>(S)].name + " on, the contact " + e.name +
+                " (plastic and rough) holds " + r->b.text + " at " + r->a.text + ", as a pin that can only push along its normal (" + turns +
+                "): while its push N >= 0, its point keeps its place, with its rate:")});
       relation_rows(r->holds);
     }
     if (m_.bodies.size() > 1) {

@@ -354,7 +354,7 @@ Model::Contact Model::contact(int i) const {
   const Effect& e = effects[static_cast<std::size_t>(i)];
   auto r = e.reaction(*this);
   if (!r || r->kind != Reaction::Kind::Contact) throw std::logic_error("effect '" + e.name + "' is not a contact");
-  return {e.name, e.pos, r->a, r->b, r->dir_x, r->dir_y, r->e, r->stick};
+  return {e.name, e.pos, r->a, r->b, r->dir_x, r->dir_y, r->e, r->stick, r->lodged};
 }
 
 bool Model::is_contact(const Effect& e) const {

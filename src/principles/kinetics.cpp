@@ -599,7 +599,7 @@ OneSidedLimits one_sided_limits(const Model& m) {
   for (std::size_t ei = 0; ei < m.effects.size(); ++ei) {
     const model::Effect& e = m.effects[ei];
     const auto r = e.reaction(m);
-    const bool contact = r && r->kind == Reaction::Kind::Contact && !r->holds.empty();
+    const bool contact = r && r->kind == Reaction::Kind::Contact && !r->holds.empty() && !r->lodged;  // (a lodged body holds both ways)
     if (!r || !(contact || (r->kind == Reaction::Kind::Track && r->one_sided))) continue;
     const model::PointRef& pushed = contact && r->b.body >= 0 ? r->b : r->a;
     const std::string body = pushed.body >= 0 ? m.bodies[static_cast<std::size_t>(pushed.body)].name : pushed.text;

@@ -323,11 +323,16 @@ static std::pair<ex, ex> pin_impact_impulse(const Model& m, const Effect& e, con
   int bi = r.b.body >= 0 ? r.b.body : r.a.body;
   if (bi < 0) throw InputError("pin '" + e.name + "' joins no body", "pin a body point to a point");
   const model::Body& B = m.bodies[static_cast<std::size_t>(bi)];
-  for (auto& c : m.constraints)
+  for (std::size_t k = 0; k < m.constraints.size(); ++k) {
+    const auto& c = m.constraints[k];
+    // (a contact that closes in this impact holds its parties from the state after it on: its
+    // relations carry no impulse here beside the contact's own)
+    if (!m.constraint_at(k, an.from, true)) continue;
     for (auto& co : m.coords)
       if (c.first.has(co.q) && (B.x.has(co.q) || B.y.has(co.q) || B.angle.has(co.q)))
         throw InputError("the impulse of pin '" + e.name + "' cannot be told apart from the constraint impulses on '" + B.name + "'",
                          "describe the body's motion with coordinates that need no constraint");
+  }
   for (std::size_t j = 0; j < m.effects.size(); ++j) {
     const Effect& o = m.effects[j];
     if (static_cast<int>(j) != self && holds(m, o, bi))

@@ -53,6 +53,7 @@ void load_terms(const model::Model& m, const model::Effect& e, int self, Equatio
     c.normal = linear_rate(m, (vbx - vax) * r->dir_x + (vby - vay) * r->dir_y);
     c.tangent = linear_rate(m, -(vbx - vax) * r->dir_y + (vby - vay) * r->dir_x);
     if (r->stick && r->turns >= 0) c.turn = m.bodies[static_cast<std::size_t>(r->turns)].angle;
+    c.lodged = r->lodged;
     eq.contacts.push_back(c);
   }
   if (const model::Blow* j = e.blow()) {

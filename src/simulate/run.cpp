@@ -689,7 +689,7 @@ private:
       }
       const double N = p_.push(k, lam.data() + p_.contact_row(k));
       if (!p_.eq.contacts[k].surface) {
-        ev.push_back(N);
+        ev.push_back(p_.eq.contacts[k].lodged ? 1.0 : N);  // (a lodged body never lets go)
         continue;
       }
       surface_scale_[k] = std::max(surface_scale_[k], std::fabs(N));
@@ -1060,7 +1060,7 @@ private:
       for (std::size_t k = 0; k < row.size(); ++k) row[k] = p_.contact_row(k);
       bool changed = false;
       for (std::size_t k = 0; k < p_.eq.contacts.size(); ++k) {
-        if (p_.cmode[k] != ContactMode::Rest) continue;
+        if (p_.cmode[k] != ContactMode::Rest || p_.eq.contacts[k].lodged) continue;
         if (p_.push(k, p_.lambda.data() + row[k]) < 0) {
           p_.cmode[k] = ContactMode::Open;
           changed = true;

@@ -84,6 +84,8 @@ const std::vector<Row> kTable = {
   {"contact", "e", "impact", "e: {contact: [W, block], normal: [1, 0], e: 1}", true, ""},
   {"contact", "tangential", "impact", "e: {contact: [W, block], normal: [1, 0], e: 0.5, tangential: stick}", true, "residuals"},
   {"contact", "e", "energy", "e: {contact: [W, block], normal: [1, 0], e: 0.5}", true, ""},
+  {"contact", "lodges", "impact", "e: {contact: [W, block], normal: [1, 0], lodges: true}", true, "residuals"},
+  {"contact", "lodges", "impact", "e: {contact: [W, block], normal: [1, 0], lodges: true, e: 0}", false, "'e' is not written beside it"},
   {"impulse", "J", "impact", "e: {impulse: block, J: [-J0, 0]}", true, ""},
   {"impulse", "J", "momentum", "e: {impulse: block, J: [J0, 0]}", true, ""},
   {"cord_pull", "P", "energy", "e: {cord_pull: [block, A], P: F0}", true, ""},

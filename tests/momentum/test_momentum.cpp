@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "../support/helpers.hpp"
 #include "kinergy/common/error.hpp"
 #include "kinergy/confirm/confirm.hpp"
+#include "kinergy/emit/derive.hpp"
 #include "kinergy/problem.hpp"
 
 namespace fs = std::filesystem;
@@ -1350,4 +1352,31 @@ TEST_CASE("impulse-momentum diagram: the support the coordinates imply under a b
     CHECK(GiNaC::ex_to<GiNaC::numeric>(n->push.Fy.subs(c.model.numeric_environment()).evalf()).to_double() == Approx(5 * 9.81).epsilon(1e-12));
   }
   CHECK(sets == 1);
+}
+
+TEST_CASE("a bullet that lodges: 'lodges: true' embeds it, and the bar and bullet swing up together (issue 44, item 6)", "[momentum][impact][lodges]") {
+  // By hand: angular momentum about O through the impact, m v0 d = (M L^2/3 + m d^2) w, and the
+  // swing, (1/2) I_O w^2 = g (M L/2 + m d)(1 - cos th)
+  const std::string text = kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/tests/data/bullet_lodges_in_bar.yaml");
+  auto s = kt::solve_text(text);
+  kinergy::confirm(s);
+  const double m = 0.02, M = 5, L = 1.2, d = 0.9, v0 = 400, g = 9.81;
+  const double I = M * L * L / 3 + m * d * d, w = m * v0 * d / I;
+  CHECK(kt::result(s, "omega").si->to_double() == Approx(w).epsilon(1e-13));
+  CHECK(kt::result(s, "theta_max").si->to_double() == Approx(std::acos(1 - I * w * w / (2 * g * (M * L / 2 + m * d)))).epsilon(1e-12));
+  REQUIRE(s.confirmed.size() == 2);
+  CHECK(s.confirmed[0].by == kinergy::Confirmed::By::Simulation);
+  CHECK(s.confirmed[1].by == kinergy::Confirmed::By::Simulation);
+  // the worked solution says it embeds (and draws the pin's impulse on the bar: no internal error)
+  std::string derived = kinergy::emit::text(kinergy::emit::derive(s));
+  derived = std::regex_replace(derived, std::regex("\\s+"), " ");  // (the text is wrapped)
+  CHECK(derived.find("bullet is embedded in bar.Q (contact hit lodges): it moves with it, held both ways") != std::string::npos);
+  CHECK(derived.find("(bullet embeds in bar.Q: they move together after)") != std::string::npos);
+  // the same as e: 0, tangential: stick where the bar only pushes the bullet; written beside
+  // lodges, refused; lodges on the ground (a line, no point to embed at), refused
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(text, "lodges: true", "lodges: true, e: 0")),
+                    Catch::Contains("contact 'hit' lodges, which is e: 0 and tangential: stick already; 'e' is not written beside it"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(text, "lodges: true", "lodges: maybe")), Catch::Contains("'lodges' must be true or false"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(text, "contact: [bar.Q, bullet]", "contact: [ground, bullet]")),
+                    Catch::Contains("contact 'hit' lodges: one body embeds in another at a point"));
 }

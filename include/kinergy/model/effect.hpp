@@ -116,6 +116,9 @@ struct Reaction {
   /// whose surface it is: a wheel's rim on a corner; −1: fixed, a ground surface).
   std::vector<std::size_t> holds;
   int turns = -1;
+  /// `lodges: true`: b embeds in a at the impact (a bullet in a block) and holds both ways from
+  /// then on — no push checked, never let go (a contact that stays closed otherwise only pushes).
+  bool lodged = false;
   SourcePos limit_pos;  ///< where `mu_s` is written
   /// The names of its unknowns over a duration: Rx, Ry (pin), N (track), J (relation); a
   /// contact has none (it acts in impacts only).

@@ -276,6 +276,7 @@ public:
     PointRef a, b;
     ex nx, ny, e;
     bool stick = false;
+    bool lodged = false;  ///< `lodges: true`: b embeds in a
   };
   Contact contact(int i) const;
   /// Is effect e a contact (an impact party)?

@@ -63,6 +63,8 @@ struct ContactTerm {
   /// normal turns with the body whose surface it is: that body's angle (0: a fixed surface). Its
   /// push is N = λ_n cos Δ + λ_t sin Δ, Δ the angle turned since it came to rest.
   ex turn = 0;
+  /// Lodged (`lodges: true`): once at rest it never lets go, whatever its push.
+  bool lodged = false;
 };
 
 /// A given impulse J at a point (acts once, at the first instant).
