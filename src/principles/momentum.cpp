@@ -302,11 +302,17 @@ void check_constraints(const Model& m, const Analysis& a) {
     if (!touches || (all_in && coupled.size() >= 2)) continue;
     std::string names;
     for (int b : coupled) names += (names.empty() ? "" : ", ") + m.bodies[b].name;
+    // the effect to declare, spelled out: its parties, and where it acts — for moments about a
+    // place, that place (a cable that leaves a drum there has no moment about it)
+    const model::PointRef* P = a.about();
+    const std::string at = P && (P->body < 0 || P->world_place) ? "[" + model::text(P->wx) + ", " + model::text(P->wy) + "]" : "[x, y]";
+    const std::string between = coupled.size() == 1 ? "[" + names + ", ground]" : "[" + names + "]";
     throw SceneError(a.pos, "the constraint '" + model::text(c) + " = 0' (line " + std::to_string(pos.line) + ") pushes on " + names +
                                 " with a force this " + a.kind + " analysis cannot include (" +
-                                (coupled.size() == 1 ? "a contact with the ground, such as rolling" : "a cord, a gear or a link to a body outside it") + ")",
-                     "name it as an effect so that its reaction is an unknown ('NAME: {constraint: \"" + model::text(c) +
-                         " = 0\", between: [A, B], at: [x, y]}', removed from 'constraints:')" +
+                                (coupled.size() == 1 ? "a contact with the ground, such as rolling, or a cable the body climbs" : "a cord, a gear or a link to a body outside it") + ")",
+                     "declare it as an effect so that its force is an unknown, and remove it from 'constraints:': 'cable: {constraint: \"" + model::text(c) +
+                         " = 0\", between: " + between + ", at: " + at + "}' (at: where it acts on " + names +
+                         (P && (P->body < 0 || P->world_place) ? ", here the point moments are taken about, where its moment is zero" : "") + ")" +
                          (coupled.size() == 1 ? std::string(", or use an energy analysis")
                                               : ", list every body it couples in 'bodies' (" + names + "), or use an energy analysis"));
   }

@@ -15,6 +15,7 @@
 #include "kinergy/problem.hpp"
 #include "kinergy/scene/scene.hpp"
 #include "../support/scene_errors.hpp"
+#include "../support/helpers.hpp"
 
 using Catch::Matchers::Contains;
 
@@ -669,5 +670,28 @@ TEST_CASE("impulse_x, impulse and loss over states no analysis joins, of the wro
   SECTION("the impulse of gravity in an impact") {
     auto t = edit(kBar, "find:\n", "find:\n  G: {value: \"impulse(gravity, before, after)\", unit: N*s}\n");
     expect_error(t, at(t, "impulse(gravity"), "effect 'gravity' (gravity) has no impulse to report between states before and after");
+  }
+}
+
+TEST_CASE("a drum that climbs its cable, the cable written under 'constraints:': the refusal spells out the effect to declare (issue 44, item 3)",
+          "[errors][momentum]") {
+  // Meriam 6/15 as a user writes it: y = r phi under constraints, moments about the cable's point
+  std::string text = kt::derivation("momentum/drum_climbs_cable.yaml");
+  text = text.substr(0, text.find("expect:"));
+  text = kt::edit(text, "  cable: {constraint: \"y = r*phi\", between: [drum, ground], at: [-r, y]}\n", "");
+  text = kt::edit(text, "effects:\n", "constraints:\n  - y = r*phi\neffects:\n");
+  text = kt::edit(text, "  T: {value: \"impulse(cable, 1, 2)/(t@2 - t@1)\", unit: N}\n", "");
+  try {
+    kt::solve_text(text);
+    FAIL("solved");
+  } catch (const kinergy::SceneError& e) {
+    CHECK_THAT(e.problem(), Catch::Contains("the constraint '-r*phi+y = 0' (line 25) pushes on drum with a force this angular_momentum analysis cannot include"));
+    CHECK_THAT(e.fix(), Catch::Contains("'cable: {constraint: \"-r*phi+y = 0\", between: [drum, ground], at: [-r, y]}'"));
+    // the fix as written: by hand, angular momentum about the cable's point C over t1,
+    // (Mc - m g r) t1 = m (k^2 + r^2) w2, w2 = 3 (80 - 20*9.81*0.3)/(20 (0.0625 + 0.09)) = 20.7934 rad/s
+    const std::string fix = e.fix();
+    const auto a = fix.find("'cable: "), b = fix.find("}'", a);
+    auto s = kt::solve_text(kt::edit(kt::edit(text, "constraints:\n  - y = r*phi\n", ""), "effects:\n", "effects:\n  " + fix.substr(a + 1, b - a) + "\n"));
+    CHECK(kt::result(s, "omega2").si->to_double() == Approx(3 * (80 - 20 * 9.81 * 0.3) / (20 * (0.0625 + 0.09))).epsilon(1e-13));
   }
 }
