@@ -1,3 +1,4 @@
+#include "kinergy/print/plain.hpp"
 #include "kinergy/principles/momentum.hpp"
 
 #include <algorithm>
@@ -307,10 +308,10 @@ void check_constraints(const Model& m, const Analysis& a) {
     const model::PointRef* P = a.about();
     const std::string at = P && (P->body < 0 || P->world_place) ? "[" + model::text(P->wx) + ", " + model::text(P->wy) + "]" : "[x, y]";
     const std::string between = coupled.size() == 1 ? "[" + names + ", ground]" : "[" + names + "]";
-    throw SceneError(a.pos, "the constraint '" + model::text(c) + " = 0' (line " + std::to_string(pos.line) + ") pushes on " + names +
+    throw SceneError(a.pos, "the constraint '" + emit::plain(c) + " = 0' (line " + std::to_string(pos.line) + ") pushes on " + names +
                                 " with a force this " + a.kind + " analysis cannot include (" +
                                 (coupled.size() == 1 ? "a contact with the ground, such as rolling, or a cable the body climbs" : "a cord, a gear or a link to a body outside it") + ")",
-                     "declare it as an effect so that its force is an unknown, and remove it from 'constraints:': 'cable: {constraint: \"" + model::text(c) +
+                     "declare it as an effect so that its force is an unknown, and remove it from 'constraints:': 'cable: {constraint: \"" + emit::plain(c) +
                          " = 0\", between: " + between + ", at: " + at + "}' (at: where it acts on " + names +
                          (P && (P->body < 0 || P->world_place) ? ", here the point moments are taken about, where its moment is zero" : "") + ")" +
                          (coupled.size() == 1 ? std::string(", or use an energy analysis")
@@ -617,6 +618,8 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
   };
   ex I = 0;
   std::vector<std::pair<std::string, ex>> moments;  // the known moments about P, for the positions
+  std::vector<std::pair<std::string, ex>> claimed;  // with `conserved: true`: each known moment about P, and their sum
+  ex claimed_total = 0;
   std::string blocked;                                // why not every push's moment is a known function of t
   for (auto& e : m.effects) {
     for (auto& p : pushes(m, e, a, k)) {
@@ -644,11 +647,15 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         Mp = on_guided ? moment_on_guided(*on_guided, p.arm_x, p.arm_y, p.Fx, p.Fy, p.M)
                                        : model::trig_simplify(p.M + cross(p.arm_x - px, p.arm_y - py, p.Fx, p.Fy));
         if (vanishes(m, Mp)) continue;
-        if (a.conserved)
-          throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about()->text + " is not conserved between " +
-                                      state_pair(m, a) + ": effect '" + e.name + "' has a moment about " + a.about()->text + " (" +
-                                      model::text(Mp) + ")",
-                           "remove 'conserved: true' so its angular impulse is included, or take moments about another point");
+        // a conservation claim is judged on the total over the set (two equal and opposite
+        // couples written as two effects cancel), below
+        if (a.conserved) {
+          auto it = std::find_if(claimed.begin(), claimed.end(), [&](const auto& x) { return x.first == e.name; });
+          if (it == claimed.end()) claimed.push_back({e.name, Mp});
+          else it->second += Mp;  // (one effect on several bodies: gravity)
+          claimed_total += Mp;
+          continue;
+        }
         if (!motion_free(m, Mp))
           throw SceneError(e.pos, "the moment of '" + e.name + "' about " + a.about()->text + " changes with the motion (" + model::text(Mp) +
                                       "); its angular impulse has no closed form",
@@ -658,13 +665,23 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         how = "integral of M dt";
       }
       if (In.is_zero()) continue;
-      if (a.conserved)
+      if (a.conserved && p.unknown)
         throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about()->text + " is not conserved between " +
                                     state_pair(m, a) + ": effect '" + e.name + "' has a moment about " + a.about()->text,
                          "remove 'conserved: true' so its angular impulse is included, or take moments about another point");
       c.impulses.push_back({e.name, In, how, kind_of(p)});
       I += In;
     }
+  }
+  // Σ M_P over the set = 0: the claim holds (the moments cancel); else it is refused, naming them
+  if (a.conserved && !claimed.empty() && !vanishes(m, model::trig_simplify(claimed_total))) {
+    std::string which;
+    for (auto& [name, Mp] : claimed) which += (which.empty() ? "" : ", ") + ("'" + name + "' (" + emit::plain(model::trig_simplify(Mp)) + ")");
+    const std::string why = claimed.size() == 1 ? "effect '" + claimed[0].first + "' has a moment about " + a.about()->text + " (" + emit::plain(model::trig_simplify(claimed[0].second)) + ")"
+                                                : "the moments about " + a.about()->text + " of " + which + " do not add up to zero";
+    throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about()->text + " is not conserved between " +
+                                state_pair(m, a) + ": " + why,
+                     "remove 'conserved: true' so their angular impulse is included, or take moments about another point");
   }
   out.supported = supported;
   // H_P ≡ 0 with no moment about P (a body moving along a line through P): 0 = 0 says nothing

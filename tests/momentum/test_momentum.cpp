@@ -1380,3 +1380,43 @@ TEST_CASE("a bullet that lodges: 'lodges: true' embeds it, and the bar and bulle
   CHECK_THROWS_WITH(kt::solve_text(kt::edit(text, "contact: [bar.Q, bullet]", "contact: [ground, bullet]")),
                     Catch::Contains("contact 'hit' lodges: one body embeds in another at a point"));
 }
+
+TEST_CASE("a conservation claim judged on the total over the set: equal and opposite couples written as two effects (issue 44, item 2)",
+          "[momentum][conserved]") {
+  // By hand: the couples cancel over table and ring, so I1 w0 = (I1 + I2) w, I1 = m1 r1^2/2 = 1.25,
+  // I2 = m2 r2^2 = 0.32, w = 1.25*4/1.57 = 3.18471 rad/s. Couples that do not cancel are refused,
+  // naming both with their moments.
+  const std::string text = R"(title: A ring dropped on a turntable, the friction between them written as two couples
+parameters:
+  m1: 10 kg
+  r1: 0.5 m
+  m2: 2 kg
+  r2: 0.4 m
+  w0: 4 rad/s
+  Mf: 2 N*m
+points:
+  O: [0, 0]
+coordinates:
+  phi1: rad
+  phi2: rad
+bodies:
+  table: {mass: m1, inertia: {disk: r1}, position: [0, 0], angle: phi1}
+  ring: {mass: m2, inertia: {ring: r2}, position: [0, 0], angle: phi2}
+effects:
+  axle: {pin: [O, table]}
+  on_table: {couple: table, M: -Mf}
+  on_ring: {couple: ring, M: Mf}
+states:
+  1: {t: 0, phi1: 0, phi2: 0, phi1_dot: w0, phi2_dot: 0}
+  2: {where: [phi1_dot = phi2_dot]}
+analyses:
+  - angular_momentum: {from: 1, to: 2, about: O, conserved: true}
+find:
+  w: {value: phi1_dot@2, unit: rad/s}
+)";
+  auto s = kt::solve_text(text);
+  kinergy::confirm(s);
+  CHECK(kt::result(s, "w").si->to_double() == Approx(1.25 * 4 / 1.57).epsilon(1e-14));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(text, "M: Mf}", "M: 2*Mf}")),
+                    Catch::Contains("is not conserved between states 1 -> 2: the moments about O of 'on_table' (-Mf), 'on_ring' (2*Mf) do not add up to zero"));
+}
