@@ -596,6 +596,19 @@ void show_supports(const Model& m, const std::vector<Guided>& guided, const std:
 
 }  // namespace
 
+/// A claim `conserved: true` about P, judged on the total over the set: Σ M_P = 0 holds (equal
+/// and opposite couples written as two effects cancel); else refused, naming each effect's moment.
+static void conserved_total(const Model& m, const Analysis& a, const std::vector<std::pair<std::string, ex>>& claimed, const ex& total) {
+  if (claimed.empty() || vanishes(m, model::trig_simplify(total))) return;
+  std::string which;
+  for (auto& [name, Mp] : claimed) which += (which.empty() ? "" : ", ") + ("'" + name + "' (" + emit::plain(model::trig_simplify(Mp)) + ")");
+  const std::string why = claimed.size() == 1 ? "effect '" + claimed[0].first + "' has a moment about " + a.about()->text + " (" +
+                                                    emit::plain(model::trig_simplify(claimed[0].second)) + ")"
+                                              : "the moments about " + a.about()->text + " of " + which + " do not add up to zero";
+  throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about()->text + " is not conserved between " + state_pair(m, a) + ": " + why,
+                   "remove 'conserved: true' so their angular impulse is included, or take moments about another point");
+}
+
 MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
   check_constraints(m, a);
   MomentumBalance out;
@@ -673,16 +686,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       I += In;
     }
   }
-  // Σ M_P over the set = 0: the claim holds (the moments cancel); else it is refused, naming them
-  if (a.conserved && !claimed.empty() && !vanishes(m, model::trig_simplify(claimed_total))) {
-    std::string which;
-    for (auto& [name, Mp] : claimed) which += (which.empty() ? "" : ", ") + ("'" + name + "' (" + emit::plain(model::trig_simplify(Mp)) + ")");
-    const std::string why = claimed.size() == 1 ? "effect '" + claimed[0].first + "' has a moment about " + a.about()->text + " (" + emit::plain(model::trig_simplify(claimed[0].second)) + ")"
-                                                : "the moments about " + a.about()->text + " of " + which + " do not add up to zero";
-    throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about()->text + " is not conserved between " +
-                                state_pair(m, a) + ": " + why,
-                     "remove 'conserved: true' so their angular impulse is included, or take moments about another point");
-  }
+  if (a.conserved) conserved_total(m, a, claimed, claimed_total);
   out.supported = supported;
   // H_P ≡ 0 with no moment about P (a body moving along a line through P): 0 = 0 says nothing
   if (vanishes(m, H) && I.is_zero())
