@@ -422,6 +422,34 @@ void show_line_supports(const Model& m, const Analysis& a, MomentumBalance& out)
 
 }  // namespace
 
+/// A claim `conserved: true`, judged on the total over the set: Σ M_P = 0 about P (Σ F·n = 0 along
+/// n) holds — equal and opposite couples (or forces) written as two effects cancel; else refused,
+/// naming each effect with its moment (force): `single` says one ("has a moment about O ("), `noun`
+/// several ("moments about O").
+static void conserved_total(const Model& m, const Analysis& a, const std::vector<std::pair<std::string, ex>>& claimed, const ex& total,
+                            const std::string& head, const std::string& single, const std::string& noun, const std::string& unknown = "") {
+  const std::string fix = "remove 'conserved: true' so their impulse is included, or choose another direction or point";
+  if (claimed.empty() || vanishes(m, model::trig_simplify(total))) {
+    // (an unknown impulse breaks the claim whatever the rest: said after the known ones)
+    if (!unknown.empty()) throw SceneError(a.pos, head + " is not conserved between " + state_pair(m, a) + ": " + unknown, fix);
+    return;
+  }
+  std::string which;
+  for (auto& [name, v] : claimed) which += (which.empty() ? "" : ", ") + ("'" + name + "' (" + emit::plain(model::trig_simplify(v)) + ")");
+  const std::string why = claimed.size() == 1 ? "effect '" + claimed[0].first + "' " + single + emit::plain(model::trig_simplify(claimed[0].second)) + ")"
+                                              : "the " + noun + " of " + which + " do not add up to zero";
+  throw SceneError(a.pos, head + " is not conserved between " + state_pair(m, a) + ": " + why, fix);
+}
+
+/// Adds an effect's known moment (force) to a conservation claim's list (one effect on several
+/// bodies, gravity, summed) and to the total.
+static void claim(std::vector<std::pair<std::string, ex>>& claimed, ex& total, const std::string& name, const ex& v) {
+  auto it = std::find_if(claimed.begin(), claimed.end(), [&](const auto& x) { return x.first == name; });
+  if (it == claimed.end()) claimed.push_back({name, v});
+  else it->second += v;
+  total += v;
+}
+
 MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
   MomentumBalance out;
   out.conserved = a.conserved;
@@ -474,6 +502,9 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
     c.after = m.bind(L, a.to);
     ex I = 0;
     std::vector<std::pair<std::string, ex>> forces;  // the known forces along n, for the positions
+    std::vector<std::pair<std::string, ex>> claimed;  // with `conserved: true`: each known force along n, and their sum
+    ex claimed_total = 0;
+    std::string unknown_along;  // with `conserved: true`: the first unknown impulse along n
     std::string blocked;                               // why not every push along n is a known function of t
     for (auto& e : m.effects) {
       for (auto& p : pushes(m, e, a, k)) {
@@ -491,11 +522,11 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
         } else {
           const ex Fn = model::trig_simplify(dot(p.Fx, p.Fy, nx, ny));
           if (vanishes(m, Fn)) continue;
-          if (a.conserved)
-            throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
-                                        state_pair(m, a) + ": effect '" + e.name + "' has an impulse along it (its force along " + name + " is " +
-                                        model::text(Fn) + ")",
-                             "remove 'conserved: true' so its impulse is included, or choose another direction");
+          // (a conservation claim is judged on the total over the set, below)
+          if (a.conserved) {
+            claim(claimed, claimed_total, e.name, Fn);
+            continue;
+          }
           if (!motion_free(m, Fn))
             throw SceneError(e.pos, "the force of '" + e.name + "' along " + name + " changes with the motion; its impulse has no closed form",
                              "use an energy analysis, or a force that is constant or a function of t");
@@ -504,14 +535,17 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
           how = "integral of F dt";
         }
         if (In.is_zero()) continue;
-        if (a.conserved)
-          throw SceneError(a.pos, "linear momentum of " + set_name(m, a) + " along " + name + " is not conserved between " +
-                                      state_pair(m, a) + ": effect '" + e.name + "' has an impulse " + model::text(In),
-                           "remove 'conserved: true' so its impulse is included, or choose another direction");
+        if (a.conserved) {
+          if (unknown_along.empty()) unknown_along = "effect '" + e.name + "' has an impulse " + emit::plain(In);
+          continue;
+        }
         c.impulses.push_back({e.name, In, how, kind_of(p)});
         I += In;
       }
     }
+    if (a.conserved)
+      conserved_total(m, a, claimed, claimed_total, "linear momentum of " + set_name(m, a) + " along " + name,
+                      "has an impulse along it (its force along " + name + " is ", "forces along " + name, unknown_along);
     c.equation = {c.before + I, c.after, a.conserved ? "conservation of linear momentum" : "linear impulse-momentum",
                   std::string(a.conserved ? "conservation of linear momentum" : "linear impulse-momentum") + " along " + name + ", " +
                       state_pair(m, a),
@@ -596,18 +630,6 @@ void show_supports(const Model& m, const std::vector<Guided>& guided, const std:
 
 }  // namespace
 
-/// A claim `conserved: true` about P, judged on the total over the set: Σ M_P = 0 holds (equal
-/// and opposite couples written as two effects cancel); else refused, naming each effect's moment.
-static void conserved_total(const Model& m, const Analysis& a, const std::vector<std::pair<std::string, ex>>& claimed, const ex& total) {
-  if (claimed.empty() || vanishes(m, model::trig_simplify(total))) return;
-  std::string which;
-  for (auto& [name, Mp] : claimed) which += (which.empty() ? "" : ", ") + ("'" + name + "' (" + emit::plain(model::trig_simplify(Mp)) + ")");
-  const std::string why = claimed.size() == 1 ? "effect '" + claimed[0].first + "' has a moment about " + a.about()->text + " (" +
-                                                    emit::plain(model::trig_simplify(claimed[0].second)) + ")"
-                                              : "the moments about " + a.about()->text + " of " + which + " do not add up to zero";
-  throw SceneError(a.pos, "angular momentum of " + set_name(m, a) + " about " + a.about()->text + " is not conserved between " + state_pair(m, a) + ": " + why,
-                   "remove 'conserved: true' so their angular impulse is included, or take moments about another point");
-}
 
 MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowledge& k) {
   check_constraints(m, a);
@@ -663,10 +685,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
         // a conservation claim is judged on the total over the set (two equal and opposite
         // couples written as two effects cancel), below
         if (a.conserved) {
-          auto it = std::find_if(claimed.begin(), claimed.end(), [&](const auto& x) { return x.first == e.name; });
-          if (it == claimed.end()) claimed.push_back({e.name, Mp});
-          else it->second += Mp;  // (one effect on several bodies: gravity)
-          claimed_total += Mp;
+          claim(claimed, claimed_total, e.name, Mp);
           continue;
         }
         if (!motion_free(m, Mp))
@@ -686,7 +705,9 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
       I += In;
     }
   }
-  if (a.conserved) conserved_total(m, a, claimed, claimed_total);
+  if (a.conserved)
+    conserved_total(m, a, claimed, claimed_total, "angular momentum of " + set_name(m, a) + " about " + a.about()->text,
+                    "has a moment about " + a.about()->text + " (", "moments about " + a.about()->text);
   out.supported = supported;
   // H_P ≡ 0 with no moment about P (a body moving along a line through P): 0 = 0 says nothing
   if (vanishes(m, H) && I.is_zero())

@@ -1419,4 +1419,37 @@ find:
   CHECK(kt::result(s, "w").si->to_double() == Approx(1.25 * 4 / 1.57).epsilon(1e-14));
   CHECK_THROWS_WITH(kt::solve_text(kt::edit(text, "M: Mf}", "M: 2*Mf}")),
                     Catch::Contains("is not conserved between states 1 -> 2: the moments about O of 'on_table' (-Mf), 'on_ring' (2*Mf) do not add up to zero"));
+  // linear momentum alike: two blocks pushed apart by P each way, written as two forces; by hand
+  // mB vB = P t1 = 6 N*s on B alone, and mA vA + mB vB = 0: vA = -3 m/s, vB = 2 m/s
+  const std::string blocks = R"Y(title: Two blocks pushed apart, the push between them written as two forces
+parameters:
+  mA: 2 kg
+  mB: 3 kg
+  P: 12 N
+  t1: 0.5 s
+coordinates:
+  x1: m
+  x2: m
+bodies:
+  A: {mass: mA, inertia: particle, position: [x1, 0]}
+  B: {mass: mB, inertia: particle, position: [x2, 0]}
+effects:
+  on_A: {force: A, F: [-P, 0]}
+  on_B: {force: B, F: [P, 0]}
+states:
+  1: {t: 0, x1: 0, x2: 1 m, x1_dot: 0, x2_dot: 0}
+  2: {t: t1}
+analyses:
+  - momentum: {from: 1, to: 2, along: x, conserved: true}
+  - momentum: {from: 1, to: 2, along: x, bodies: [B]}
+find:
+  vA: {value: x1_dot@2, unit: m/s}
+  vB: {value: x2_dot@2, unit: m/s}
+)Y";
+  auto b = kt::solve_text(blocks);
+  kinergy::confirm(b);
+  CHECK(kt::result(b, "vA").si->to_double() == Approx(-3.0).epsilon(1e-14));
+  CHECK(kt::result(b, "vB").si->to_double() == Approx(2.0).epsilon(1e-14));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(blocks, "F: [P, 0]}", "F: [2*P, 0]}")),
+                    Catch::Contains("linear momentum of all bodies along x is not conserved between states 1 -> 2: the forces along x of 'on_A' (-P), 'on_B' (2*P) do not add up to zero"));
 }
