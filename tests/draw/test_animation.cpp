@@ -4,6 +4,8 @@
 // t1 = sqrt(2 h/g) = 0.49462 s (h = 1.2 m, g = 9.81 m/s²).
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -119,13 +121,13 @@ TEST_CASE("the animation page in headless Chromium: the ball drawn lower at a la
       "  document.body.setAttribute('data-probe', y0 + ' ' + y1 + ' ' + svg.height);\n"
       "});</script>\n";
   html.insert(html.rfind("</body>"), probe);
-  const auto dir = fs::temp_directory_path() / "kinergy-browser-test";
+  const auto dir = fs::temp_directory_path() / ("kinergy-browser-test-" + std::to_string(getpid()));  // (this process's own)
   fs::create_directories(dir);
   {
     std::ofstream out(dir / "ball.html");
     out << html;
   }
-  const std::string dom = kt::run_command(chromium + " --headless --no-sandbox --disable-gpu --virtual-time-budget=2000 --dump-dom file://" +
+  const std::string dom = kt::run_command(chromium + " --headless --no-sandbox --disable-gpu --user-data-dir=" + (dir / "profile").string() + " --virtual-time-budget=2000 --dump-dom file://" +
                                           (dir / "ball.html").string() + " 2>/dev/null");
   std::smatch mt;
   REQUIRE(std::regex_search(dom, mt, std::regex("data-probe=\"([-0-9.e]+) ([-0-9.e]+) ([-0-9.e]+)\"")));
@@ -142,4 +144,5 @@ TEST_CASE("the animation page in headless Chromium: the ball drawn lower at a la
   REQUIRE(std::regex_search(html, wh, std::regex("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"[0-9]+\" height=\"([0-9]+)\"")));
   const double shown = std::stod(mt[3]) / std::stod(wh[1]);  // rendered height / drawn height
   CHECK(std::fabs((y1 - y0) - fall * std::stod(sc[1]) * shown) < 1.5);
+  fs::remove_all(dir);
 }

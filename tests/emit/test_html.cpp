@@ -3,6 +3,8 @@
 // its figures there, and each animation's drawing different at its last frame from its first.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -34,7 +36,9 @@ TEST_CASE("every derivation's page in headless Chromium: the mathematics typeset
     WARN("chromium is not installed: the pages are not opened (bash .ci/setup --deps installs it)");
     return;
   }
-  const fs::path dir = fs::temp_directory_path() / "kinergy-pages-test";
+  // (a directory and a browser profile of this process's own: two suites run at once on one
+  // machine do not remove each other's pages, nor meet in one profile)
+  const fs::path dir = fs::temp_directory_path() / ("kinergy-pages-test-" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::vector<std::string> names;
@@ -77,7 +81,7 @@ TEST_CASE("every derivation's page in headless Chromium: the mathematics typeset
          "  i++; next();\n"
          "});\nnext();\n</script></body></html>\n";
   }
-  const std::string dom = kt::run_command(chromium + " --headless --no-sandbox --disable-gpu --allow-file-access-from-files "
+  const std::string dom = kt::run_command(chromium + " --headless --no-sandbox --disable-gpu --user-data-dir=" + (dir / "profile").string() + " --allow-file-access-from-files "
                                                      "--virtual-time-budget=120000 --dump-dom file://" + (dir / "harness.html").string() +
                                           " 2>/dev/null");
   std::smatch all;
@@ -105,9 +109,10 @@ TEST_CASE("every derivation's page in headless Chromium: the mathematics typeset
   CHECK(animations >= 70);  // every analysis that can be simulated, impacts with what follows them
   // a screenshot of a page: the rendered mathematics as a person sees it (a PNG of some size)
   const fs::path shot = dir / "sliding_rod.png";
-  kt::run_command(chromium + " --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=1000,1400 --virtual-time-budget=3000 "
+  kt::run_command(chromium + " --headless --no-sandbox --disable-gpu --user-data-dir=" + (dir / "profile").string() + " --hide-scrollbars --window-size=1000,1400 --virtual-time-budget=3000 "
                              "--screenshot=" + shot.string() + " file://" + (dir / "sliding_rod.html").string() + " >/dev/null 2>&1");
   const std::string png = kt::read_file(shot);
   REQUIRE(png.size() > 20000);
   CHECK(png.substr(1, 3) == "PNG");
+  fs::remove_all(dir);
 }
