@@ -47,13 +47,14 @@ ex over_time(const Model& m, const Effect& e, const ex& f, const Analysis& a) {
 }
 
 // A load that changes with the motion and acts across the set (a spring with one end in it, a
-// torsion spring on a body held by the ground) has no impulse of its own over a duration.
-[[noreturn]] void refuse_changing_push(const Effect& e, const Load& l) {
+// torsion spring on a body held by the ground) has no impulse of its own over a duration: said
+// where a balance needs it (a force through the point of moments needs none).
+void mark_changing_push(const Effect& e, const Load& l, Push& p) {
   const bool couple = l.Fx.is_zero() && l.Fy.is_zero() && l.kind == Load::Kind::Given;
   const bool two_bodies = l.partner && l.partner->body >= 0 && l.at.body >= 0;
-  throw SceneError(e.pos, "the " + e.kind + " '" + e.name + "' " + (couple ? "turns with a couple" : "pushes with a force") +
-                              " that changes with the motion; its impulse over a duration has no closed form",
-                   two_bodies ? "include both of its ends in the analysis' bodies, or use an energy analysis" : "use an energy analysis");
+  p.changing = "the " + e.kind + " '" + e.name + "' " + (couple ? "turns with a couple" : "pushes with a force") +
+               " that changes with the motion; its impulse over a duration has no closed form";
+  p.changing_fix = two_bodies ? "include both of its ends in the analysis' bodies, or use an energy analysis" : "use an energy analysis";
 }
 
 }  // namespace
@@ -90,7 +91,7 @@ void load_pushes(const Model& m, const Effect& e, const Analysis& a, const Knowl
       case Load::Kind::Given:
         // an interaction's force that changes with the motion: no impulse of its own (a load from
         // outside is taken as it is, component by component)
-        if ((l.partner || !l.singular.empty()) && model::changes_with_motion(m, l)) refuse_changing_push(e, l);
+        if ((l.partner || !l.singular.empty()) && model::changes_with_motion(m, l)) mark_changing_push(e, l, p);
         p.Fx = side * l.Fx;
         p.Fy = side * l.Fy;
         p.M = side * l.M;

@@ -434,9 +434,14 @@ static void conserved_total(const Model& m, const Analysis& a, const std::vector
     if (!unknown.empty()) throw SceneError(a.pos, head + " is not conserved between " + state_pair(m, a) + ": " + unknown, fix);
     return;
   }
+  // (a long expression of the coordinates — a spring's moment — is named by what it does)
+  auto said = [&](const ex& v) {
+    const std::string t = emit::plain(model::trig_simplify(v));
+    return t.size() > 80 && !motion_free(m, v) ? std::string("one that changes with the motion") : t;
+  };
   std::string which;
-  for (auto& [name, v] : claimed) which += (which.empty() ? "" : ", ") + ("'" + name + "' (" + emit::plain(model::trig_simplify(v)) + ")");
-  const std::string why = claimed.size() == 1 ? "effect '" + claimed[0].first + "' " + single + emit::plain(model::trig_simplify(claimed[0].second)) + ")"
+  for (auto& [name, v] : claimed) which += (which.empty() ? "" : ", ") + ("'" + name + "' (" + said(v) + ")");
+  const std::string why = claimed.size() == 1 ? "effect '" + claimed[0].first + "' " + single + said(claimed[0].second) + ")"
                                               : "the " + noun + " of " + which + " do not add up to zero";
   throw SceneError(a.pos, head + " is not conserved between " + state_pair(m, a) + ": " + why, fix);
 }
@@ -527,6 +532,7 @@ MomentumBalance linear_momentum(const Model& m, const Analysis& a, const Knowled
             claim(claimed, claimed_total, e.name, Fn);
             continue;
           }
+          if (!p.changing.empty()) throw SceneError(e.pos, p.changing, p.changing_fix);
           if (!motion_free(m, Fn))
             throw SceneError(e.pos, "the force of '" + e.name + "' along " + name + " changes with the motion; its impulse has no closed form",
                              "use an energy analysis, or a force that is constant or a function of t");
@@ -688,6 +694,7 @@ MomentumBalance angular_momentum(const Model& m, const Analysis& a, const Knowle
           claim(claimed, claimed_total, e.name, Mp);
           continue;
         }
+        if (!p.changing.empty()) throw SceneError(e.pos, p.changing, p.changing_fix);
         if (!motion_free(m, Mp))
           throw SceneError(e.pos, "the moment of '" + e.name + "' about " + a.about()->text + " changes with the motion (" + model::text(Mp) +
                                       "); its angular impulse has no closed form",

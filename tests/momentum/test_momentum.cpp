@@ -1381,6 +1381,27 @@ TEST_CASE("a bullet that lodges: 'lodges: true' embeds it, and the bar and bulle
                     Catch::Contains("contact 'hit' lodges: one body embeds in another at a point"));
 }
 
+TEST_CASE("a spring through a rolling sphere's centre does not block its angular momentum about G (issue 44, item 1)",
+          "[momentum][spring]") {
+  // By hand: no moment about G, so w2 = w1 = -v0/r; energy with the spin kept, m v0^2 = k c^2
+  const std::string text = kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/tests/data/sphere_spring_through_centre.yaml");
+  auto s = kt::solve_text(text);
+  kinergy::confirm(s);
+  const double m = 2, r = 0.1, v0 = 3, k = 800;
+  CHECK(kt::result(s, "w2").si->to_double() == Approx(-v0 / r).epsilon(1e-13));
+  CHECK(kt::result(s, "c").si->to_double() == Approx(v0 * std::sqrt(m / k)).epsilon(1e-13));
+  CHECK(s.confirmed.size() == 2);
+  // a spring whose line misses G has a moment about G that changes with the motion: refused,
+  // naming it; so is its force in a linear balance along its line
+  const std::string off = kt::edit(kt::edit(text, "angle: phi}", "angle: phi, points: {P: [0, r/2]}}"), "spring: [ball, W]", "spring: [ball.P, W]");
+  const std::string off_w = kt::edit(off, "W: [L0, r]", "W: [L0, 3*r/2]");
+  CHECK_THROWS_WITH(kt::solve_text(off_w), Catch::Contains("effect 'bumper' has a moment about ball (one that changes with the motion)"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(off_w, ", conserved: true}", "}")),
+                    Catch::Contains("the spring 'bumper' pushes with a force that changes with the motion; its impulse over a duration has no closed form"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(text, "angular_momentum: {from: 1, to: 2, about: ball, conserved: true}", "momentum: {from: 1, to: 2, along: x}")),
+                    Catch::Contains("the spring 'bumper' pushes with a force that changes with the motion"));
+}
+
 TEST_CASE("a conservation claim judged on the total over the set: equal and opposite couples written as two effects (issue 44, item 2)",
           "[momentum][conserved]") {
   // By hand: the couples cancel over table and ring, so I1 w0 = (I1 + I2) w, I1 = m1 r1^2/2 = 1.25,

@@ -22,6 +22,10 @@ struct Push {
   bool assumed = false;     ///< shown by its direction only: a support whose size the equations do not give (∫N dt)
   int body = -1;            ///< the body it acts on (−1: the set, where it is not one body's)
   std::vector<Condition> holds;  ///< what it took for granted (a declared direction of sliding): checked on the solution
+  /// A force of an interaction that changes with the motion (a spring with one end on the set):
+  /// it has no impulse of its own over a duration. Refused (this message, this fix) only where a
+  /// balance needs it: a component along n, a moment about P that is not zero.
+  std::string changing, changing_fix;
 };
 
 /// An effect's push as a diagram shows it.
