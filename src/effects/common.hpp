@@ -90,6 +90,31 @@ inline std::vector<GiNaC::exmap> random_positions(const Model& m, const GiNaC::e
   return out;
 }
 
+/// The sense a support's force along a line is counted in (the sign rule, docs/scene-format.md
+/// "Signs of forces"): +1 when (ux, uy) points up (+y), or — a horizontal line — along +x; −1
+/// otherwise: a friction up an incline, a cord's pull up, a push to the right along a floor. A line that turns with the motion is taken as it lies where the coordinates are zero
+/// (or, where it is not defined there, at the first of a few fixed places).
+inline int axis_sense(const Model& m, const ex& ux, const ex& uy) {
+  const GiNaC::exmap env = m.numeric_environment();
+  for (double q : {0.0, 0.1, 0.3, 0.7}) {
+    GiNaC::exmap at = env;
+    for (auto& c : m.coords) {
+      at[c.q] = GiNaC::numeric(q);
+      at[c.qd] = 0;
+    }
+    at[m.t] = 0;
+    try {
+      const ex x = ux.subs(at).evalf(), y = uy.subs(at).evalf();
+      if (!GiNaC::is_a<GiNaC::numeric>(x) || !GiNaC::is_a<GiNaC::numeric>(y)) continue;
+      const double dx = GiNaC::ex_to<GiNaC::numeric>(x).to_double(), dy = GiNaC::ex_to<GiNaC::numeric>(y).to_double();
+      if (!std::isfinite(dx) || !std::isfinite(dy) || std::hypot(dx, dy) < 1e-9) continue;
+      return std::abs(dy) > 1e-9 * std::hypot(dx, dy) ? (dy > 0 ? 1 : -1) : (dx > 0 ? 1 : -1);
+    } catch (const std::exception&) {  // (a division by zero there: the next place)
+    }
+  }
+  return 1;
+}
+
 /// Is body b (≥ 0) in the analysis' set?
 inline bool acts_on(const Analysis& a, int b) { return b >= 0 && principles::in_set(a.bodies, b); }
 

@@ -24,8 +24,8 @@ class Constraint : public Effect {
 public:
   PointRef a, b;
   std::size_t index = 0;  ///< in the model's constraints
-  ex fx = 0, fy = 0;      ///< F = λ f on party a (generic)
-  ex ux = 0, uy = 0;      ///< f / |f|: the direction J is measured along
+  ex fx = 0, fy = 0;      ///< F = λ f on party a, the first that is a body (generic)
+  ex ux = 0, uy = 0;      ///< ±f / |f| up (or along +x): the direction J and F are counted along
   ex mu_s = 0;            ///< static friction that holds it: |F| ≤ μ_s |N| (0: none stated)
   ex mu_k = -1;           ///< kinetic friction once it slips (a simulation's sliding; −1: not said)
   std::string normal;     ///< the track effect whose normal force N presses the parties together
@@ -172,10 +172,20 @@ std::shared_ptr<Effect> read_constraint(EffectReader& r, const EffectDef& ed) {
                                    "' (along " + m.coords[i].name + " its work does not match the relation)",
                        "give in 'at' the place where the parts touch (the pitch point of a mesh, the contact point of a rolling body, "
                        "where a cord leaves a drum)");
+  // the sign rule (docs/scene-format.md, "Signs of forces"): the force reported is the one on the
+  // first party that is a body (λ f on a, so a fixed first party changes places with the body:
+  // −λ f on it), counted along û = ±f/|f| taken up (or, horizontal, along +x) — what the
+  // relation's sign, as written, does not change
+  if (e->a.body < 0 || e->a.ground) {
+    std::swap(e->a, e->b);
+    e->fx = -e->fx;
+    e->fy = -e->fy;
+  }
   ex f2 = model::trig_simplify(e->fx * e->fx + e->fy * e->fy);
   ex f = model::root_simplify(sqrt(f2));
-  e->ux = model::trig_simplify(e->fx / f);
-  e->uy = model::trig_simplify(e->fy / f);
+  const int sense = axis_sense(m, e->fx / f, e->fy / f);
+  e->ux = model::trig_simplify(sense * e->fx / f);
+  e->uy = model::trig_simplify(sense * e->fy / f);
   // static friction that keeps it (a rolling contact): |F| ≤ μ_s |N|, N of a named track
   const scene::Node* mu = ed.options.get("mu_s");
   const scene::Node* nn = ed.options.get("normal");

@@ -113,9 +113,11 @@ std::pair<ex, ex> Effect::impact_impulse_on(const Model& m, int body, int ai) co
   }
   auto r = reaction(m);
   if (!r || r->kind != Reaction::Kind::Contact || !a.struck() || !a.struck()->impulses.count(name)) return {0, 0};
-  // P acts on the second party, −P on the first
+  // P on the first party that is a body (impulse: the sign rule), −P on the other
   auto [Px, Py] = impulse(m, -1, ai);
-  int sign = (r->b.body == body ? 1 : 0) - (r->a.body == body ? 1 : 0);
+  const model::PointRef& first = r->a_first() ? r->a : r->b;
+  const model::PointRef& other = r->a_first() ? r->b : r->a;
+  int sign = (first.body == body && !first.ground ? 1 : 0) - (other.body == body && !other.ground ? 1 : 0);
   return {sign * Px, sign * Py};
 }
 

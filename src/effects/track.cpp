@@ -53,7 +53,9 @@ public:
   // normal, the way the surface pushes (N ≥ 0)
   std::optional<model::Reaction> reaction(const Model& m) const override {
     auto [nx, ny] = normal(m);
-    const int s = pushes ? pushes : 1;
+    // one-sided: the way it pushes; a guide: outward (a circle), or its line's normal taken up (or,
+    // across a vertical line, along +x) — the sign rule, whatever way `along` is written
+    const int s = pushes ? pushes : circle ? 1 : axis_sense(m, nx, ny);
     model::Reaction r = model::Reaction::track(p, s * nx, s * ny);
     r.one_sided = pushes != 0;
     r.pulls = cord;

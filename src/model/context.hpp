@@ -236,7 +236,8 @@ public:
   }
 
   /// What a support pushes with at an instant (kinetics at a state): a pin's Rx, Ry on its first
-  /// party and R = |(Rx, Ry)|, a track's N along its normal, a constraint's F along û.
+  /// party that is a body and R = |(Rx, Ry)|, a track's N along its normal (positive when a
+  /// surface pushes), a constraint's F along û (up, or along +x), on its first party that is a body.
   ex reaction(const std::string& f, const std::string& name) const {
     int e = m_.effect_index(name);
     if (e < 0) throw InputError("no effect named '" + name + "'", "name a pin, a track or a constraint of the scene");
@@ -244,12 +245,13 @@ public:
     auto r = m_.effects[e].reaction(m_);
     const bool closed = r && r->kind == Reaction::Kind::Contact && !r->holds.empty();
     if (closed && it != m_.instant_reactions.end()) {
-      // a contact closed after its impact: R = (Rx, Ry) on its second party; N = R·n̂, F = R·t̂
-      // with t̂ = (−n_y, n_x), n̂ turning with the body whose surface it is
+      // a contact closed after its impact: R on its second party; N = R·n̂, F = R·t̂ with
+      // t̂ = (−n_y, n_x), n̂ turning with the body whose surface it is; Rx, Ry reported on its
+      // first party that is a body (the sign rule): −R where that is the first
       const auto& p = it->second;
       const auto [nx, ny] = m_.closed_normal(m_.effects[e]);
-      if (f == "Rx") return p[0];
-      if (f == "Ry") return p[1];
+      if (f == "Rx") return r->a_first() ? -p[0] : p[0];
+      if (f == "Ry") return r->a_first() ? -p[1] : p[1];
       if (f == "R") return sqrt(p[0] * p[0] + p[1] * p[1]);
       if (f == "N") return p[0] * nx + p[1] * ny;
       return -p[0] * ny + p[1] * nx;

@@ -292,11 +292,15 @@ void reaction_pushes(const Model& m, const Effect& e, const model::Reaction& r, 
   p.unknown = true;
   p.reaction = true;
   switch (r.kind) {
-    case model::Reaction::Kind::Pin:
+    case model::Reaction::Kind::Pin: {
+      // (Rx, Ry) on its first party that is a body, −(Rx, Ry) on the other (the sign rule)
       p.implied = true;
-      p.Rx = it->second[0];
-      p.Ry = it->second[1];
+      const int s = on_a == r.a_first() ? 1 : -1;
+      p.Rx = s * it->second[0];
+      p.Ry = s * it->second[1];
+      if (s < 0) p.what = "reaction impulse (unknown) of '" + e.name + "', -(Rx, Ry) on " + r.b.text + " (Rx, Ry on " + r.a.text + ")";
       break;
+    }
     case model::Reaction::Kind::Track:
       // N n̂ on the point
       p.implied = true;
@@ -340,7 +344,8 @@ static std::pair<ex, ex> pin_impact_impulse(const Model& m, const Effect& e, con
       throw InputError("body '" + B.name + "' has two pins, '" + e.name + "' and '" + o.name + "'; their impulses cannot be told apart",
                        "ask for the impulse of a pin that holds a body alone");
   }
-  // R = m (v̄⁺ − v̄⁻) − Σ P (contact impulses and given blows on the body)
+  // R = m (v̄⁺ − v̄⁻) − Σ P (contact impulses and given blows on the body); reported on the
+  // pin's first party that is a body (the sign rule): −R when that is the other one
   ex vx = m.rate(B.x), vy = m.rate(B.y);
   ex Rx = B.mass * (m.bind_mixed(vx, an.from, an.to) - m.bind(vx, an.from));
   ex Ry = B.mass * (m.bind_mixed(vy, an.from, an.to) - m.bind(vy, an.from));
@@ -349,7 +354,8 @@ static std::pair<ex, ex> pin_impact_impulse(const Model& m, const Effect& e, con
     Rx -= Px;
     Ry -= Py;
   }
-  return {Rx, Ry};
+  const int s = bi == (r.a_first() ? r.a : r.b).body ? 1 : -1;
+  return {s * Rx, s * Ry};
 }
 
 std::pair<ex, ex> reaction_impulse(const Model& m, const Effect& e, const model::Reaction& r, int self, int ai) {
@@ -362,9 +368,11 @@ std::pair<ex, ex> reaction_impulse(const Model& m, const Effect& e, const model:
         throw InputError("contact '" + e.name + "' takes no part in an impact between states " + m.states[an.from].name + " and " +
                              m.states[an.to].name,
                          "name it in the impact's 'contact' or 'contacts'");
-      // P = J n + Jt t,  t = (−n_y, n_x)
+      // P = J n + Jt t on party b,  t = (−n_y, n_x); reported on the first party that is a body
+      // (the sign rule): −P on a
       auto [J, Jt] = st->impulses.at(e.name);
-      return {J * r.dir_x - Jt * r.dir_y, J * r.dir_y + Jt * r.dir_x};
+      const int s = r.a_first() ? -1 : 1;
+      return {s * (J * r.dir_x - Jt * r.dir_y), s * (J * r.dir_y + Jt * r.dir_x)};
     }
     case model::Reaction::Kind::Pin:
       if (an.instant()) return pin_impact_impulse(m, e, r, self, ai);
@@ -408,14 +416,18 @@ Work reaction_work_across(const Model& m, const Effect& e, const model::Reaction
       throw SceneError(an.pos, "pin '" + e.name + "' joins a body of this energy analysis to one outside it, and the pinned point does not "
                                    "keep to a fixed line (x or y): the work of its reaction is not one unknown force times a distance",
                        "list both bodies it joins in 'bodies', or take its reaction from an impulse-momentum analysis of the body");
-    const model::PointRef& p = inside(an, r.a) ? r.a : r.b;
+    const bool ia = inside(an, r.a);
+    const model::PointRef& p = ia ? r.a : r.b;
     const int line = *line_inside(m, r, an.bodies);
     auto [x, y] = m.position(p);
     const ex s = line == 0 ? x : y;
+    // (F on the first party that is a body: −F on the other, the sign rule)
+    const int sign = ia == r.a_first() ? 1 : -1;
     Work w;
     w.effect = e.name;
-    w.U = it->second[0] * model::trig_simplify(m.bind(s, an.to) - m.bind(s, an.from));
-    w.how = "U = F (average, on " + p.text + " along " + (line == 0 ? "x" : "y") + ") times the distance " + p.text + " moves along it";
+    w.U = sign * it->second[0] * model::trig_simplify(m.bind(s, an.to) - m.bind(s, an.from));
+    w.how = "U = " + std::string(sign < 0 ? "-" : "") + "F (average, on " + (r.a_first() ? r.a : r.b).text + " along " + (line == 0 ? "x" : "y") +
+            ") times the distance " + p.text + " moves along it";
     return w;
   }
   if (rp && rp->kind == model::Reaction::Kind::Relation) {

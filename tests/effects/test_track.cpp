@@ -125,13 +125,16 @@ TEST_CASE("a track says whether it can only push or holds both ways", "[effects]
   CHECK_NOTHROW(solve_text(edit(wheel, ", pushes: [sin(beta), cos(beta)]", "")));  // the offset says it
 }
 
-TEST_CASE("a one-sided track's N is positive when it pushes, a guide's along its normal", "[effects][track][kinetics]") {
-  // the bar of bar_slides_on_floor with its floor written as pushing up, and as a guide whose
-  // normal k x t points down (along [-1, 0]): N = m g/(1 + 3 cos^2(theta0)) = 4 m g/7 by hand
+TEST_CASE("a one-sided track's N is positive when it pushes, a guide's up whichever way its line is written (issue 44, item 7)",
+          "[effects][track][kinetics]") {
+  // the bar of bar_slides_on_floor with its floor written as pushing up, and as a guide along
+  // [1, 0] or [-1, 0] (its normal k x t up, or down): N = m g/(1 + 3 cos^2(theta0)) = 4 m g/7 by
+  // hand, positive up in each (the sign rule: a force across a horizontal line is counted up)
   auto bar = derivation("kinetics/bar_slides_on_floor.yaml");
   auto N = [&](const std::string& text) { return *kt::result(solve_text(text), "N1").si; };
   const GiNaC::numeric up = N(bar);
   CHECK(kinergy::numerics::format(up, 4) == "28.03");
-  CHECK(N(edit(bar, "along: [1, 0]}, pushes: up}", "along: [-1, 0]}, holds: both}")) == -up);
+  CHECK(N(edit(bar, "along: [1, 0]}, pushes: up}", "along: [-1, 0]}, holds: both}")) == up);
+  CHECK(N(edit(bar, "along: [1, 0]}, pushes: up}", "along: [1, 0]}, holds: both}")) == up);
   CHECK(N(edit(bar, "along: [1, 0]}, pushes: up}", "along: [-1, 0]}, pushes: up}")) == up);
 }

@@ -128,6 +128,9 @@ struct Reaction {
   bool across(const std::vector<int>& set) const;
   /// The bodies it joins (a fixed party is not a body).
   std::vector<int> bodies() const;
+  /// The sign rule (docs/scene-format.md, "Signs of forces"): a support's force is reported on its
+  /// first party that is a body — a, unless a is the ground or a fixed point.
+  bool a_first() const { return a.body >= 0 && !a.ground; }
 
   static Reaction pin(PointRef a, PointRef b);
   static Reaction track(PointRef a, ex nx, ex ny);
