@@ -16,6 +16,7 @@
 #include "kinergy/common/error.hpp"
 #include "kinergy/common/markup.hpp"
 #include "kinergy/common/process.hpp"
+#include "kinergy/draw/names.hpp"
 #include "kinergy/model/inertia.hpp"
 #include "kinergy/model/model.hpp"
 #include "kinergy/model/simplify.hpp"
@@ -196,7 +197,7 @@ void Figure::label(double x, double y, const std::string& text, const std::strin
   labels_.push_back({x, y, text, tex});
 }
 
-void Figure::dimension(double x1, double y1, double x2, double y2, const std::string& text) {
+void Figure::dimension(double x1, double y1, double x2, double y2, const std::string& text, const std::string& tex) {
   // offset to the right of 1 → 2 by two glyphs, with a tick at each end and the size in the middle
   const double d = std::hypot(x2 - x1, y2 - y1), g = glyph();
   if (!(d > 0) || !std::isfinite(d) || text.empty()) return;
@@ -204,7 +205,7 @@ void Figure::dimension(double x1, double y1, double x2, double y2, const std::st
   line(x1 + nx * o, y1 + ny * o, x2 + nx * o, y2 + ny * o, Ink::Dimension);
   line(x1 + nx * (o - t), y1 + ny * (o - t), x1 + nx * (o + t), y1 + ny * (o + t), Ink::Dimension);
   line(x2 + nx * (o - t), y2 + ny * (o - t), x2 + nx * (o + t), y2 + ny * (o + t), Ink::Dimension);
-  label((x1 + x2) / 2 + nx * o, (y1 + y2) / 2 + ny * o, text);
+  label((x1 + x2) / 2 + nx * o, (y1 + y2) / 2 + ny * o, text, tex);
 }
 
 double Figure::glyph() const { return glyph_; }
@@ -749,6 +750,18 @@ At state_values(const model::Model& m, const exmap& solved, const exmap& params,
 
 namespace {
 
+/// A name as a textbook writes it where it reads as a symbol (theta: θ, OA: O_A), else as it is.
+Name identifier_label(const std::string& id) {
+  if (auto n = textbook(id)) return *n;
+  return {id, ""};
+}
+
+/// An expression's label: a parameter by its textbook name, anything else as written (2*r).
+Name expression_label(const ex& e) {
+  if (is_a<symbol>(e)) return identifier_label(ex_to<symbol>(e).get_name());
+  return {model::text(e), ""};
+}
+
 /// A shape's frame: its centre (gx, gy) and turn phi; r = (gx, gy) + R(phi) (lx, ly).
 struct Placed {
   double gx, gy, phi;
@@ -809,33 +822,35 @@ void dimensions(const At& at, const std::string& shape_name, const std::vector<e
   const model::InertiaShape& shape = model::inertia_shape(shape_name);
   const double a = sizes.empty() ? 0 : at(sizes[0]);
   const double bb = sizes.size() > 1 ? at(sizes[1]) : a;
-  auto size_text = [&](std::size_t i) { return i < sizes.size() ? model::text(sizes[i]) : std::string(); };
+  // (a parameter by its textbook name: kA as k_A)
+  auto size_text = [&](std::size_t i) { return i < sizes.size() ? expression_label(sizes[i]) : Name{}; };
   switch (shape.outline) {
     case model::Outline::Bar: {
       auto [x1, y1] = world(-a / 2, 0);
       auto [x2, y2] = world(a / 2, 0);
-      f.dimension(x1, y1, x2, y2, size_text(0));
+      f.dimension(x1, y1, x2, y2, size_text(0).text, size_text(0).tex);
       break;
     }
     case model::Outline::Round:
     case model::Outline::Gyration: {
       auto [x2, y2] = world(a / 2, 0);
-      f.label(x2, y2, size_text(0));
+      const Name r = size_text(0);
+      f.label(x2, y2, r.text, r.tex);
       break;
     }
     case model::Outline::Rect: {
       auto [x1, y1] = world(-a / 2, -bb / 2);
       auto [x2, y2] = world(a / 2, -bb / 2);
       auto [x3, y3] = world(a / 2, bb / 2);
-      f.dimension(x1, y1, x2, y2, size_text(0));
-      if (sizes.size() > 1) f.dimension(x2, y2, x3, y3, size_text(1));
+      f.dimension(x1, y1, x2, y2, size_text(0).text, size_text(0).tex);
+      if (sizes.size() > 1) f.dimension(x2, y2, x3, y3, size_text(1).text, size_text(1).tex);
       break;
     }
     case model::Outline::EdgeOn: {
       // its width (a rectangular plate), or its radius from the centre (a circular one)
       auto [x1, y1] = world(shape.span == 1 ? -a / 2 : 0, 0);
       auto [x2, y2] = world(a * (shape.span == 1 ? 0.5 : 1.0), 0);
-      f.dimension(x1, y1, x2, y2, size_text(0));
+      f.dimension(x1, y1, x2, y2, size_text(0).text, size_text(0).tex);
       break;
     }
     case model::Outline::Dot:
@@ -867,13 +882,16 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, d
   }
   for (auto& [shape, sizes, placed] : shapes) outline(at, *shape, *sizes, placed, f, b.parts.empty() ? rim : 0);
   f.mark(gx, gy, b.name + ".G");
-  f.label(gx, gy, b.name);
+  // a body by its short name where it has one (gearA: A), else not named at its centre (a
+  // textbook names a body by a letter, or not at all)
+  if (const auto s = short_name(b.name)) f.label(gx, gy, s->text, s->tex);
   if (!points) return f.owned_by("");
   for (auto& [shape, sizes, placed] : shapes) dimensions(at, *shape, *sizes, placed, f);
   for (auto& [pn, lp] : b.points) {
     auto [px, py] = world(at(lp.first), at(lp.second));
     f.mark(px, py, b.name + "." + pn);
-    f.label(px, py, pn);
+    const Name n = identifier_label(pn);
+    f.label(px, py, n.text, n.tex);
   }
   f.owned_by("");
 }
@@ -893,7 +911,8 @@ Figure drawing(const model::Model& m, const At& at, double g, const std::vector<
   }
   for (auto& [pn, p] : m.fixed_points) {
     f.mark(at(p.first), at(p.second), pn, true);
-    f.label(at(p.first), at(p.second), pn);
+    const Name n = identifier_label(pn);
+    f.label(at(p.first), at(p.second), n.text, n.tex);
   }
   for (auto& e : m.effects) {
     if (effects && std::find(effects->begin(), effects->end(), e.name) == effects->end()) continue;
@@ -903,8 +922,10 @@ Figure drawing(const model::Model& m, const At& at, double g, const std::vector<
   f.owned_by("");
   draw_implied(m, at, imp, f, bodies);
   // the positive sense of each coordinate, on the first body it moves: an arrow at the mass
-  // centre along ∂r̄/∂q, or a curved arrow round it when q only turns the body (∂φ/∂q)
+  // centre along ∂r̄/∂q, or a curved arrow round it when q only turns the body (∂φ/∂q), named
+  // as a textbook names it (θ, φ_A, x)
   for (auto& c : m.coords) {
+    const Name q = identifier_label(c.name);
     for (auto& b : m.bodies) {
       const double dx = at(b.x.diff(c.q)), dy = at(b.y.diff(c.q)), dphi = at(b.angle.diff(c.q));
       const double gx = at(b.x), gy = at(b.y);
@@ -913,13 +934,13 @@ Figure drawing(const model::Model& m, const At& at, double g, const std::vector<
       if (std::isfinite(d) && d > 1e-12) {
         const double ex = gx + 3 * g * dx / d, ey = gy + 3 * g * dy / d;
         f.arrow(gx, gy, ex, ey, Ink::Sense);
-        f.label(ex, ey, "+" + c.name);
+        f.label(ex, ey, q.text, q.tex);
         break;
       }
       if (std::isfinite(dphi) && std::fabs(dphi) > 1e-12) {
         const double a0 = dphi > 0 ? 0.6 : 2.6, a1 = dphi > 0 ? 2.6 : 0.6, r = f.ring(gx, gy, 1.8 * g);
         f.arc_arrow(gx, gy, r, a0, a1, Ink::Sense);
-        f.label(gx + r * std::cos(a1), gy + r * std::sin(a1), "+" + c.name);
+        f.label(gx + r * std::cos(a1), gy + r * std::sin(a1), q.text, q.tex);
         break;
       }
     }

@@ -11,6 +11,7 @@
 
 #include "kinergy/common/error.hpp"
 #include "kinergy/draw/figure.hpp"
+#include "kinergy/draw/names.hpp"
 #include "kinergy/model/model.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/principles/momentum.hpp"
@@ -115,6 +116,38 @@ inline int axis_sense(const Model& m, const ex& ux, const ex& uy) {
   return 1;
 }
 
+/// How figures and diagrams name an effect's force or couple (issue 47): the parameter that is its
+/// size, where it is one (a couple M: Mc → M_c), else the effect's own name where it reads as a
+/// symbol (P, F1), else the symbol of its kind (`kind`: P a force, M a couple, T a cord's pull, F
+/// a spring's or a friction's force) — without Greek letters, the same words in SVG and TeX.
+inline std::string load_symbol(const Effect& e, const std::string& kind, const ex& size = 0) {
+  auto latin = [](const std::optional<draw::Name>& n) {
+    return n && std::all_of(n->text.begin(), n->text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }) &&
+           n->text.find('_') == n->text.rfind('_');
+  };
+  if (GiNaC::is_a<GiNaC::symbol>(size))
+    if (auto n = draw::textbook(GiNaC::ex_to<GiNaC::symbol>(size).get_name()); latin(n)) return n->text;
+  if (auto n = draw::textbook(e.name); latin(n)) return n->text;
+  return kind;
+}
+
+/// A load symbol (load_symbol) as a label: the same words in SVG and TeX.
+inline draw::Name symbol_name(const std::string& s) { return {s, s}; }
+
+/// `l` named by `symbol` (what figures and diagrams write for it).
+inline model::Load with_symbol(model::Load l, std::string symbol) {
+  l.symbol = std::move(symbol);
+  return l;
+}
+
+/// A label for an expression (a spring's stiffness, a damper's constant): the textbook name of
+/// a parameter, the symbol `otherwise` for anything else.
+inline draw::Name value_label(const ex& v, const std::string& otherwise) {
+  if (GiNaC::is_a<GiNaC::symbol>(v))
+    if (auto n = draw::textbook(GiNaC::ex_to<GiNaC::symbol>(v).get_name())) return *n;
+  return {otherwise, otherwise};
+}
+
 /// Is body b (≥ 0) in the analysis' set?
 inline bool acts_on(const Analysis& a, int b) { return b >= 0 && principles::in_set(a.bodies, b); }
 
@@ -181,7 +214,7 @@ inline std::optional<std::pair<double, double>> fixed_pin(const Model& m, const 
 /// head when 0), `glyphs` glyphs out, labelled: a couple, a torsion spring, a power drive. With
 /// `at_pin`, round the fixed pin the body turns about, where it has one (a torsion spring, a
 /// bearing's friction act there).
-inline void draw_turning(const Model& m, const At& at, Figure& f, int body, double sense, Ink ink, const std::string& label,
+inline void draw_turning(const Model& m, const At& at, Figure& f, int body, double sense, Ink ink, const draw::Name& label,
                          double glyphs = 1.6, bool at_pin = false) {
   const auto& B = m.bodies[static_cast<std::size_t>(body)];
   const auto pin = at_pin ? fixed_pin(m, at, body) : std::nullopt;
@@ -193,7 +226,7 @@ inline void draw_turning(const Model& m, const At& at, Figure& f, int body, doub
     for (int i = 0; i <= 24; ++i) pts.push_back({x + r * std::cos(-0.6 + 4.2 * i / 24), y + r * std::sin(-0.6 + 4.2 * i / 24)});
     f.polyline(pts, ink);
   }
-  f.label(x + r * std::cos(2.2), y + r * std::sin(2.2), label);
+  f.label(x + r * std::cos(2.2), y + r * std::sin(2.2), label.text, label.tex);
 }
 
 /// The two points an effect joins, when both have a place (a party on the ground has none).

@@ -41,17 +41,14 @@ public:
       auto [px, py] = at.point(m.position(*p));
       const double gx = at(B.x), gy = at(B.y), r = std::hypot(px - gx, py - gy);
       if (std::isfinite(r) && r > 0 && !f.has_circle(gx, gy, r)) f.circle(gx, gy, r, Ink::Track);
-      // the place itself: where the parts touch (the surface under it is drawn from the kinematics)
-      if (std::isfinite(px) && std::isfinite(py)) {
-        f.circle(px, py, 0.25 * f.glyph(), Ink::Support, true);
-        f.label(px, py, name);
-      }
+      // the place itself: where the parts touch (the surface under it is drawn from the kinematics;
+      // not named, as a textbook draws a mesh or a rolling contact)
+      if (std::isfinite(px) && std::isfinite(py)) f.circle(px, py, 0.25 * f.glyph(), Ink::Support, true);
     }
     // between two places of the parties (a cord from a drum's rim to a block): the cord, solid
     if (auto p = joined(m, at, a, b)) {
       const auto [x1, y1, x2, y2] = *p;
       f.line(x1, y1, x2, y2, Ink::Cord);
-      f.label((x1 + x2) / 2, (y1 + y2) / 2, name);
     }
   }
 

@@ -53,7 +53,7 @@ void Contact::draw(const Model& m, const draw::At& at, draw::Figure& f) const {
   if (a.body < 0) f.surface(x - uy * g * 3, y + ux * g * 3, x + uy * g * 3, y - ux * g * 3, -ux, -uy);
   else f.line(x - uy * g * 3, y + ux * g * 3, x + uy * g * 3, y - ux * g * 3, draw::Ink::Track);
   f.arrow(x, y, x + ux * g * 2, y + uy * g * 2, draw::Ink::Thin);
-  f.label(x + ux * g * 2, y + uy * g * 2, name + " n");
+  f.label(x + ux * g * 2, y + uy * g * 2, "n", "\\mathbf{n}");
 }
 
 }  // namespace

@@ -21,14 +21,14 @@ public:
     f.line(x1, y1, x2, y2, Ink::Thin);
     const double L = std::hypot(x2 - x1, y2 - y1), g = f.glyph() * 3;
     if (L > 0) f.arrow(x1, y1, x1 + (x2 - x1) / L * std::min(g, L), y1 + (y2 - y1) / L * std::min(g, L), Ink::Force);
-    f.label(x1, y1, name);
+    f.label(x1, y1, load_symbol(*this, "T"));
   }
   // on A: P toward B, F = P (r_B − r_A)/L; −F on B
   std::vector<model::Load> loads(const Model& m) const override {
     auto [xa, ya] = m.position(a);
     auto [xb, yb] = m.position(b);
     ex L = m.spring_length(model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2)));
-    return {force_at(a, P * (xb - xa) / L, P * (yb - ya) / L, b)};
+    return {with_symbol(force_at(a, P * (xb - xa) / L, P * (yb - ya) / L, b), load_symbol(*this, "T"))};
   }
 
   ex potential(const Model& m) const override {

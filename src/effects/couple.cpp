@@ -12,10 +12,10 @@ public:
   std::optional<int> other;  ///< `against`: the body that takes −M
 
   // M on its body, from outside the bodies (or −M on the body it acts against)
-  std::vector<model::Load> loads(const Model& m) const override { return {couple_on(m, body, M, other)}; }
+  std::vector<model::Load> loads(const Model& m) const override { return {with_symbol(couple_on(m, body, M, other), load_symbol(*this, "M", M))}; }
 
   // a curved arrow round the body's centre in the sense of M (counterclockwise when positive)
-  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, at(M), Ink::Force, name); }
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, at(M), Ink::Force, symbol_name(load_symbol(*this, "M", M))); }
 };
 
 }  // namespace

@@ -23,7 +23,8 @@ public:
     f.polyline({at_s(0.35, w), at_s(0.6, w), at_s(0.6, -w), at_s(0.35, -w)}, Ink::Spring);  // the cylinder, open at its left
     f.polyline({at_s(0.45, w * 0.8), at_s(0.45, -w * 0.8)}, Ink::Spring);                     // the piston
     f.polyline({at_s(0.6, 0), {x2, y2}}, Ink::Spring);
-    f.label((x1 + x2) / 2, (y1 + y2) / 2, name);
+    const draw::Name cn = value_label(c, "c");  // (by its constant)
+    f.label((x1 + x2) / 2, (y1 + y2) / 2, cn.text, cn.tex);
   }
 
   /// d = r_B − r_A
@@ -39,7 +40,7 @@ public:
     auto [dx, dy] = span(m);
     ex dd = model::collect_simplify(m.rate(dx) * dx + m.rate(dy) * dy, m.rates());
     ex d2 = model::trig_simplify(dx * dx + dy * dy);
-    return {force_at(a, c * dd / d2 * dx, c * dd / d2 * dy, b)};
+    return {with_symbol(force_at(a, c * dd / d2 * dx, c * dd / d2 * dy, b), load_symbol(*this, "F"))};
   }
 
 };

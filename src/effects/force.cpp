@@ -12,7 +12,7 @@ public:
   ex Fx = 0, Fy = 0;
   // F at its point, from outside the bodies
   std::vector<model::Load> loads(const Model&) const override {
-    return {force_at(a, Fx, Fy)};
+    return {with_symbol(force_at(a, Fx, Fy), load_symbol(*this, "P"))};
   }
 
   // an arrow along F ending at its point, 3 glyphs long, labelled with its name; where F is
@@ -22,12 +22,12 @@ public:
     const double fx = at(Fx), fy = at(Fy), F = std::hypot(fx, fy);
     if (F == 0) {
       f.circle(x, y, 0.3 * f.glyph(), Ink::Force);
-      return f.label(x, y, name + " = 0");
+      return f.label(x, y, load_symbol(*this, "P") + " = 0");
     }
     if (!(F > 0)) return;
     const double L = f.glyph() * 3;
     f.arrow(x - fx / F * L, y - fy / F * L, x, y, Ink::Force);
-    f.label(x - fx / F * L, y - fy / F * L, name);
+    f.label(x - fx / F * L, y - fy / F * L, load_symbol(*this, "P"));
   }
 };
 

@@ -30,7 +30,8 @@ public:
       const double bx = x + (i - 2) * g * ux, by = y + (i - 2) * g * uy;
       f.line(bx, by, bx - 0.4 * g * ux + 0.5 * g * uy, by - 0.4 * g * uy - 0.5 * g * ux, Ink::Support);
     }
-    f.label(x, y, name);
+    const draw::Name mu_k = value_label(mu, "\u03bc");
+    f.label(x, y, mu_k.text, mu_k.text == "\u03bc" ? "\\mu" : mu_k.tex);
   }
 
   // μN at A against its slip over B (or the ground), −that on B

@@ -15,8 +15,10 @@ public:
     for (auto& b : m.bodies) {
       const double x = at(b.x), y = at(b.y);
       f.arrow(x, y, x + dx * L, y + dy * L, Ink::Force);
-      // W, with the body's name as a subscript where the scene has several (W_A)
-      f.label(x + dx * L, y + dy * L, m.bodies.size() > 1 ? "W_" + b.name : "W");
+      // W, with the body's short name (or its name) as a subscript where the scene has several (W_A)
+      const auto s = draw::short_name(b.name);
+      const draw::Name w = m.bodies.size() > 1 ? draw::subscripted({"W", "W"}, s ? s->text : b.name) : draw::Name{"W", "W"};
+      f.label(x + dx * L, y + dy * L, w.text, w.tex);
     }
   }
 

@@ -19,10 +19,10 @@ public:
     const double jx = at(j.Jx), jy = at(j.Jy), J = std::hypot(jx, jy), L = 3 * f.glyph();
     if (!(J > 0)) {
       f.circle(x, y, 0.3 * f.glyph(), Ink::Force);
-      return f.label(x, y, name);
+      return f.label(x, y, load_symbol(*this, "J"));
     }
     f.arrow(x - jx / J * L, y - jy / J * L, x, y, Ink::Force);
-    f.label(x - jx / J * L, y - jy / J * L, name);
+    f.label(x - jx / J * L, y - jy / J * L, load_symbol(*this, "J"));
   }
 };
 

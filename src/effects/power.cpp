@@ -13,11 +13,12 @@ public:
   std::vector<model::Load> loads(const Model& m) const override {
     model::Load l = couple_on(m, body, P / m.omega(body), -1);
     l.singular = "power drive '" + name + "' gives the couple P/omega: it is infinite at omega = 0";
+    l.symbol = load_symbol(*this, "M");  // (a drive's couple)
     return {l};
   }
 
   // a curved arrow round the body's centre: the drive (in the sense of the motion it drives)
-  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 1, Ink::Force, name + " (P)"); }
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 1, Ink::Force, symbol_name(load_symbol(*this, "P", P))); }
 };
 
 }  // namespace

@@ -34,7 +34,7 @@ public:
     ex L = m.spring_length(model::trig_simplify(pow(xa - xb, 2) + pow(ya - yb, 2)));
     ex d = L - free;
     ex f = side == 0 ? d : (d + side * abs(d)) / 2;
-    return {force_at(a, -k * f * (xa - xb) / L, -k * f * (ya - yb) / L, b)};
+    return {with_symbol(force_at(a, -k * f * (xa - xb) / L, -k * f * (ya - yb) / L, b), load_symbol(*this, "F"))};
   }
 
   ex potential(const Model& m) const override {
@@ -140,7 +140,8 @@ public:
     pts.push_back({x1 + ux * L * 0.85, y1 + uy * L * 0.85});
     pts.push_back({x2, y2});
     f.polyline(pts, Ink::Spring);
-    f.label((x1 + x2) / 2, (y1 + y2) / 2, name);
+    const draw::Name kn = value_label(k, "k");  // (by its stiffness, as a textbook labels a spring)
+    f.label((x1 + x2) / 2, (y1 + y2) / 2, kn.text, kn.tex);
   }
 };
 

@@ -13,11 +13,11 @@ public:
   // the couple −c (ω₁ − ω₂) on the body, its reaction on the second (or the ground)
   std::vector<model::Load> loads(const Model& m) const override {
     ex w = m.omega(body) - (body2 >= 0 ? m.omega(body2) : ex(0));
-    return {couple_on(m, body, -c * w, body2)};
+    return {with_symbol(couple_on(m, body, -c * w, body2), load_symbol(*this, "M"))};
   }
 
   // an arc round the (first) body's centre
-  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Hidden, name, 1.3, true); }
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Hidden, value_label(c, "c"), 1.3, true); }
 
 };
 

@@ -11,11 +11,11 @@ public:
   ex k = 0, free = 0;
 
   // a coil round the pin the (first) body turns about (its centre when it has none)
-  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Spring, name, 1.0, true); }
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Spring, value_label(k, "k"), 1.0, true); }
   // the couple −k (φ₁ − φ₂ − φ₀) on the body, its reaction on the second (or the ground)
   std::vector<model::Load> loads(const Model& m) const override {
     ex phi = m.bodies[body].angle - (body2 >= 0 ? m.bodies[body2].angle : ex(0));
-    return {couple_on(m, body, -k * (phi - free), body2)};
+    return {with_symbol(couple_on(m, body, -k * (phi - free), body2), load_symbol(*this, "M"))};
   }
 
   ex potential(const Model& m) const override {

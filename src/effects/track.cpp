@@ -89,7 +89,7 @@ public:
     if (cord) {
       // the cord itself, from its anchor to the point (straight while taut)
       f.line(at(x0), at(y0), px, py, Ink::Cord);
-      f.label(0.5 * (at(x0) + px), 0.5 * (at(y0) + py), name);
+      f.label(0.5 * (at(x0) + px), 0.5 * (at(y0) + py), load_symbol(*this, "T"));
       return;
     }
     // a body off the surface (a simulation that has let it go): the surface and its name where
@@ -111,7 +111,7 @@ public:
     } else {
       draw::line_support(m, at, f, p.body, px, py, at(tx), at(ty), std::isfinite(off) ? off : 0, pushes);
     }
-    f.label(px, py, name);
+    // (not named: its hatching says it is a surface, as a textbook draws one)
   }
 
   std::string off_track(const Model& m, const GiNaC::exmap& at) const {

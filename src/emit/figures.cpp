@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/draw/names.hpp"
+#include "kinergy/draw/names.hpp"
 #include "kinergy/model/model.hpp"
 #include "kinergy/model/simplify.hpp"
 
@@ -29,8 +31,45 @@ std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string
 
 namespace {
 
-/// A name as a TeX subscript: "_{\mathrm{rod}}" (m_rod, W_rod, N_disk).
-std::string tex_sub(const std::string& name) { return "_{\\mathrm{" + tex_text(name) + "}}"; }
+/// A body as a subscript: its short name (gearA: A), else its name (m_A, W_rod, N_disk).
+std::string body_sub(const model::Model& m, int b) {
+  const std::string& name = m.bodies[static_cast<std::size_t>(b)].name;
+  const auto s = draw::short_name(name);
+  return s ? s->text : name;
+}
+
+/// The names of the loads one figure draws (issue 47): each by its symbol (W, N, F, P, M, T), with
+/// a subscript only where two of one kind meet in the figure — the body's short name where one
+/// effect acts on several of its bodies (W_A, W_B), the effect's name where several effects share
+/// a symbol (F_rolling, F_table).
+class LoadNames {
+public:
+  struct Load {
+    std::string effect, symbol;
+    int body;
+  };
+  LoadNames(const model::Model& m, std::vector<Load> loads) : m_(m), loads_(std::move(loads)) {}
+
+  draw::Name operator()(const std::string& effect, int body) const {
+    const Load* me = nullptr;
+    for (auto& l : loads_)
+      if (l.effect == effect && l.body == body) me = &l;
+    if (!me) return {effect, "\\mathrm{" + tex_text(effect) + "}"};
+    bool effects = false, bodies = false;  // several effects with its symbol; this effect on several bodies
+    for (auto& l : loads_) {
+      if (l.symbol != me->symbol) continue;
+      effects = effects || l.effect != effect;
+      bodies = bodies || (l.effect == effect && l.body != body);
+    }
+    std::string sub = effects ? effect : "";
+    if (bodies && body >= 0) sub += (sub.empty() ? "" : ",") + body_sub(m_, body);
+    return draw::subscripted({me->symbol, me->symbol}, sub);
+  }
+
+private:
+  const model::Model& m_;
+  std::vector<Load> loads_;
+};
 
 // What the diagram needs to put numbers on its arrows' directions.
 struct Diagram {
@@ -110,7 +149,8 @@ struct Diagram {
     auto [x, y] = at.point(m.position(*a.about()));
     if (std::isfinite(x) && std::isfinite(y)) {
       f.mark(x, y, a.about()->text, a.about()->body < 0);
-      f.label(x, y, a.about()->text);
+      const auto n = draw::textbook(a.about()->text);
+      f.label(x, y, n ? n->text : a.about()->text, n ? n->tex : "");
     }
   }
 
@@ -143,37 +183,43 @@ struct Diagram {
       const double x = at(B.x), y = at(B.y);
       const double p = momentum(at, b);
       const double length = p_max > 0 && std::isfinite(p) ? longest * std::max(0.25, p / p_max) : len;
-      const bool named = bodies.size() > 1;
-      const std::string sub = B.name, sub_tex = tex_sub(B.name);
-      arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, named ? "m_" + sub + " v\u0304_" + sub : "m v\u0304",
-            named ? "m" + sub_tex + "\\bar{v}" + sub_tex : "m\\bar{v}", length);
-      if (at(B.inertia) > 0)
-        turning(f, x, y, at(m.omega(b)), draw::Ink::Momentum, named ? "I\u0304_" + sub + " \u03c9_" + sub : "I\u0304 \u03c9",
-                named ? "\\bar{I}" + sub_tex + "\\omega" + sub_tex : "\\bar{I}\\omega");
+      const std::string sub = bodies.size() > 1 ? body_sub(m, b) : "";
+      const draw::Name ms = draw::subscripted({"m", "m"}, sub), vs = draw::subscripted({"v\u0304", "\\bar{v}"}, sub);
+      arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, ms.text + " " + vs.text, ms.tex + vs.tex, length);
+      if (at(B.inertia) > 0) {
+        const draw::Name Is = draw::subscripted({"I\u0304", "\\bar{I}"}, sub), ws = draw::subscripted({"\u03c9", "\\omega"}, sub);
+        turning(f, x, y, at(m.omega(b)), draw::Ink::Momentum, Is.text + " " + ws.text, Is.tex + ws.tex);
+      }
     }
     about_point(f, at);
     return f;
   }
 
   // the impulses on the bodies over the analysis, drawn on them at its first state
+  // a push's symbol: its load's (W, F, P, M, T), N for an implied support ("N_disk", the
+  // principles' name), R for a pin's known impulse, J for a blow
+  static std::string push_symbol(const std::string& effect, const principles::Push& p) {
+    if (!p.symbol.empty()) return p.symbol;
+    if (effect.rfind("N_", 0) == 0) return "N";
+    if (p.unknown) return p.reaction ? "R" : "J";
+    return "";
+  }
+
   draw::Figure impulses(const std::vector<principles::Shown>& shown) const {
     draw::Figure f;
     f.set_glyph(g);
     for (int b : bodies) body(f, at1, b);
+    std::vector<LoadNames::Load> drawn;
+    for (auto& [effect, p] : shown)
+      if (in_set(p.body) && !push_symbol(effect, p).empty()) drawn.push_back({effect, push_symbol(effect, p), p.body});
+    const LoadNames names_of(m, drawn);
     for (auto& [effect, p] : shown) {
       if (!in_set(p.body)) continue;
       f.owned_by(effect);  // (what the check of the diagram against its equations reads)
       const auto [x, y] = on_body(f, at1, p.body, at1(p.arm_x), at1(p.arm_y));
-      // an implied support ("N_disk", the principles' name) as a textbook writes it: N with the body's
-      // subscript; a load with a symbol (W, F) by it, the body's name its subscript where the
-      // diagram has several bodies
-      const bool support = effect.rfind("N_", 0) == 0;
-      const bool named = bodies.size() > 1 && p.body >= 0;
-      const std::string body_name = p.body >= 0 ? m.bodies[static_cast<std::size_t>(p.body)].name : "";
-      const std::string word = support ? "N" + tex_sub(effect.substr(2))
-                               : !p.symbol.empty() ? p.symbol + (named ? tex_sub(body_name) : "")
-                                                   : "\\mathrm{" + tex_text(effect) + "}";
-      const std::string said = !p.symbol.empty() ? p.symbol + (named ? "_" + body_name : "") : effect;
+      // each by its symbol, subscripted only where two of a kind meet in the diagram
+      const draw::Name named = names_of(effect, p.body);
+      const std::string word = named.tex, said = named.text;
       if (p.unknown) {
         // an unknown impulse made of unknowns (R = Σ u ∂R/∂u): one arrow along each ∂R/∂u, named by u
         std::vector<symbol> us;
@@ -191,9 +237,12 @@ struct Diagram {
             arrow(f, x, y, at1(p.Rx.diff(u)), at1(p.Ry.diff(u)), draw::Ink::Force, plain_name(model::text(u)), latex(u, names));
           }
         // a known impulse (given, or a pin's: the momentum change less the others): along its solved
-        // value; a ring at its point where it is zero (a pin struck at the centre of percussion)
-        else if (!arrow(f, x, y, solved(p.Rx), solved(p.Ry), draw::Ink::Force, effect, word))
-          zero(f, x, y, effect, word);
+        // value (a pin's as ∫R dt); a ring at its point where it is zero (a pin struck at the
+        // centre of percussion)
+        else {
+          const std::string t = p.reaction ? "\u222b" + said + " dt" : said, tx = p.reaction ? "\\int " + word + "\\,dt" : word;
+          if (!arrow(f, x, y, solved(p.Rx), solved(p.Ry), draw::Ink::Force, t, tx)) zero(f, x, y, t, tx);
+        }
         continue;
       }
       if (!p.M.is_zero()) {
@@ -231,13 +280,17 @@ struct Diagram {
     f.set_glyph(g);
     body(f, at1, b);
     const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+    std::vector<LoadNames::Load> drawn;
+    for (auto& l : loads)
+      if (l.body == b && !l.unknown && !l.symbol.empty()) drawn.push_back({l.effect, l.symbol, b});
+    const LoadNames names_of(m, drawn);
     for (auto& l : loads) {
       if (l.body != b) continue;
       f.owned_by(l.effect);
       const auto [x, y] = on_body(f, at1, b, solved(l.x), solved(l.y));
-      // (a load with a symbol by it: W, F)
-      const std::string word = l.symbol.empty() ? "\\mathrm{" + tex_text(l.effect) + "}" : l.symbol;
-      const std::string said = l.symbol.empty() ? l.effect : l.symbol;
+      // each by its symbol (W, F, P, M), subscripted only where two of a kind meet on the body
+      const draw::Name named = names_of(l.effect, b);
+      const std::string word = named.tex, said = named.text;
       if (!l.M.is_zero()) turning(f, at1(B.x), at1(B.y), solved(l.M), draw::Ink::Force, said, word);
       if (l.Fx.is_zero() && l.Fy.is_zero()) continue;
       if (l.unknown) {

@@ -84,7 +84,7 @@ TEST_CASE("the centre of percussion: the pin's impulse, zero, is drawn as zero a
   int found = 0;
   for (const auto& b : d.blocks) {
     if (!b.sheet || b.sheet->size() != 3) continue;
-    for (const auto& l : b.sheet->panel(1).labels()) found += l.text == "pin = 0";
+    for (const auto& l : b.sheet->panel(1).labels()) found += l.text == "\u222bR dt = 0";  // (the pin's R, as a textbook writes it)
   }
   CHECK(found == 1);
 }

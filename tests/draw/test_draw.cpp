@@ -8,6 +8,7 @@
 
 #include "../support/helpers.hpp"
 #include "kinergy/draw/figure.hpp"
+#include "kinergy/draw/names.hpp"
 #include "../../src/emit/figures.hpp"
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/problem.hpp"
@@ -312,9 +313,10 @@ TEST_CASE("the impact diagram of a sphere striking a pivoted bar: each arrow poi
   CHECK(sp0["m v\u0304"].first > 0);
   // impulses: on the bar the pin's and the contact's, both along +x; on the sphere the contact's along −x
   auto bi = arrows_of(bar_d->panel(1));
-  REQUIRE(bi.count("pin"));
-  CHECK(bi["pin"].first > 0);
-  CHECK(std::fabs(bi["pin"].second) < 1e-9 * std::fabs(bi["pin"].first));
+  const std::string pin = "\u222bR dt";  // (the pin's impulse, as a textbook writes it)
+  REQUIRE(bi.count(pin));
+  CHECK(bi[pin].first > 0);
+  CHECK(std::fabs(bi[pin].second) < 1e-9 * std::fabs(bi[pin].first));
   REQUIRE(bi.size() == 2);
   for (auto& [name, d] : bi) CHECK(d.first > 0);
   auto si = arrows_of(sphere_d->panel(1));
@@ -471,4 +473,109 @@ TEST_CASE("a fixed pin's ground: below the pin, above it where the body hangs fr
     for (const auto& l : f.labels()) named_O += l.text == "O";
     CHECK(named_O == 1);
   }
+}
+
+namespace {
+
+/// The words of a label outside its subscripts: "W_blockA" → "W", "R_{x,\mathrm{axle}}" → "R",
+/// "\int F\,dt" → " F dt" (TeX commands dropped).
+std::string outside_subscripts(const std::string& s, bool tex) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size();) {
+    if (s[i] == '_') {
+      ++i;
+      if (tex && i < s.size() && s[i] == '{') {
+        int depth = 0;
+        do {
+          depth += s[i] == '{' ? 1 : s[i] == '}' ? -1 : 0;
+          ++i;
+        } while (i < s.size() && depth > 0);
+      } else if (tex) {
+        ++i;
+      } else {
+        while (i < s.size() && s[i] != ' ' && s[i] != '_') ++i;
+      }
+      continue;
+    }
+    if (tex && s[i] == '\\') {  // a command: \bar, \int, \, ...
+      ++i;
+      while (i < s.size() && std::isalpha(static_cast<unsigned char>(s[i]))) ++i;
+      out += ' ';
+      continue;
+    }
+    out += s[i++];
+  }
+  return out;
+}
+
+/// The first raw name in a label's words: a '+' before a name, or a run of two or more letters
+/// outside a subscript other than "dt" ("" when none).
+std::string raw_name(const std::string& words) {
+  if (!words.empty() && words[0] == '+') return words;
+  std::smatch m;
+  std::string rest = words;
+  static const std::regex run("[A-Za-z]{2,}");
+  while (std::regex_search(rest, m, run)) {
+    if (m.str() != "dt") return m.str();
+    rest = m.suffix();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("every figure of every derivation names things as a textbook does: no raw name, no '+' (issue 47)", "[draw][derive][labels]") {
+  // θ for theta, φ_A for phiA, W_A for the weight of gearA, N, F, P, M, T by kind; a name of more
+  // than one letter only inside a subscript (R_{x,axle}); the coordinates' senses without "+"
+  CHECK(raw_name(outside_subscripts("W_blockA", false)).empty());
+  CHECK(raw_name(outside_subscripts("R_{x,\\mathrm{axle}}", true)).empty());
+  CHECK(raw_name(outside_subscripts("\\int W_{\\mathrm{rod}}\\,dt", true)).empty());
+  CHECK(raw_name(outside_subscripts("+phiA", false)) == "+phiA");
+  CHECK(raw_name(outside_subscripts("\\mathrm{drive}\\,\\Delta t", true)) == "drive");
+  int labels = 0;
+  std::vector<std::string> faults;
+  for (const auto& file : kt::scene_files("derivations")) {
+    const auto d = kinergy::emit::derive(kinergy::solve_file(file));
+    int k = 0;
+    for (const auto& b : d.blocks) {
+      if (!b.sheet) continue;
+      ++k;
+      for (std::size_t i = 0; i < b.sheet->size(); ++i)
+        for (const auto& l : b.sheet->panel(i).labels()) {
+          ++labels;
+          const std::string bad = raw_name(outside_subscripts(l.text, false)) + raw_name(outside_subscripts(l.tex, true));
+          if (!bad.empty()) faults.push_back(file + " figure " + std::to_string(k) + ": '" + l.text + "' ('" + bad + "')");
+        }
+    }
+  }
+  INFO(labels << " labels");
+  for (auto& f : faults) UNSCOPED_INFO(f);
+  CHECK(faults.empty());
+  CHECK(labels >= 1000);
+}
+
+TEST_CASE("names as a textbook writes them: Greek letters, subscripts, words left as words (issue 47)", "[draw][labels]") {
+  using kinergy::draw::short_name;
+  using kinergy::draw::textbook;
+  auto text = [](const std::string& id) { return textbook(id) ? textbook(id)->text : std::string("-"); };
+  auto tex = [](const std::string& id) { return textbook(id) ? textbook(id)->tex : std::string("-"); };
+  CHECK(text("theta") == "\u03b8");
+  CHECK(tex("theta") == "\\theta");
+  CHECK(text("phiA") == "\u03c6_A");
+  CHECK(tex("phiA") == "\\varphi_{A}");
+  CHECK(text("beta") == "\u03b2");  // (not eta with a b)
+  CHECK(text("mus") == "\u03bc_s");
+  CHECK(text("omega0") == "\u03c9_0");
+  CHECK(text("kd") == "k_d");
+  CHECK(text("OA") == "O_A");
+  CHECK(text("x") == "x");
+  CHECK(tex("v_max") == "v_{\\mathrm{max}}");
+  CHECK(text("rod") == "-");
+  CHECK(text("ball1") == "-");
+  CHECK(text("bumper") == "-");
+  CHECK(short_name("gearA")->text == "A");
+  CHECK(short_name("ball2")->text == "2");
+  CHECK(short_name("A")->text == "A");
+  CHECK_FALSE(short_name("disk"));
+  CHECK_FALSE(short_name("AB2x"));
 }

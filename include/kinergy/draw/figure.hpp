@@ -85,7 +85,7 @@ public:
   void label(double x, double y, const std::string& text, const std::string& tex = "");
   /// A dimension: the size `text` of the segment 1 → 2, on a thin line beside it (to its right)
   /// with a tick at each end.
-  void dimension(double x1, double y1, double x2, double y2, const std::string& text);
+  void dimension(double x1, double y1, double x2, double y2, const std::string& text, const std::string& tex = "");
 
   /// A length that reads as "small" in this figure (for glyphs whose size the scene does not set).
   double glyph() const;
