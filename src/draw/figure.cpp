@@ -89,7 +89,9 @@ void Figure::polyline(std::vector<std::pair<double, double>> pts, Ink ink, bool 
 
 void Figure::circle(double cx, double cy, double r, Ink ink, bool filled) { push({Shape::Circle, {{cx, cy}}, r, ink, filled, "", ""}); }
 
-void Figure::arrow(double x1, double y1, double x2, double y2, Ink ink) { push({Shape::Arrow, {{x1, y1}, {x2, y2}}, 0, ink, false, "", ""}); }
+void Figure::arrow(double x1, double y1, double x2, double y2, Ink ink, double magnitude) {
+  push({Shape::Arrow, {{x1, y1}, {x2, y2}}, 0, ink, false, "", "", magnitude});
+}
 
 void Figure::arc_arrow(double cx, double cy, double r, double a0, double a1, Ink ink) {
   // the arc as a polyline, its head drawn at the end when written

@@ -95,7 +95,9 @@ private:
   void figure(draw::Sheet sheet, const std::string& caption) override {
     // numbered in order, as `kinergy draw --figure N` finds them
     ++figures_;
-    Block b{Block::Kind::Figure, "Figure " + std::to_string(figures_) + ": " + caption + samples_, {}, {}, {}, {}, nullptr};
+    // (what the drawing says of itself — its scale, the arrows not drawn to it — after the caption)
+    const std::string note = sheet.note.empty() ? "" : " " + sheet.note;
+    Block b{Block::Kind::Figure, "Figure " + std::to_string(figures_) + ": " + caption + note + samples_, {}, {}, {}, {}, nullptr};
     b.sheet = std::make_shared<const draw::Sheet>(std::move(sheet));
     d_.blocks.push_back(std::move(b));
   }

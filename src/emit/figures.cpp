@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "kinergy/common/error.hpp"
-#include "kinergy/draw/names.hpp"
 #include "kinergy/draw/names.hpp"
 #include "kinergy/model/model.hpp"
 #include "kinergy/model/simplify.hpp"
@@ -82,6 +82,35 @@ struct Diagram {
   draw::At at1, at2;
   double g = 0, len = 0;  // glyph, and the length every arrow is drawn with (directions only)
   std::map<int, double> rims = {};  // a wheel known by k: its rim as the scene drawing has it (a pitch circle)
+  // One scale for the arrows of an impulse–momentum equation (0: each as long as `len`): the
+  // length per unit of momentum or impulse, so that the drawn sum closes. What a first drawing
+  // finds (the sizes), and what the caption says of the arrows not drawn to it.
+  double scale = 0;
+  mutable std::vector<double> seen = {};
+  mutable std::vector<std::string> lengthened = {}, direction_only = {}, negative = {};
+  mutable std::string about = "";  // what the arrow being drawn stands for, as a caption says it
+
+  // `what` added to `list` once
+  static void once(std::vector<std::string>& list, const std::string& what) {
+    if (std::find(list.begin(), list.end(), what) == list.end()) list.push_back(what);
+  }
+
+  // what the caption says of the scale and of the arrows not drawn to it (empty when nothing)
+  std::string note() const {
+    if (!(scale > 0) && direction_only.empty()) return "";
+    auto list = [](const std::vector<std::string>& v) {
+      std::string out;
+      for (std::size_t i = 0; i < v.size(); ++i) out += (i == 0 ? "" : i + 1 == v.size() ? " and " : ", ") + v[i];
+      return out;
+    };
+    std::string out = scale > 0 ? "Momenta and impulses are drawn to one scale, each arrow as long as its size." : "";
+    if (!lengthened.empty()) out += " Too short at that scale, drawn longer: " + list(lengthened) + ".";
+    if (!direction_only.empty()) out += std::string(out.empty() ? "" : " ") + "Drawn by direction only (its size not known alone): " + list(direction_only) + ".";
+    if (!negative.empty())
+      out += " " + list(negative) + (negative.size() > 1 ? " come" : " comes") + " out negative: drawn in the sense the equations take, " +
+             (negative.size() > 1 ? "they act" : "it acts") + " the other way.";
+    return out;
+  }
 
   void body(draw::Figure& f, const draw::At& at, int b) const {
     const auto r = rims.find(b);
@@ -103,15 +132,30 @@ struct Diagram {
     return p(v);
   }
 
-  // an arrow from (x, y) along (dx, dy), labelled, `length` long (the diagram's length when 0);
-  // false when it has no direction
+  // an arrow from (x, y) along (dx, dy), labelled, standing for a size `magnitude`: drawn to the
+  // diagram's scale where it has one (at least a glyph long, else said), else `len` long; false
+  // when it has no direction
   bool arrow(draw::Figure& f, double x, double y, double dx, double dy, draw::Ink ink, const std::string& text, const std::string& tex,
-             double length = 0) const {
+             double magnitude = std::numeric_limits<double>::quiet_NaN()) const {
     const double d = std::hypot(dx, dy);
     if (!(d > 0) || !std::isfinite(d) || !std::isfinite(x) || !std::isfinite(y)) return false;
-    if (!(length > 0)) length = len;
+    const bool sized = std::isfinite(magnitude) && magnitude > 0;
+    if (sized) seen.push_back(magnitude);
+    double length = len, to_scale = std::numeric_limits<double>::quiet_NaN();
+    if (scale > 0 && sized) {
+      // length = scale × size, down to a glyph (so that its direction still shows)
+      length = scale * magnitude;
+      if (length < g) {
+        length = g;
+        once(lengthened, about.empty() ? text : about);
+      } else {
+        to_scale = magnitude;
+      }
+    } else if (!sized) {
+      once(direction_only, about.empty() ? text : about);
+    }
     const double ex_ = x + length * dx / d, ey = y + length * dy / d;
-    f.arrow(x, y, ex_, ey, ink);
+    f.arrow(x, y, ex_, ey, ink, to_scale);
     f.label(ex_, ey, text, tex);
     return true;
   }
@@ -160,13 +204,13 @@ struct Diagram {
     return std::fabs(at(B.mass)) * std::hypot(at(m.rate(B.x)), at(m.rate(B.y)));
   }
 
-  // the largest |m v̄| of the set at either state: the momentum arrows' lengths go by it
-  double largest_momentum() const {
-    double p = 0;
-    for (const draw::At* at : {&at1, &at2})
-      for (int b : bodies)
-        if (const double v = momentum(*at, b); std::isfinite(v)) p = std::max(p, v);
-    return p;
+  // |∫F dt| over the analysis of a known force (NaN where it changes with the motion, or is a
+  // support's whose size no equation gives): F Δt for a constant F, else its integral in t
+  double impulse_size(const principles::Push& p) const {
+    if (p.assumed || !principles::motion_free(m, p.Fx) || !principles::motion_free(m, p.Fy)) return std::numeric_limits<double>::quiet_NaN();
+    const auto Ix = principles::over_duration(m, p.Fx, a), Iy = principles::over_duration(m, p.Fy, a);
+    if (!Ix || !Iy) return std::numeric_limits<double>::quiet_NaN();
+    return std::hypot(solved(*Ix), solved(*Iy));
   }
 
   // momenta at a state: m v̄ at each mass centre, Ī ω round it. An arrow's length goes with the
@@ -176,21 +220,21 @@ struct Diagram {
   draw::Figure momenta(const draw::At& at) const {
     draw::Figure f;
     f.set_glyph(g);
-    const double p_max = largest_momentum(), longest = 1.4 * len;
     for (int b : bodies) {
       body(f, at, b);
       const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
       const double x = at(B.x), y = at(B.y);
-      const double p = momentum(at, b);
-      const double length = p_max > 0 && std::isfinite(p) ? longest * std::max(0.25, p / p_max) : len;
+      const double p = momentum(at, b);  // (its arrow to the diagram's scale)
+      about = "the momentum of " + B.name;
       const std::string sub = bodies.size() > 1 ? body_sub(m, b) : "";
       const draw::Name ms = draw::subscripted({"m", "m"}, sub), vs = draw::subscripted({"v\u0304", "\\bar{v}"}, sub);
-      arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, ms.text + " " + vs.text, ms.tex + vs.tex, length);
+      arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, ms.text + " " + vs.text, ms.tex + vs.tex, p);
       if (at(B.inertia) > 0) {
         const draw::Name Is = draw::subscripted({"I\u0304", "\\bar{I}"}, sub), ws = draw::subscripted({"\u03c9", "\\omega"}, sub);
         turning(f, x, y, at(m.omega(b)), draw::Ink::Momentum, Is.text + " " + ws.text, Is.tex + ws.tex);
       }
     }
+    about = "";
     about_point(f, at);
     return f;
   }
@@ -216,6 +260,7 @@ struct Diagram {
     for (auto& [effect, p] : shown) {
       if (!in_set(p.body)) continue;
       f.owned_by(effect);  // (what the check of the diagram against its equations reads)
+      about = "the impulse of " + effect;
       const auto [x, y] = on_body(f, at1, p.body, at1(p.arm_x), at1(p.arm_y));
       // each by its symbol, subscripted only where two of a kind meet in the diagram
       const draw::Name named = names_of(effect, p.body);
@@ -233,15 +278,20 @@ struct Diagram {
         const bool made_of_unknowns = !us.empty() && expand(restx).is_zero() && expand(resty).is_zero();
         if (made_of_unknowns)
           for (const symbol& u : us) {
-            // named as written, without the states an impulse is bound to ("J_hit[before,after]")
-            arrow(f, x, y, at1(p.Rx.diff(u)), at1(p.Ry.diff(u)), draw::Ink::Force, plain_name(model::text(u)), latex(u, names));
+            // named as written, without the states an impulse is bound to ("J_hit[before,after]"),
+            // in the sense the equations take it, as long as its solved size (said where negative)
+            const double dx = at1(p.Rx.diff(u)), dy = at1(p.Ry.diff(u)), v = solved(u);
+            const std::string name = plain_name(model::text(u));
+            arrow(f, x, y, dx, dy, draw::Ink::Force, name, latex(u, names), std::fabs(v) * std::hypot(dx, dy));
+            if (v < 0 && scale > 0) once(negative, name);
           }
         // a known impulse (given, or a pin's: the momentum change less the others): along its solved
         // value (a pin's as ∫R dt); a ring at its point where it is zero (a pin struck at the
         // centre of percussion)
         else {
           const std::string t = p.reaction ? "\u222b" + said + " dt" : said, tx = p.reaction ? "\\int " + word + "\\,dt" : word;
-          if (!arrow(f, x, y, solved(p.Rx), solved(p.Ry), draw::Ink::Force, t, tx)) zero(f, x, y, t, tx);
+          const double jx = solved(p.Rx), jy = solved(p.Ry);
+          if (!arrow(f, x, y, jx, jy, draw::Ink::Force, t, tx, std::hypot(jx, jy))) zero(f, x, y, t, tx);
         }
         continue;
       }
@@ -264,12 +314,14 @@ struct Diagram {
       const bool varies = p.Fx.has(m.t) || p.Fy.has(m.t) || p.assumed;
       const std::string text = varies ? "\u222b" + said + " dt" : said + " \u0394t";
       const std::string tex = varies ? "\\int " + word + "\\,dt" : word + "\\,\\Delta t";
-      if (!arrow(f, x, y, at1(p.Fx), at1(p.Fy), draw::Ink::Force, text, tex)) {
+      const double size = impulse_size(p);
+      if (!arrow(f, x, y, at1(p.Fx), at1(p.Fy), draw::Ink::Force, text, tex, size)) {
         const auto [x2, y2] = on_body(f, at2, p.body, at2(p.arm_x), at2(p.arm_y));
-        if (!arrow(f, x2, y2, at2(p.Fx), at2(p.Fy), draw::Ink::Force, text, tex)) zero(f, x, y, said, word);
+        if (!arrow(f, x2, y2, at2(p.Fx), at2(p.Fy), draw::Ink::Force, text, tex, size)) zero(f, x, y, said, word);
       }
     }
     f.owned_by("");
+    about = "";
     about_point(f, at1);
     return f;
   }
@@ -398,12 +450,25 @@ std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Anal
   d.g = std::max(draw::glyph_for(m, d.at1), draw::glyph_for(m, d.at2));
   d.len = 5 * d.g;
   const std::string S1 = m.states[static_cast<std::size_t>(a.from)].name, S2 = m.states[static_cast<std::size_t>(a.to)].name;
-  draw::Sheet sheet;
-  sheet.add(d.momenta(d.at1), "momenta at " + S1);
-  sheet.then("+", "+");
-  sheet.add(d.impulses(shown), a.instant() ? "impulses in the impact" : "impulses from " + S1 + " to " + S2);
-  sheet.then("=", "=");
-  sheet.add(d.momenta(d.at2), "momenta at " + S2);
+  auto panels = [&] {
+    draw::Sheet sheet;
+    sheet.add(d.momenta(d.at1), "momenta at " + S1);
+    sheet.then("+", "+");
+    sheet.add(d.impulses(shown), a.instant() ? "impulses in the impact" : "impulses from " + S1 + " to " + S2);
+    sheet.then("=", "=");
+    sheet.add(d.momenta(d.at2), "momenta at " + S2);
+    return sheet;
+  };
+  // one scale for the momenta and impulses of the equation, so that the drawn sum closes: the
+  // largest 1.4 times the diagram's length (a first drawing finds the sizes)
+  (void)panels();
+  const double largest = d.seen.empty() ? 0 : *std::max_element(d.seen.begin(), d.seen.end());
+  if (largest > 0) d.scale = 1.4 * d.len / largest;
+  d.lengthened.clear();
+  d.direction_only.clear();
+  d.negative.clear();
+  draw::Sheet sheet = panels();
+  sheet.note = d.note();
   std::vector<std::string> all = held;
   for (auto& e : outside_supports(m, bodies))
     if (std::find(all.begin(), all.end(), e) == all.end()) all.push_back(e);

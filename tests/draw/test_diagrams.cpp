@@ -137,3 +137,41 @@ TEST_CASE("every derivation's impulse-momentum and free-body diagrams: each forc
   CHECK(faults.empty());
   CHECK(arrows >= 150);
 }
+
+TEST_CASE("every impulse-momentum diagram draws its momenta and impulses to one scale, the exceptions said (issue 47)",
+          "[draw][diagram][scale]") {
+  // each arrow drawn to scale is as long as its size times the diagram's one scale (to 1 %); an
+  // arrow that is not (too short, or a size no equation gives alone) is named in the caption
+  int diagrams = 0, to_scale = 0;
+  std::vector<std::string> faults;
+  for (const auto& file : kt::scene_files("derivations")) {
+    const auto d = kinergy::emit::derive(kinergy::solve_file(file));
+    for (const auto& b : d.blocks) {
+      if (!b.sheet || b.sheet->size() != 3 || b.title.find("Impulse-momentum diagram") == std::string::npos) continue;
+      ++diagrams;
+      if (b.title.find(b.sheet->note) == std::string::npos) faults.push_back(file + ": the caption does not say the scale");
+      double ratio = 0;
+      int off = 0;
+      for (std::size_t i = 0; i < 3; ++i)
+        for (const auto& s : b.sheet->panel(i).shapes()) {
+          if (s.kind != kd::Figure::Shape::Arrow || (s.ink != kd::Ink::Force && s.ink != kd::Ink::Momentum)) continue;
+          if (!std::isfinite(s.magnitude)) {
+            ++off;
+            continue;
+          }
+          const double r = std::hypot(s.pts[1].first - s.pts[0].first, s.pts[1].second - s.pts[0].second) / s.magnitude;
+          ++to_scale;
+          if (ratio == 0) ratio = r;
+          else if (std::fabs(r - ratio) > 0.01 * ratio) faults.push_back(file + ": an arrow off the diagram's scale (" + std::to_string(r / ratio) + ")");
+        }
+      const bool said = b.sheet->note.find("drawn longer") != std::string::npos || b.sheet->note.find("direction only") != std::string::npos;
+      if (off > 0 && !said) faults.push_back(file + ": " + std::to_string(off) + " arrows not to scale and not said: " + b.title);
+      if (ratio > 0 && b.sheet->note.rfind("Momenta and impulses are drawn to one scale", 0) != 0) faults.push_back(file + ": no scale said: " + b.title);
+    }
+  }
+  INFO(diagrams << " diagrams, " << to_scale << " arrows to scale");
+  for (auto& f : faults) UNSCOPED_INFO(f);
+  CHECK(faults.empty());
+  CHECK(diagrams >= 30);
+  CHECK(to_scale >= 100);
+}

@@ -2,6 +2,7 @@
 /// as SVG: the scene's bodies, points and effects drawn at a state.
 #pragma once
 #include <array>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -39,6 +40,9 @@ public:
     bool filled = false;
     std::string id;  ///< data-name of a marked point, for reading positions back
     std::string owner;  ///< what it draws: an effect's name, or an implied connector's ("cord drum-load")
+    /// An arrow drawn to its figure's scale: the size it stands for (a momentum's, an impulse's);
+    /// NaN for an arrow that shows a direction only.
+    double magnitude = std::numeric_limits<double>::quiet_NaN();
   };
   struct Label {
     double x, y;  ///< the anchor, world coordinates
@@ -54,8 +58,9 @@ public:
   void line(double x1, double y1, double x2, double y2, Ink ink = Ink::Body);
   void polyline(std::vector<std::pair<double, double>> pts, Ink ink, bool closed = false, bool filled = false);
   void circle(double cx, double cy, double r, Ink ink = Ink::Body, bool filled = false);
-  /// An arrow from (x1, y1) to (x2, y2), its head at the end.
-  void arrow(double x1, double y1, double x2, double y2, Ink ink = Ink::Force);
+  /// An arrow from (x1, y1) to (x2, y2), its head at the end; `magnitude`: the size it stands for,
+  /// where it is drawn to the figure's scale.
+  void arrow(double x1, double y1, double x2, double y2, Ink ink = Ink::Force, double magnitude = std::numeric_limits<double>::quiet_NaN());
   /// A curved arrow round (cx, cy) of radius r from angle a0 to a1 (rad), its head at a1.
   void arc_arrow(double cx, double cy, double r, double a0, double a1, Ink ink = Ink::Force);
   /// A named point: a small marker of fixed size on the page, its world place kept as data.
@@ -121,6 +126,9 @@ public:
   void add(Figure f, std::string title = "", std::string title_tex = "");
   /// Words between the last panel added and the next ("+", "="), plain and in TeX's math mode.
   void then(std::string text, std::string tex);
+  /// What a caption should say of the drawing (its scale, the arrows not drawn to it); "" when
+  /// nothing.
+  std::string note;
 
   /// An SVG document at most `width` pixels wide and `max_height` high; each panel's world in its
   /// own group (data-world="metres", data-panel="i") whose transform maps metres to pixels.
