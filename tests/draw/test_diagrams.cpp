@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../support/helpers.hpp"
+#include "each_figure.hpp"
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/emit/latex.hpp"
@@ -144,10 +145,9 @@ TEST_CASE("every impulse-momentum diagram draws its momenta and impulses to one 
   // arrow that is not (too short, or a size no equation gives alone) is named in the caption
   int diagrams = 0, to_scale = 0;
   std::vector<std::string> faults;
-  for (const auto& file : kt::scene_files("derivations")) {
-    const auto d = kinergy::emit::derive(kinergy::solve_file(file));
-    for (const auto& b : d.blocks) {
-      if (!b.sheet || b.sheet->size() != 3 || b.title.find("Impulse-momentum diagram") == std::string::npos) continue;
+  kt::each_figure([&](const std::string& file, int, const kinergy::emit::Block& b) {
+    {
+      if (b.sheet->size() != 3 || b.title.find("Impulse-momentum diagram") == std::string::npos) return;
       ++diagrams;
       if (b.title.find(b.sheet->note) == std::string::npos) faults.push_back(file + ": the caption does not say the scale");
       double ratio = 0;
@@ -168,7 +168,7 @@ TEST_CASE("every impulse-momentum diagram draws its momenta and impulses to one 
       if (off > 0 && !said) faults.push_back(file + ": " + std::to_string(off) + " arrows not to scale and not said: " + b.title);
       if (ratio > 0 && b.sheet->note.rfind("Momenta and impulses are drawn to one scale", 0) != 0) faults.push_back(file + ": no scale said: " + b.title);
     }
-  }
+  });
   INFO(diagrams << " diagrams, " << to_scale << " arrows to scale");
   for (auto& f : faults) UNSCOPED_INFO(f);
   CHECK(faults.empty());

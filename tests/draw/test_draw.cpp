@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "../support/helpers.hpp"
+#include "each_figure.hpp"
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/draw/names.hpp"
 #include "../../src/emit/figures.hpp"
@@ -407,12 +408,8 @@ TEST_CASE("every figure of every derivation: no label over another, over a title
   // laid out as the HTML page (svg()) and the LaTeX (tikz(): the widths derive_latex asks for) lay them out
   int figures = 0, labels = 0;
   std::vector<std::string> faults;
-  for (const auto& file : kt::scene_files("derivations")) {
-    const auto d = kinergy::emit::derive(kinergy::solve_file(file));
-    int k = 0;
-    for (const auto& b : d.blocks) {
-      if (!b.sheet) continue;
-      ++k;
+  kt::each_figure([&](const std::string& file, int k, const kinergy::emit::Block& b) {
+    {
       ++figures;
       const bool several = b.sheet->size() > 1;
       // (the HTML page's SVG; the LaTeX's TikZ, its words at 8 pt, as wide as derive_latex asks)
@@ -443,7 +440,7 @@ TEST_CASE("every figure of every derivation: no label over another, over a title
         }
       }
     }
-  }
+  });
   INFO(figures << " figures, " << labels << " labels");
   for (auto& f : faults) UNSCOPED_INFO(f);
   CHECK(faults.empty());
@@ -534,20 +531,14 @@ TEST_CASE("every figure of every derivation names things as a textbook does: no 
   CHECK(raw_name(outside_subscripts("\\mathrm{drive}\\,\\Delta t", true)) == "drive");
   int labels = 0;
   std::vector<std::string> faults;
-  for (const auto& file : kt::scene_files("derivations")) {
-    const auto d = kinergy::emit::derive(kinergy::solve_file(file));
-    int k = 0;
-    for (const auto& b : d.blocks) {
-      if (!b.sheet) continue;
-      ++k;
-      for (std::size_t i = 0; i < b.sheet->size(); ++i)
-        for (const auto& l : b.sheet->panel(i).labels()) {
-          ++labels;
-          const std::string bad = raw_name(outside_subscripts(l.text, false)) + raw_name(outside_subscripts(l.tex, true));
-          if (!bad.empty()) faults.push_back(file + " figure " + std::to_string(k) + ": '" + l.text + "' ('" + bad + "')");
-        }
-    }
-  }
+  kt::each_figure([&](const std::string& file, int k, const kinergy::emit::Block& b) {
+    for (std::size_t i = 0; i < b.sheet->size(); ++i)
+      for (const auto& l : b.sheet->panel(i).labels()) {
+        ++labels;
+        const std::string bad = raw_name(outside_subscripts(l.text, false)) + raw_name(outside_subscripts(l.tex, true));
+        if (!bad.empty()) faults.push_back(file + " figure " + std::to_string(k) + ": '" + l.text + "' ('" + bad + "')");
+      }
+  });
   INFO(labels << " labels");
   for (auto& f : faults) UNSCOPED_INFO(f);
   CHECK(faults.empty());
