@@ -791,16 +791,16 @@ private:
     // a branch that breaks what the effects declare (a point off its track, a one-sided spring
     // taken as acting where it does not) is no solution of the scene
     std::vector<solve::Branch> kept;
-    std::optional<SceneError> first;
+    std::vector<std::pair<solve::Branch, SceneError>> broken;  // (what each dropped branch breaks)
     for (auto& b : branches) {
       try {
         check_declared(b);
         kept.push_back(b);
       } catch (const SceneError& e) {
-        if (!first) first = e;
+        broken.push_back({b, e});
       }
     }
-    if (kept.empty()) throw *first;
+    if (kept.empty()) throw broken.front().second;
     // a branch whose states the motion does not reach (the kinetic energy negative on the way, a
     // rest on the far side of the way the motion goes) is no solution either; a root choice that
     // asks for one is refused with that reason
@@ -822,16 +822,22 @@ private:
       // was asked for, the choice among those reached stands as it is)
       const Selector sel{m, env, given};
       const bool asked = std::any_of(m.finds.begin(), m.finds.end(), [](const model::Find& f) { return f.root.kind != model::RootSpec::Kind::None; });
-      for (auto& [b, why] : unreached) {
-        bool meets = asked;
+      // (does branch b give every result the root asked for?)
+      auto meets = [&](const solve::Branch& b) {
+        bool all = asked;
         for (auto& f : m.finds) {
           if (f.root.kind == model::RootSpec::Kind::None) continue;
           auto v = sel.find_value(f, b);
-          meets = meets && (!v || sel.meets(f.root, *v, numerics::tracing() ? sel.find_form(f, b) : ex()));
+          all = all && (!v || sel.meets(f.root, *v, numerics::tracing() ? sel.find_form(f, b) : ex()));
         }
-        if (meets)
-          throw SceneError(why.pos(), "the root asked for gives a solution the motion does not reach: " + why.problem(), why.fix());
-      }
+        return all;
+      };
+      for (auto& [b, why] : unreached)
+        if (meets(b)) throw SceneError(why.pos(), "the root asked for gives a solution the motion does not reach: " + why.problem(), why.fix());
+      // or one that breaks what the scene declares (a body through a surface that only pushes)
+      for (auto& [b, why] : broken)
+        if (meets(b))
+          throw SceneError(why.pos(), "the root asked for gives a solution the scene's supports do not allow: " + why.problem(), why.fix());
       throw;
     }
     for (auto& a : m.analyses) {

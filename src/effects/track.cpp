@@ -17,6 +17,7 @@
 // constraints, and at every state once the states are solved.
 
 #include "common.hpp"
+#include "kinergy/model/inertia.hpp"
 #include <map>
 
 #include "kinergy/numeric/evaluate.hpp"
@@ -26,6 +27,45 @@
 namespace kinergy::effects {
 
 namespace {
+
+/// The points of a body's outline that reach furthest (a rod's ends, a plate's corners, a disk's
+/// rim at 24 places), with the body's size, at the values `num` gives: (x, y, size). A particle,
+/// and a wheel known by its radius of gyration alone, have none.
+template <class Num>
+std::vector<std::array<double, 3>> outline_points(const model::Body& B, Num num) {
+  std::vector<std::array<double, 3>> out;
+  const double gx = num(B.x), gy = num(B.y), phi = num(B.angle);
+  auto shape_points = [&](const std::string& shape, const std::vector<ex>& sizes, double cx, double cy, double turn) {
+    if (shape.empty() || sizes.empty()) return;
+    const model::InertiaShape& s = model::inertia_shape(shape);
+    const double a = num(sizes[0]), b = sizes.size() > 1 ? num(sizes[1]) : a, c = std::cos(turn), d = std::sin(turn);
+    auto put = [&](double lx, double ly, double size) { out.push_back({cx + c * lx - d * ly, cy + d * lx + c * ly, size}); };
+    switch (s.outline) {
+      case model::Outline::Bar:
+        put(-a / 2, 0, a), put(a / 2, 0, a);
+        break;
+      case model::Outline::EdgeOn:
+        put(s.span == 1 ? -a / 2 : -a, 0, a), put(s.span == 1 ? a / 2 : a, 0, a);
+        break;
+      case model::Outline::Rect:
+        for (int i : {-1, 1})
+          for (int j : {-1, 1}) put(i * a / 2, j * b / 2, std::max(a, b));
+        break;
+      case model::Outline::Round:
+        for (int k = 0; k < 24; ++k) put(a * std::cos(k * M_PI / 12), a * std::sin(k * M_PI / 12), 2 * a);
+        break;
+      default:
+        break;
+    }
+  };
+  if (B.parts.empty()) shape_points(B.shape, B.sizes, gx, gy, phi);
+  for (auto& part : B.parts) {
+    const double lx = num(part.lx), ly = num(part.ly);
+    shape_points(part.shape, part.sizes, gx + std::cos(phi) * lx - std::sin(phi) * ly, gy + std::sin(phi) * lx + std::cos(phi) * ly,
+                 phi + num(part.angle));
+  }
+  return out;
+}
 
 class Track : public Effect {
 public:
@@ -181,6 +221,43 @@ public:
       throw SceneError(pos, "track '" + name + "': " + p.text + " is " + off + " off " + shape + " at state '" +
                                 m.states[state].name + "'",
                        "fix the body's position/angle, the point or the track so that " + p.text + " stays on it");
+    check_pose(m, state, at);
+  }
+
+  // A surface that only pushes holds a body by one of its points (a rod's end on a floor): the
+  // rest of the body stays on the side it pushes toward — at no outline point is
+  //   (r − r₀)·n̂ < 0   (n̂ the way it pushes)
+  // by more than a millionth of the body's size. (A body held by its mass centre is drawn with
+  // the surface at its edge: nothing to tell.)
+  void check_pose(const Model& m, int state, const GiNaC::exmap& at) const {
+    if (!pushes || circle || p.body < 0 || p.ground || (p.lx.is_zero() && p.ly.is_zero() && !p.world_place)) return;
+    const model::Body& B = m.bodies[static_cast<std::size_t>(p.body)];
+    auto num = [&](const ex& e) {
+      try {
+        const ex v = e.subs(at).evalf();
+        return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real() ? GiNaC::ex_to<GiNaC::numeric>(v).to_double()
+                                                                                          : std::nan("");
+      } catch (const std::exception&) {
+        return std::nan("");
+      }
+    };
+    const double nx = pushes * -num(ty), ny = pushes * num(tx), n = std::hypot(nx, ny), X0 = num(x0), Y0 = num(y0);
+    double deepest = 0, size = 0, wx = 0, wy = 0;
+    for (auto [px, py, extent] : outline_points(B, num)) {
+      const double depth = ((px - X0) * nx + (py - Y0) * ny) / n;
+      size = std::max(size, extent);
+      if (std::isfinite(depth) && depth < deepest) deepest = depth, wx = px, wy = py;
+    }
+    if (!(deepest < -1e-6 * size)) return;
+    // (a place a rounding's width from 0 is 0)
+    if (std::fabs(wx) < 1e-12 * size) wx = 0;
+    if (std::fabs(wy) < 1e-12 * size) wy = 0;
+    throw SceneError(pos, "track '" + name + "' only pushes, and at state '" + m.states[state].name + "' " + B.name + " reaches " +
+                              numerics::g_text(-deepest, 4) + " m through it (at [" +
+                              numerics::g_text(wx, 4) + ", " +
+                              numerics::g_text(wy, 4) + "]): a body rests on a surface, it does not pass through it",
+                     "give state '" + m.states[state].name + "' a position with " + B.name + " on the side '" + name +
+                         "' pushes it to (an angle the other way, or the surface's 'pushes' turned round)");
   }
 };
 

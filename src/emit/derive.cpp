@@ -83,6 +83,7 @@ private:
   exmap given_;
   std::vector<std::string> tag_of_;  ///< tag of each equation of s_.equations where first shown
   int figures_ = 0;
+  std::vector<std::vector<std::string>> prints_;  ///< each figure's panels as panel_print writes them
   std::string samples_;  ///< " Drawn with sample values …: L = 1 m." when some parameter has no value
   std::string legend_;  ///< the tags the analysis kinds add ("N Newton's second law at a state, ")
 
@@ -93,6 +94,19 @@ private:
   void subsection(const std::string& t) override { d_.blocks.push_back({Block::Kind::Subsection, t, {}, {}, {}, {}, nullptr}); }
   void para(Spans sp) override { d_.blocks.push_back({Block::Kind::Paragraph, "", std::move(sp), {}, {}, {}, nullptr}); }
   void figure(draw::Sheet sheet, const std::string& caption) override {
+    // a figure whose every panel an earlier figure has already drawn (the positions of an energy
+    // analysis where every effect does work, as the scene at its states) is not drawn again: said
+    std::vector<std::string> prints;
+    for (std::size_t i = 0; i < sheet.size(); ++i) prints.push_back(panel_print(sheet.panel(i)));
+    for (std::size_t k = 0; k < prints_.size(); ++k)
+      if (std::all_of(prints.begin(), prints.end(), [&](const std::string& p) {
+            return std::find(prints_[k].begin(), prints_[k].end(), p) != prints_[k].end();
+          })) {
+        const std::string said = caption.empty() || caption.back() != '.' ? caption : caption.substr(0, caption.size() - 1);
+        para({W(said + ": as drawn in Figure " + std::to_string(k + 1) + ".")});
+        return;
+      }
+    prints_.push_back(std::move(prints));
     // numbered in order, as `kinergy draw --figure N` finds them
     ++figures_;
     // (what the drawing says of itself — its scale, the arrows not drawn to it — after the caption)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "kinergy/common/error.hpp"
@@ -375,6 +376,27 @@ struct Diagram {
 };
 
 }  // namespace
+
+/// What a panel draws, to tell two alike: its marks where they are (to the micrometre), and the
+/// owner, kind and ink of every other stroke, and its labels' words — not the glyph size, which
+/// differs between sheets of the same drawing.
+std::string panel_print(const draw::Figure& f) {
+  std::vector<std::string> parts;
+  for (const auto& s : f.shapes()) {
+    if (s.kind == draw::Figure::Shape::Mark && !s.pts.empty()) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, " %.6f %.6f", s.pts[0].first, s.pts[0].second);
+      parts.push_back("mark " + s.id + buf);
+    } else {
+      parts.push_back("shape " + std::to_string(static_cast<int>(s.kind)) + " " + std::to_string(static_cast<int>(s.ink)) + " " + s.owner);
+    }
+  }
+  for (const auto& l : f.labels()) parts.push_back("label " + l.text);
+  std::sort(parts.begin(), parts.end());
+  std::string out;
+  for (auto& x : parts) out += x + "\n";
+  return out;
+}
 
 std::vector<std::string> outside_supports(const model::Model& m, const std::vector<int>& bodies) {
   auto in = [&](int b) { return b >= 0 && std::find(bodies.begin(), bodies.end(), b) != bodies.end(); };

@@ -30,6 +30,11 @@ std::optional<draw::Sheet> momentum_diagram(const Solution& s, const model::Anal
                                           const std::vector<principles::Shown>& shown, const std::vector<std::string>& held,
                                           const TexSymbols* names);
 
+/// What a panel draws, to tell two alike: its marks where they are (to the micrometre), the owner,
+/// kind and ink of every other stroke, and its labels' words — not the glyph size, which differs
+/// between sheets of the same drawing.
+std::string panel_print(const draw::Figure& f);
+
 /// The supports that act on the set `bodies` from outside it: a pin, a track or a relation with a
 /// party in the set and the other not (the ground, a fixed point, a body left out).
 std::vector<std::string> outside_supports(const model::Model& m, const std::vector<int>& bodies);

@@ -2,6 +2,7 @@
 // the equations name them.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -174,4 +175,28 @@ TEST_CASE("every impulse-momentum diagram draws its momenta and impulses to one 
   CHECK(faults.empty());
   CHECK(diagrams >= 30);
   CHECK(to_scale >= 100);
+}
+
+TEST_CASE("no two figures of a worked solution alike: one an earlier figure draws is said, not drawn again (issue 47)",
+          "[draw][diagram][figures]") {
+  // a figure is alike an earlier one when each of its panels is one of the earlier one's (the
+  // same marks at the same places, the same strokes and words)
+  int figures = 0;
+  std::vector<std::string> faults;
+  std::string last;
+  std::vector<std::vector<std::string>> seen;
+  kt::each_figure([&](const std::string& file, int k, const kinergy::emit::Block& b) {
+    if (file != last) seen.clear(), last = file;
+    ++figures;
+    std::vector<std::string> prints;
+    for (std::size_t i = 0; i < b.sheet->size(); ++i) prints.push_back(kinergy::emit::panel_print(b.sheet->panel(i)));
+    for (std::size_t j = 0; j < seen.size(); ++j)
+      if (std::all_of(prints.begin(), prints.end(), [&](const std::string& p) { return std::find(seen[j].begin(), seen[j].end(), p) != seen[j].end(); }))
+        faults.push_back(file + ": figure " + std::to_string(k) + " is alike figure " + std::to_string(j + 1));
+    seen.push_back(prints);
+  });
+  INFO(figures << " figures");
+  for (auto& f : faults) UNSCOPED_INFO(f);
+  CHECK(faults.empty());
+  CHECK(figures >= 150);
 }

@@ -120,7 +120,7 @@ TEST_CASE("kinergy draw: a scene whose parameters have no value, at a sample val
       ++figures;
       CHECK(b.title.find("Drawn with sample values for the parameters that have none: L = 1 m.") != std::string::npos);
     }
-  CHECK(figures >= 2);
+  CHECK(figures >= 1);  // (the positions of its energy analysis are the scene's: not drawn twice)
 }
 
 TEST_CASE("kinergy draw: SVG on standard output or to a file, and what is refused", "[draw][cli]") {

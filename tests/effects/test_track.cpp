@@ -113,8 +113,10 @@ TEST_CASE("a track says whether it can only push or holds both ways", "[effects]
   REQUIRE_THROWS_WITH(solve_text(with(line + ", pushes: left}")), Catch::Contains("is not across the line through [0, 0] along [1, 0]"));
   REQUIRE_THROWS_WITH(solve_text(with(line + ", pushes: [1, 1]}")), Catch::Contains("this direction is not across"));
   REQUIRE_THROWS_WITH(solve_text(with(line + ", pushes: outward}")), Catch::Contains("not 'outward'"));
-  CHECK_NOTHROW(solve_text(with(line + ", pushes: [0, 3]}")));
+  CHECK_NOTHROW(solve_text(with(line + ", pushes: [0, -3]}")));
   CHECK_NOTHROW(solve_text(with(line + ", pushes: down}")));
+  // (the sliding rod hangs below its end A: a surface there that pushes up would have it through it)
+  REQUIRE_THROWS_WITH(solve_text(with(line + ", pushes: [0, 3]}")), Catch::Contains("track 'slot' only pushes, and at state '2' rod reaches"));
   auto dome = derivation("kinetics/ball_leaves_dome.yaml");
   REQUIRE_THROWS_WITH(solve_text(edit(dome, "pushes: outward}", "pushes: up}")), Catch::Contains("a circular track pushes 'outward'"));
   REQUIRE_THROWS_WITH(solve_text(edit(dome, "pushes: outward}", "pushes: [0, 1]}")), Catch::Contains("not a direction"));
@@ -137,4 +139,13 @@ TEST_CASE("a one-sided track's N is positive when it pushes, a guide's up whiche
   CHECK(N(edit(bar, "along: [1, 0]}, pushes: up}", "along: [-1, 0]}, holds: both}")) == up);
   CHECK(N(edit(bar, "along: [1, 0]}, pushes: up}", "along: [1, 0]}, holds: both}")) == up);
   CHECK(N(edit(bar, "along: [1, 0]}, pushes: up}", "along: [-1, 0]}, pushes: up}")) == up);
+}
+
+TEST_CASE("a pose that puts a body through a surface that only pushes is refused at the state (issue 47)", "[effects][track][pose]") {
+  // By hand: the rod's end A on the floor, B = (0, L cos(theta)); at theta = 120 deg B is
+  // L/2 = 1.5 m below the floor. At 60 deg it is above it, and the scene solves.
+  const std::string text = kt::read_file(std::string(KINERGY_SOURCE_DIR) + "/tests/data/bad/rod_below_floor.yaml");
+  REQUIRE_THROWS_WITH(solve_text(text), Catch::Contains("track 'floor' only pushes, and at state '2' rod reaches 1.5 m through it (at [0, -1.5])") &&
+                                            Catch::Contains("a body rests on a surface, it does not pass through it"));
+  CHECK_NOTHROW(solve_text(edit(text, "2: {theta: 120 deg}", "2: {theta: 60 deg}")));
 }
