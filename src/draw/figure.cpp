@@ -862,6 +862,11 @@ void dimensions(const At& at, const std::string& shape_name, const std::vector<e
 
 }  // namespace
 
+std::optional<Name> body_label(const model::Body& b) {
+  if (!b.label.empty()) return from_tex(b.label);
+  return short_name(b.name);
+}
+
 void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, double rim) {
   const model::Body& b = m.bodies.at(static_cast<std::size_t>(bi));
   f.owned_by("body " + b.name);
@@ -886,7 +891,7 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, d
   f.mark(gx, gy, b.name + ".G");
   // a body by its short name where it has one (gearA: A), else not named at its centre (a
   // textbook names a body by a letter, or not at all)
-  if (const auto s = short_name(b.name)) f.label(gx, gy, s->text, s->tex);
+  if (const auto s = body_label(b)) f.label(gx, gy, s->text, s->tex);
   if (!points) return f.owned_by("");
   for (auto& [shape, sizes, placed] : shapes) dimensions(at, *shape, *sizes, placed, f);
   for (auto& [pn, lp] : b.points) {

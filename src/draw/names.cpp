@@ -91,6 +91,28 @@ std::optional<Name> textbook(const std::string& id) {
   return subscripted({id.substr(0, 1), id.substr(0, 1)}, *rest);
 }
 
+Name from_tex(const std::string& tex) {
+  std::string text;
+  for (std::size_t i = 0; i < tex.size();) {
+    const char c = tex[i];
+    if (c == '\\') {
+      // a command: a Greek letter as the letter, any other dropped (its argument stays)
+      std::size_t j = i + 1;
+      while (j < tex.size() && std::isalpha(static_cast<unsigned char>(tex[j]))) ++j;
+      std::string cmd = tex.substr(i + 1, j - i - 1);
+      if (cmd == "phi") cmd = "varphi";
+      if (cmd == "epsilon") cmd = "varepsilon";
+      for (const Greek& g : kGreek)
+        if (std::string(g.tex) == "\\" + cmd) text += g.text;
+      i = j;
+      continue;
+    }
+    if (c != '{' && c != '}') text += c;
+    ++i;
+  }
+  return {text, tex};
+}
+
 std::optional<Name> short_name(const std::string& body) {
   // a word and the capitals or digits it ends in: gearA → A, ball2 → 2
   std::size_t i = body.size();

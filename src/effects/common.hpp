@@ -125,6 +125,7 @@ inline std::string load_symbol(const Effect& e, const std::string& kind, const e
     return n && std::all_of(n->text.begin(), n->text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }) &&
            n->text.find('_') == n->text.rfind('_');
   };
+  if (!e.label.empty()) return e.label;  // (the scene's own, in TeX)
   if (GiNaC::is_a<GiNaC::symbol>(size))
     if (auto n = draw::textbook(GiNaC::ex_to<GiNaC::symbol>(size).get_name()); latin(n)) return n->text;
   if (auto n = draw::textbook(e.name); latin(n)) return n->text;
@@ -132,7 +133,7 @@ inline std::string load_symbol(const Effect& e, const std::string& kind, const e
 }
 
 /// A load symbol (load_symbol) as a label: the same words in SVG and TeX.
-inline draw::Name symbol_name(const std::string& s) { return {s, s}; }
+inline draw::Name symbol_name(const std::string& s) { return draw::from_tex(s); }
 
 /// `l` named by `symbol` (what figures and diagrams write for it).
 inline model::Load with_symbol(model::Load l, std::string symbol) {

@@ -42,7 +42,7 @@ public:
     l.partner = b;
     l.size = mu * normal;
     l.direction = direction;
-    l.symbol = "F";  // a friction force
+    l.symbol = load_symbol(*this, "F");  // a friction force (or its label)
     return {l};
   }
 

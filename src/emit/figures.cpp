@@ -32,11 +32,17 @@ std::vector<draw::Sheet> state_sheets(const Solution& s, std::vector<std::string
 
 namespace {
 
-/// A body as a subscript: its short name (gearA: A), else its name (m_A, W_rod, N_disk).
-std::string body_sub(const model::Model& m, int b) {
-  const std::string& name = m.bodies[static_cast<std::size_t>(b)].name;
-  const auto s = draw::short_name(name);
-  return s ? s->text : name;
+/// A body as a subscript: its label or short name (gearA: A), else its name (m_A, W_rod, N_disk).
+draw::Name body_sub(const model::Model& m, int b) {
+  const model::Body& B = m.bodies[static_cast<std::size_t>(b)];
+  if (const auto s = draw::body_label(B)) return *s;
+  return {B.name, "\\mathrm{" + tex_text(B.name) + "}"};
+}
+
+/// `base` with the subscript `sub` (empty: none).
+draw::Name with_sub(const draw::Name& base, const draw::Name& sub) {
+  if (sub.text.empty()) return base;
+  return {base.text + "_" + sub.text, base.tex + "_{" + sub.tex + "}"};
 }
 
 /// The names of the loads one figure draws (issue 47): each by its symbol (W, N, F, P, M, T), with
@@ -62,9 +68,14 @@ public:
       effects = effects || l.effect != effect;
       bodies = bodies || (l.effect == effect && l.body != body);
     }
-    std::string sub = effects ? effect : "";
-    if (bodies && body >= 0) sub += (sub.empty() ? "" : ",") + body_sub(m_, body);
-    return draw::subscripted({me->symbol, me->symbol}, sub);
+    // (a symbol is TeX: a scene's `label:`, or a letter with its subscript)
+    const draw::Name base = draw::from_tex(me->symbol);
+    draw::Name sub{effects ? effect : "", effects ? "\\mathrm{" + tex_text(effect) + "}" : ""};
+    if (bodies && body >= 0) {
+      const draw::Name b = body_sub(m_, body);
+      sub = sub.text.empty() ? b : draw::Name{sub.text + "," + b.text, sub.tex + "," + b.tex};
+    }
+    return with_sub(base, sub);
   }
 
 private:
@@ -227,11 +238,11 @@ struct Diagram {
       const double x = at(B.x), y = at(B.y);
       const double p = momentum(at, b);  // (its arrow to the diagram's scale)
       about = "the momentum of " + B.name;
-      const std::string sub = bodies.size() > 1 ? body_sub(m, b) : "";
-      const draw::Name ms = draw::subscripted({"m", "m"}, sub), vs = draw::subscripted({"v\u0304", "\\bar{v}"}, sub);
+      const draw::Name sub = bodies.size() > 1 ? body_sub(m, b) : draw::Name{};
+      const draw::Name ms = with_sub({"m", "m"}, sub), vs = with_sub({"v\u0304", "\\bar{v}"}, sub);
       arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, ms.text + " " + vs.text, ms.tex + vs.tex, p);
       if (at(B.inertia) > 0) {
-        const draw::Name Is = draw::subscripted({"I\u0304", "\\bar{I}"}, sub), ws = draw::subscripted({"\u03c9", "\\omega"}, sub);
+        const draw::Name Is = with_sub({"I\u0304", "\\bar{I}"}, sub), ws = with_sub({"\u03c9", "\\omega"}, sub);
         turning(f, x, y, at(m.omega(b)), draw::Ink::Momentum, Is.text + " " + ws.text, Is.tex + ws.tex);
       }
     }

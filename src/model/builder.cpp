@@ -294,6 +294,7 @@ private:
       Body b;
       b.name = bd.name;
       b.pos = bd.pos;
+      b.label = bd.label;
       if (bd.parts.empty()) {
         b.mass = mass(bd.mass, "the mass of '" + bd.name + "'");
         std::tie(b.shape, b.sizes, b.inertia) = shape_inertia(bd.inertia, b.mass);
@@ -587,17 +588,20 @@ private:
       // the scene has checked the kind's name against the same table
       auto kind = std::find_if(kinds.begin(), kinds.end(), [&](const EffectKind& k) { return k.name == ed.kind; });
       if (kind == kinds.end()) throw std::logic_error("effect kind '" + ed.kind + "' is not in the table");
-      // 'on' and 'off' are every kind's: the states it acts between; the kind reads the rest
+      // 'on', 'off' and 'label' are every kind's: the states it acts between, how figures name it;
+      // the kind reads the rest
       scene::EffectDef own = ed;
-      const scene::Node *on = nullptr, *off = nullptr;
+      const scene::Node *on = nullptr, *off = nullptr, *label = nullptr;
       std::vector<scene::Entry> kept;
       for (auto& entry : ed.options.entries) {
         if (entry.first.scalar == "on") on = &entry.second;
         else if (entry.first.scalar == "off") off = &entry.second;
+        else if (entry.first.scalar == "label") label = &entry.second;
         else kept.push_back(entry);
       }
       own.options.entries = kept;
       std::shared_ptr<Effect> e = kind->read(*this, own);
+      if (label) e->label = scene::read_label(*label, "effect '" + ed.name + "'");
       auto state_at = [&](const Node* n, const std::string& key) {
         if (!n) return -1;
         if (!n->is_scalar())

@@ -15,6 +15,25 @@
 
 namespace kinergy::scene {
 
+/// `label: "\\theta_A"`: a name in TeX's math mode for figures — letters, digits, subscripts,
+/// primes and commands (\\alpha), braces that close, nothing a LaTeX document would take for
+/// another thing ($ % # & ~ ^ or a line break).
+std::string read_label(const Node& n, const std::string& whose) {
+  const std::string fix = "write it as TeX's math mode writes a name, e.g. 'label: \"W_A\"' or 'label: \"\\\\theta_1\"'";
+  if (!n.is_scalar() || n.scalar.empty()) throw SceneError(n.pos, "the label of " + whose + " is a name in TeX", fix);
+  if (n.scalar.size() > 64) throw SceneError(n.pos, "the label of " + whose + " is longer than 64 characters", fix);
+  int depth = 0;
+  for (char c : n.scalar) {
+    if (std::string("$%#&~^\n").find(c) != std::string::npos)
+      throw SceneError(n.pos, "the label of " + whose + " holds '" + std::string(1, c) + "', which TeX would not take as part of a name", fix);
+    depth += c == '{' ? 1 : c == '}' ? -1 : 0;
+    if (depth < 0) break;
+  }
+  if (depth != 0) throw SceneError(n.pos, "the label of " + whose + " has braces that do not close", fix);
+  return n.scalar;
+}
+
+
 const Node* Node::get(const std::string& key) const {
   for (auto& [k, v] : entries)
     if (k.scalar == key) return &v;
@@ -369,7 +388,7 @@ struct Loader {
         not_a_section(k, r, "bodies");
         check_name(k, "body");
         need_map(v, k.scalar, "{mass: m, inertia: {disk: r}, position: [x, y], angle: phi}");
-        only_keys(v, "body '" + k.scalar + "'", {"mass", "inertia", "position", "angle", "points", "parts", "drawn_as"});
+        only_keys(v, "body '" + k.scalar + "'", {"mass", "inertia", "position", "angle", "points", "parts", "drawn_as", "label"});
         BodyDef b;
         b.name = k.scalar;
         b.pos = k.pos;
@@ -400,6 +419,7 @@ struct Loader {
         b.y = y;
         if (auto* a = v.get("angle")) b.angle = text(*a, "angle", "angle: theta");
         if (auto* d = v.get("drawn_as")) b.drawn_as = drawn_as(*d);
+        if (auto* l = v.get("label")) b.label = read_label(*l, "body '" + k.scalar + "'");
         if (auto* pts = v.get("points")) {
           need_map(*pts, "points", "points: {A: [l/2, 0]}");
           for (auto& [pk, pv] : pts->entries) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <regex>
+#include <set>
 
 #include "../support/helpers.hpp"
 #include "each_figure.hpp"
@@ -569,4 +570,32 @@ TEST_CASE("names as a textbook writes them: Greek letters, subscripts, words lef
   CHECK(short_name("A")->text == "A");
   CHECK_FALSE(short_name("disk"));
   CHECK_FALSE(short_name("AB2x"));
+}
+
+TEST_CASE("label: a body's and an effect's own names in the figures, and what a label may not hold (issue 47)", "[draw][labels]") {
+  // the drum of drum_blocks_on_table labelled D: its weight W_D and momentum m... in every figure;
+  // the table's friction labelled F_k: F_k Δt in the impulse diagram
+  std::string scene = kt::derivation("momentum/drum_blocks_on_table.yaml");
+  scene = kt::edit(scene, "drum: {mass: M, inertia: {disk: r}, position: [0, 0], angle: phi}",
+                   "drum: {mass: M, inertia: {disk: r}, position: [0, 0], angle: phi, label: \"D\"}");
+  scene = kt::edit(scene, "direction: positive}", "direction: positive, label: \"F_k\"}");
+  const auto d = kinergy::emit::derive(kt::solve_text(scene));
+  std::set<std::string> texts;
+  for (const auto& b : d.blocks)
+    if (b.sheet)
+      for (std::size_t i = 0; i < b.sheet->size(); ++i)
+        for (const auto& l : b.sheet->panel(i).labels()) texts.insert(l.text);
+  CHECK(texts.count("W_D"));
+  CHECK(texts.count("W_D \u0394t"));
+  CHECK(texts.count("F_k \u0394t"));
+  CHECK(texts.count("D"));  // (at the drum's centre)
+  CHECK_FALSE(texts.count("W_drum"));
+  // a Greek command is its letter in SVG
+  CHECK(kinergy::draw::from_tex("\\theta_{A}").text == "\u03b8_A");
+  // what a label may not be
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "label: \"D\"", "label: \"\"")), Catch::Contains("the label of body 'drum' is a name in TeX"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "label: \"D\"", "label: \"D$\"")),
+                    Catch::Contains("the label of body 'drum' holds '$', which TeX would not take as part of a name"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "label: \"D\"", "label: \"D_{1\"")), Catch::Contains("has braces that do not close"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "label: \"F_k\"", "label: [F, k]")), Catch::Contains("the label of effect 'table' is a name in TeX"));
 }

@@ -4,14 +4,18 @@
 #include <array>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <ginac/ginac.h>
 
+#include "kinergy/draw/names.hpp"
+
 namespace kinergy::model {
 class Model;
+struct Body;
 }
 
 namespace kinergy::draw {
@@ -178,6 +182,9 @@ GiNaC::exmap with_samples(const model::Model& m, GiNaC::exmap values, std::strin
 /// `otherwise` (a diagram drawn at the positions of the other state) when that is given.
 /// @throws SceneError when the state does not fix a coordinate (and `otherwise` is null).
 At state_values(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::exmap& params, int state, const At* otherwise = nullptr);
+
+/// How figures name a body: its `label:`, else its short name (gearA: A); none for a word alone.
+std::optional<Name> body_label(const model::Body& b);
 
 /// Body b by its inertia shape at `at`: a bar, a disk with its reference line, a plate, a
 /// block; its mass centre and (with `points`) its named points marked and labelled. A wheel known

@@ -23,6 +23,10 @@ std::optional<Name> textbook(const std::string& identifier);
 /// as a symbol (A → A); nullopt for a word alone (rod, disk).
 std::optional<Name> short_name(const std::string& body);
 
+/// A name given in TeX's math mode (a scene's `label:`), with its text for SVG: Greek commands as
+/// letters, subscripts after '_', other commands and braces dropped ("\\theta_{A}" → "θ_A").
+Name from_tex(const std::string& tex);
+
 /// `base` (TeX, and its text) with subscript `sub` — a short name, or a word set upright.
 Name subscripted(const Name& base, const std::string& sub);
 

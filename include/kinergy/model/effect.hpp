@@ -228,6 +228,7 @@ public:
   std::string name;
   std::string kind;  ///< the name it was registered under (for messages only)
   SourcePos pos;
+  std::string label;  ///< `label:`: how figures name its force or couple (TeX), "" for the default
   /// Acts from state `on` to state `off` (indices in the order the states are listed; −1: from
   /// the first, to the last): a motor disconnected at 2, a brake applied from 2 on.
   int on = -1, off = -1;

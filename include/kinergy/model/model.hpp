@@ -66,6 +66,8 @@ struct Body {
   /// How it is drawn where its inertia has no outline (`drawn_as`): "disk" (a circle of radius
   /// drawn_sizes[0]) or "plate" (a rectangle), "" for its inertia's own shape. Drawing only.
   std::string drawn_shape;
+  /// `label:`: how figures name it (TeX), "" for a name derived from its own. Drawing only.
+  std::string label;
   std::vector<ex> drawn_sizes;
   /// The lengths that size it, for drawing and time scales: its shape's sizes, or a composite
   /// body's parts' sizes and their centres' offsets from G.

@@ -79,7 +79,14 @@ struct BodyDef {
   /// `drawn_as: {circle: R}` or `{rectangle: [w, h]}`: how a body whose inertia has no outline (a
   /// particle, a radius of gyration, a given Ī) is drawn; for drawing only
   std::optional<InertiaDef> drawn_as;
+  /// `label: "W_A"`: how figures name it (TeX's math mode), instead of a name derived from its own
+  std::string label;
 };
+
+/// A `label:` — a name in TeX's math mode for figures — read and checked (`whose` names its owner
+/// in the error). @throws SceneError when it is empty, too long, holds $ % # & ~ ^ or a line
+/// break, or has braces that do not close.
+std::string read_label(const Node& n, const std::string& whose);
 
 /// An effect: its name, its kind and the rest of its map (checked by the model per kind).
 struct EffectDef {
