@@ -93,8 +93,9 @@ inline std::vector<GiNaC::exmap> random_positions(const Model& m, const GiNaC::e
 
 /// The sense a support's force along a line is counted in (the sign rule, docs/scene-format.md
 /// "Signs of forces"): +1 when (ux, uy) points up (+y), or — a horizontal line — along +x; −1
-/// otherwise: a friction up an incline, a cord's pull up, a push to the right along a floor. A line that turns with the motion is taken as it lies where the coordinates are zero
-/// (or, where it is not defined there, at the first of a few fixed places).
+/// otherwise: a friction up an incline, a cord's pull up, a push to the right along a floor. A
+/// line that turns with the motion is taken as it lies where the coordinates are zero (or, where
+/// it is not defined there, at the first of a few fixed places).
 inline int axis_sense(const Model& m, const ex& ux, const ex& uy) {
   const GiNaC::exmap env = m.numeric_environment();
   for (double q : {0.0, 0.1, 0.3, 0.7}) {
@@ -116,24 +117,18 @@ inline int axis_sense(const Model& m, const ex& ux, const ex& uy) {
   return 1;
 }
 
-/// How figures and diagrams name an effect's force or couple (issue 47): the parameter that is its
-/// size, where it is one (a couple M: Mc → M_c), else the effect's own name where it reads as a
-/// symbol (P, F1), else the symbol of its kind (`kind`: P a force, M a couple, T a cord's pull, F
-/// a spring's or a friction's force) — without Greek letters, the same words in SVG and TeX.
+/// How figures and diagrams name an effect's force or couple (issue 47), in TeX: the scene's
+/// `label:`, else the parameter that is its size, where it is one (a couple M: Mc → M_{c}), else
+/// the effect's own name where it reads as a symbol (P, F1), else the symbol of its kind (`kind`:
+/// P a force, M a couple, T a cord's pull, F a spring's or a friction's force). Figures show it
+/// through draw::from_tex.
 inline std::string load_symbol(const Effect& e, const std::string& kind, const ex& size = 0) {
-  auto latin = [](const std::optional<draw::Name>& n) {
-    return n && std::all_of(n->text.begin(), n->text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }) &&
-           n->text.find('_') == n->text.rfind('_');
-  };
-  if (!e.label.empty()) return e.label;  // (the scene's own, in TeX)
+  if (!e.label.empty()) return e.label;
   if (GiNaC::is_a<GiNaC::symbol>(size))
-    if (auto n = draw::textbook(GiNaC::ex_to<GiNaC::symbol>(size).get_name()); latin(n)) return n->text;
-  if (auto n = draw::textbook(e.name); latin(n)) return n->text;
+    if (auto n = draw::textbook(GiNaC::ex_to<GiNaC::symbol>(size).get_name())) return n->tex;
+  if (auto n = draw::textbook(e.name)) return n->tex;
   return kind;
 }
-
-/// A load symbol (load_symbol) as a label: the same words in SVG and TeX.
-inline draw::Name symbol_name(const std::string& s) { return draw::from_tex(s); }
 
 /// `l` named by `symbol` (what figures and diagrams write for it).
 inline model::Load with_symbol(model::Load l, std::string symbol) {

@@ -21,7 +21,7 @@ public:
     f.line(x1, y1, x2, y2, Ink::Thin);
     const double L = std::hypot(x2 - x1, y2 - y1), g = f.glyph() * 3;
     if (L > 0) f.arrow(x1, y1, x1 + (x2 - x1) / L * std::min(g, L), y1 + (y2 - y1) / L * std::min(g, L), Ink::Force);
-    const draw::Name n = symbol_name(load_symbol(*this, "T"));
+    const draw::Name n = draw::from_tex(load_symbol(*this, "T"));
     f.label(x1, y1, n.text, n.tex);
   }
   // on A: P toward B, F = P (r_B − r_A)/L; −F on B

@@ -15,7 +15,7 @@ public:
   std::vector<model::Load> loads(const Model& m) const override { return {with_symbol(couple_on(m, body, M, other), load_symbol(*this, "M", M))}; }
 
   // a curved arrow round the body's centre in the sense of M (counterclockwise when positive)
-  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, at(M), Ink::Force, symbol_name(load_symbol(*this, "M", M))); }
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, at(M), Ink::Force, draw::from_tex(load_symbol(*this, "M", M))); }
 };
 
 }  // namespace

@@ -22,13 +22,13 @@ public:
     const double fx = at(Fx), fy = at(Fy), F = std::hypot(fx, fy);
     if (F == 0) {
       f.circle(x, y, 0.3 * f.glyph(), Ink::Force);
-      const draw::Name n = symbol_name(load_symbol(*this, "P"));
+      const draw::Name n = draw::from_tex(load_symbol(*this, "P"));
       return f.label(x, y, n.text + " = 0", n.tex + " = 0");
     }
     if (!(F > 0)) return;
     const double L = f.glyph() * 3;
     f.arrow(x - fx / F * L, y - fy / F * L, x, y, Ink::Force);
-    const draw::Name n = symbol_name(load_symbol(*this, "P"));
+    const draw::Name n = draw::from_tex(load_symbol(*this, "P"));
     f.label(x - fx / F * L, y - fy / F * L, n.text, n.tex);
   }
 };

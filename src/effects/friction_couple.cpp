@@ -12,7 +12,7 @@ public:
   ex M = 0;
 
   // an arc round the body's centre: a bearing's or a brake's friction couple
-  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Support, symbol_name(load_symbol(*this, "M", M)), 1.2, true); }
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 0, Ink::Support, draw::from_tex(load_symbol(*this, "M", M)), 1.2, true); }
   std::optional<int> direction;  ///< the sign of the rotation it opposes, if declared
   std::optional<int> other;      ///< `against`: the body it turns against (else the ground)
 

@@ -19,11 +19,11 @@ public:
     const double jx = at(j.Jx), jy = at(j.Jy), J = std::hypot(jx, jy), L = 3 * f.glyph();
     if (!(J > 0)) {
       f.circle(x, y, 0.3 * f.glyph(), Ink::Force);
-      const draw::Name n = symbol_name(load_symbol(*this, "J"));
+      const draw::Name n = draw::from_tex(load_symbol(*this, "J"));
       return f.label(x, y, n.text, n.tex);
     }
     f.arrow(x - jx / J * L, y - jy / J * L, x, y, Ink::Force);
-    const draw::Name n = symbol_name(load_symbol(*this, "J"));
+    const draw::Name n = draw::from_tex(load_symbol(*this, "J"));
     f.label(x - jx / J * L, y - jy / J * L, n.text, n.tex);
   }
 };

@@ -18,7 +18,7 @@ public:
   }
 
   // a curved arrow round the body's centre: the drive (in the sense of the motion it drives)
-  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 1, Ink::Force, symbol_name(load_symbol(*this, "P", P))); }
+  void draw(const Model& m, const At& at, Figure& f) const override { draw_turning(m, at, f, body, 1, Ink::Force, draw::from_tex(load_symbol(*this, "P", P))); }
 };
 
 }  // namespace

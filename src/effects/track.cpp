@@ -129,7 +129,7 @@ public:
     if (cord) {
       // the cord itself, from its anchor to the point (straight while taut)
       f.line(at(x0), at(y0), px, py, Ink::Cord);
-      const draw::Name n = symbol_name(load_symbol(*this, "T"));
+      const draw::Name n = draw::from_tex(load_symbol(*this, "T"));
       f.label(0.5 * (at(x0) + px), 0.5 * (at(y0) + py), n.text, n.tex);
       return;
     }

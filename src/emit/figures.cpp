@@ -39,10 +39,12 @@ draw::Name body_sub(const model::Model& m, int b) {
   return {B.name, "\\mathrm{" + tex_text(B.name) + "}"};
 }
 
-/// `base` with the subscript `sub` (empty: none).
+/// `base` with the subscript `sub` (empty: none); a base with a subscript of its own (M_c) is
+/// braced, as TeX takes one subscript at a time.
 draw::Name with_sub(const draw::Name& base, const draw::Name& sub) {
   if (sub.text.empty()) return base;
-  return {base.text + "_" + sub.text, base.tex + "_{" + sub.tex + "}"};
+  const std::string b = base.tex.find('_') == std::string::npos ? base.tex : "{" + base.tex + "}";
+  return {base.text + "_" + sub.text, b + "_{" + sub.tex + "}"};
 }
 
 /// The names of the loads one figure draws (issue 47): each by its symbol (W, N, F, P, M, T), with
