@@ -67,6 +67,12 @@ Name subscripted(const Name& base, const std::string& sub) {
   return {base.text + "_" + sub, base.tex + "_{" + (word ? "\\mathrm{" + sub + "}" : sub) + "}"};
 }
 
+Name subscripted(const Name& base, const Name& sub) {
+  if (sub.text.empty()) return base;
+  const std::string b = base.tex.find('_') == std::string::npos ? base.tex : "{" + base.tex + "}";
+  return {base.text + "_" + sub.text, b + "_{" + sub.tex + "}"};
+}
+
 std::optional<Name> textbook(const std::string& id) {
   if (id.empty()) return std::nullopt;
   // what follows the letter: a subscript as it is, or — written after '_' — any word (v_max)

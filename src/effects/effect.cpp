@@ -115,8 +115,7 @@ std::pair<ex, ex> Effect::impact_impulse_on(const Model& m, int body, int ai) co
   if (!r || r->kind != Reaction::Kind::Contact || !a.struck() || !a.struck()->impulses.count(name)) return {0, 0};
   // P on the first party that is a body (impulse: the sign rule), −P on the other
   auto [Px, Py] = impulse(m, -1, ai);
-  const model::PointRef& first = r->a_first() ? r->a : r->b;
-  const model::PointRef& other = r->a_first() ? r->b : r->a;
+  const model::PointRef &first = r->first(), &other = r->second();
   int sign = (first.body == body && !first.ground ? 1 : 0) - (other.body == body && !other.ground ? 1 : 0);
   return {sign * Px, sign * Py};
 }

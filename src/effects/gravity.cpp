@@ -17,7 +17,7 @@ public:
       f.arrow(x, y, x + dx * L, y + dy * L, Ink::Force);
       // W, with the body's short name (or its name) as a subscript where the scene has several (W_A)
       const auto s = draw::body_label(b);
-      const draw::Name w = m.bodies.size() > 1 ? (s ? draw::Name{"W_" + s->text, "W_{" + s->tex + "}"} : draw::subscripted({"W", "W"}, b.name))
+      const draw::Name w = m.bodies.size() > 1 ? (s ? draw::subscripted({"W", "W"}, *s) : draw::subscripted({"W", "W"}, b.name))
                                                : draw::Name{"W", "W"};
       f.label(x + dx * L, y + dy * L, w.text, w.tex);
     }

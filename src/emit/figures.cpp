@@ -39,14 +39,6 @@ draw::Name body_sub(const model::Model& m, int b) {
   return {B.name, "\\mathrm{" + tex_text(B.name) + "}"};
 }
 
-/// `base` with the subscript `sub` (empty: none); a base with a subscript of its own (M_c) is
-/// braced, as TeX takes one subscript at a time.
-draw::Name with_sub(const draw::Name& base, const draw::Name& sub) {
-  if (sub.text.empty()) return base;
-  const std::string b = base.tex.find('_') == std::string::npos ? base.tex : "{" + base.tex + "}";
-  return {base.text + "_" + sub.text, b + "_{" + sub.tex + "}"};
-}
-
 /// The names of the loads one figure draws (issue 47): each by its symbol (W, N, F, P, M, T), with
 /// a subscript only where two of one kind meet in the figure — the body's short name where one
 /// effect acts on several of its bodies (W_A, W_B), the effect's name where several effects share
@@ -77,7 +69,7 @@ public:
       const draw::Name b = body_sub(m_, body);
       sub = sub.text.empty() ? b : draw::Name{sub.text + "," + b.text, sub.tex + "," + b.tex};
     }
-    return with_sub(base, sub);
+    return draw::subscripted(base, sub);
   }
 
 private:
@@ -227,10 +219,8 @@ struct Diagram {
     return std::hypot(solved(*Ix), solved(*Iy));
   }
 
-  // momenta at a state: m v̄ at each mass centre, Ī ω round it. An arrow's length goes with the
-  // momentum's size: the largest in the diagram 1.4 times the impulses' length, a smaller one in
-  // proportion, down to a quarter of that (so that it still shows its direction); with several
-  // bodies each label carries its body's name (m_A v̄_A)
+  // momenta at a state: m v̄ at each mass centre, its arrow at the diagram's one scale, Ī ω round
+  // it; with several bodies each label carries its body's name (m_A v̄_A)
   draw::Figure momenta(const draw::At& at) const {
     draw::Figure f;
     f.set_glyph(g);
@@ -241,10 +231,10 @@ struct Diagram {
       const double p = momentum(at, b);  // (its arrow to the diagram's scale)
       about = "the momentum of " + B.name;
       const draw::Name sub = bodies.size() > 1 ? body_sub(m, b) : draw::Name{};
-      const draw::Name ms = with_sub({"m", "m"}, sub), vs = with_sub({"v\u0304", "\\bar{v}"}, sub);
+      const draw::Name ms = draw::subscripted({"m", "m"}, sub), vs = draw::subscripted({"v\u0304", "\\bar{v}"}, sub);
       arrow(f, x, y, at(m.rate(B.x)), at(m.rate(B.y)), draw::Ink::Momentum, ms.text + " " + vs.text, ms.tex + vs.tex, p);
       if (at(B.inertia) > 0) {
-        const draw::Name Is = with_sub({"I\u0304", "\\bar{I}"}, sub), ws = with_sub({"\u03c9", "\\omega"}, sub);
+        const draw::Name Is = draw::subscripted({"I\u0304", "\\bar{I}"}, sub), ws = draw::subscripted({"\u03c9", "\\omega"}, sub);
         turning(f, x, y, at(m.omega(b)), draw::Ink::Momentum, Is.text + " " + ws.text, Is.tex + ws.tex);
       }
     }
@@ -253,7 +243,6 @@ struct Diagram {
     return f;
   }
 
-  // the impulses on the bodies over the analysis, drawn on them at its first state
   // a push's symbol: its load's (W, F, P, M, T), N for an implied support ("N_disk", the
   // principles' name), R for a pin's known impulse, J for a blow
   static std::string push_symbol(const std::string& effect, const principles::Push& p) {
@@ -263,6 +252,7 @@ struct Diagram {
     return "";
   }
 
+  // the impulses on the bodies over the analysis, drawn on them at its first state
   draw::Figure impulses(const std::vector<principles::Shown>& shown) const {
     draw::Figure f;
     f.set_glyph(g);

@@ -99,9 +99,8 @@ std::vector<BodyLoad> body_loads(const Model& m, const Instant& in) {
       case Reaction::Kind::Pin: {
         // R = (Rx, Ry) on its first party that is a body (what a textbook asks: the pin's force on
         // the bar), −R on the other
-        const bool a_first = is_body(r->a);
-        put(e.name, a_first ? r->a : r->b, u[0], u[1], 0, true);
-        put(e.name, a_first ? r->b : r->a, -u[0], -u[1], 0, true);
+        put(e.name, r->first(), u[0], u[1], 0, true);
+        put(e.name, r->second(), -u[0], -u[1], 0, true);
         break;
       }
       case Reaction::Kind::Track:  // N n̂ on party a

@@ -354,7 +354,7 @@ static std::pair<ex, ex> pin_impact_impulse(const Model& m, const Effect& e, con
     Rx -= Px;
     Ry -= Py;
   }
-  const int s = bi == (r.a_first() ? r.a : r.b).body ? 1 : -1;
+  const int s = bi == r.first().body ? 1 : -1;
   return {s * Rx, s * Ry};
 }
 
@@ -426,7 +426,7 @@ Work reaction_work_across(const Model& m, const Effect& e, const model::Reaction
     Work w;
     w.effect = e.name;
     w.U = sign * it->second[0] * model::trig_simplify(m.bind(s, an.to) - m.bind(s, an.from));
-    w.how = "U = " + std::string(sign < 0 ? "-" : "") + "F (average, on " + (r.a_first() ? r.a : r.b).text + " along " + (line == 0 ? "x" : "y") +
+    w.how = "U = " + std::string(sign < 0 ? "-" : "") + "F (average, on " + r.first().text + " along " + (line == 0 ? "x" : "y") +
             ") times the distance " + p.text + " moves along it";
     return w;
   }

@@ -29,5 +29,8 @@ Name from_tex(const std::string& tex);
 
 /// `base` (TeX, and its text) with subscript `sub` — a short name, or a word set upright.
 Name subscripted(const Name& base, const std::string& sub);
+/// `base` with the subscript `sub` given as a name (empty: none); a base with a subscript of its
+/// own (M_c) is braced, as TeX takes one subscript at a time.
+Name subscripted(const Name& base, const Name& sub);
 
 }  // namespace kinergy::draw

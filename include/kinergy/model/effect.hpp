@@ -131,6 +131,9 @@ struct Reaction {
   /// The sign rule (docs/scene-format.md, "Signs of forces"): a support's force is reported on its
   /// first party that is a body — a, unless a is the ground or a fixed point.
   bool a_first() const { return a.body >= 0 && !a.ground; }
+  /// That party, and the other one (which takes the opposite force).
+  const PointRef& first() const { return a_first() ? a : b; }
+  const PointRef& second() const { return a_first() ? b : a; }
 
   static Reaction pin(PointRef a, PointRef b);
   static Reaction track(PointRef a, ex nx, ex ny);
