@@ -272,92 +272,152 @@ Layout::Box sign_box(double x, double mid, std::size_t length, double text) {
   return {x - half, mid - text * 13, x + half, mid + text * 12};
 }
 
+using Segment = std::array<double, 4>;
+
+/// The page segments (pixels, y down) of everything panel P's figure strokes: lines, outlines,
+/// arcs and hatching as drawn, a circle by 32 chords, an arrow's head as its triangle, a marked
+/// point as the square round its marker.
+std::vector<Segment> page_strokes(const Figure& f, const Layout::Place& P, double s) {
+  std::vector<Segment> out;
+  auto X = [&](double x) { return P.tx + s * x; };
+  auto Y = [&](double y) { return P.ty - s * y; };
+  auto finite = [](const Segment& g) { return std::isfinite(g[0]) && std::isfinite(g[1]) && std::isfinite(g[2]) && std::isfinite(g[3]); };
+  auto add = [&](const Segment& g) {
+    if (finite(g)) out.push_back(g);
+  };
+  for (auto& sh : f.shapes()) {
+    if (sh.pts.empty()) continue;
+    if (sh.kind == Figure::Shape::Circle || sh.kind == Figure::Shape::Mark) {
+      // (a marker: 3.2 px and its 1.2 px stroke, on the page whatever the scale)
+      const double cx = X(sh.pts[0].first), cy = Y(sh.pts[0].second), r = sh.kind == Figure::Shape::Mark ? 3.8 : s * sh.r;
+      if (sh.kind == Figure::Shape::Mark) {
+        add({cx - r, cy - r, cx + r, cy - r}), add({cx + r, cy - r, cx + r, cy + r});
+        add({cx + r, cy + r, cx - r, cy + r}), add({cx - r, cy + r, cx - r, cy - r});
+        continue;
+      }
+      for (int k = 0; k < 32; ++k)
+        add({cx + r * std::cos(k * M_PI / 16), cy + r * std::sin(k * M_PI / 16), cx + r * std::cos((k + 1) * M_PI / 16), cy + r * std::sin((k + 1) * M_PI / 16)});
+      continue;
+    }
+    for (std::size_t k = 0; k + 1 < sh.pts.size(); ++k) add({X(sh.pts[k].first), Y(sh.pts[k].second), X(sh.pts[k + 1].first), Y(sh.pts[k + 1].second)});
+    if (sh.kind == Figure::Shape::Polygon && sh.pts.size() > 2) add({X(sh.pts.back().first), Y(sh.pts.back().second), X(sh.pts[0].first), Y(sh.pts[0].second)});
+    if ((sh.kind == Figure::Shape::Arrow || sh.kind == Figure::Shape::Arc) && sh.pts.size() >= 2) {
+      const auto& a = sh.pts[sh.pts.size() - 2];
+      const auto& b = sh.pts.back();
+      const auto h = head_at(X(a.first), Y(a.second), X(b.first), Y(b.second));
+      for (std::size_t k = 0; k < h.size(); ++k) add({h[k].first, h[k].second, h[(k + 1) % h.size()].first, h[(k + 1) % h.size()].second});
+    }
+  }
+  return out;
+}
+
+/// A label's words measured as the page sets them (pixels): SVG's DejaVu Sans, or TeX at
+/// L.tex_pt (a point is 13 L.text / tex_pt pixels: 13 px is where SVG's words stand).
+Extent measured(const Layout& L, const Figure::Label& l) {
+  if (L.tex_pt <= 0) return svg_extent(l.text);
+  const Extent e = l.tex.empty() ? tex_text_extent(l.text, L.tex_pt) : tex_extent(l.tex, L.tex_pt);
+  const double px = kFont * L.text / L.tex_pt;
+  return {px * e.width, px * e.above, px * e.below};
+}
+
+namespace {
+
+bool overlaps(const Layout::Box& a, const Layout::Box& b) { return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1; }
+
+// The places tried for a box w × h round the anchor (ax, ay), nearest first: the twelve of a
+// textbook's habit (right and above first), then rings further out in sixteen directions.
+std::vector<Layout::Box> places_round(double ax, double ay, double w, double h, double u) {
+  std::vector<Layout::Box> out;
+  const std::pair<double, double> habit[] = {{6, -4}, {6, 4}, {-6, -4}, {-6, 4}, {0, -6}, {0, 6}, {12, -14}, {-12, 14}, {12, 14}, {-12, -14}, {12, 0}, {-12, 0}};
+  // (dx, dy): the box's corner nearest the anchor that far from it, the box beyond
+  for (auto& [dx, dy] : habit) {
+    const double x0 = dx > 0 ? ax + dx * u : dx < 0 ? ax + dx * u - w : ax - w / 2;
+    const double y0 = dy > 0 ? ay + dy * u : dy < 0 ? ay + dy * u - h : ay - h / 2;
+    out.push_back({x0, y0, x0 + w, y0 + h});
+  }
+  for (double d : {3.0, 8.0, 14.0, 20.0, 28.0, 36.0, 46.0, 58.0, 72.0, 90.0, 110.0}) {
+    const int K = d < 20 ? 16 : 32;
+    for (int k = 0; k < K; ++k) {
+      // from the upper right round through above, left, below
+      const double a = M_PI / 4 + k * 2 * M_PI / K, c = std::cos(a), sn = -std::sin(a);
+      const double cx = ax + c * (d * u + w / 2), cy = ay + sn * (d * u + h / 2);
+      out.push_back({cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 /// The labels of the panels placed on the page (L.labels), off the titles (widths tw) and the
-/// words between panels (lengths after), and off each other.
+/// words between panels (lengths after), off each other and off every stroke: the nearest place
+/// round the anchor free of all; where none is, the place free of words and page edge that
+/// crosses the fewest strokes. A label set further out than a glyph gets a leader to its anchor.
 void place_labels(Layout& L, const std::vector<std::pair<const Figure*, std::size_t>>& panels, const std::vector<double>& tw,
                   const std::vector<std::size_t>& after) {
   const std::size_t n = panels.size();
   const double text = L.text;
-  // the titles and the words between panels first: no label goes over them
   for (std::size_t i = 0; i < n; ++i) {
     if (tw[i] > 0)
       L.reserved.push_back({L.places[i].centre - (tw[i] - 12 * text) / 2 - 2, L.title_y - 13 * text, L.places[i].centre + (tw[i] - 12 * text) / 2 + 2,
                             L.title_y + 4 * text});
     if (i < after.size() && after[i] > 0 && i + 1 < n) L.reserved.push_back(sign_box(L.between_x[i], L.mid, after[i], text));
   }
-  // labels on the page, kept off each other, off those, and on the page, and off the strokes of
-  // bodies and arrows where a place round the anchor allows: the first place free of all, else
-  // the first free of labels, the reserved boxes and the page's edge, looking further out from
-  // the anchor (up to six rings of places) until one is
   std::vector<Layout::Box> taken = L.reserved;
   for (std::size_t i = 0; i < n; ++i) {
+    std::vector<Segment> strokes = page_strokes(*panels[i].first, L.places[i], L.scale);
     const auto& P = L.places[i];
-    // the page segments of the panel's bodies (a wheel's rim by 32 chords), cords and arrows
-    std::vector<std::array<double, 4>> strokes;
-    for (auto& sh : panels[i].first->shapes()) {
-      if (sh.ink != Ink::Body && sh.ink != Ink::Force && sh.ink != Ink::Momentum && sh.ink != Ink::Sense && sh.ink != Ink::Cord) continue;
-      if (sh.kind == Figure::Shape::Circle && sh.ink == Ink::Body) {
-        const double cx = P.tx + L.scale * sh.pts[0].first, cy = P.ty - L.scale * sh.pts[0].second, r = L.scale * sh.r;
-        for (int k = 0; k < 32; ++k)
-          strokes.push_back({cx + r * std::cos(k * M_PI / 16), cy + r * std::sin(k * M_PI / 16), cx + r * std::cos((k + 1) * M_PI / 16),
-                             cy + r * std::sin((k + 1) * M_PI / 16)});
-        continue;
-      }
-      if (sh.kind == Figure::Shape::Circle || sh.kind == Figure::Shape::Mark) continue;
-      for (std::size_t k = 0; k + 1 < sh.pts.size(); ++k)
-        strokes.push_back({P.tx + L.scale * sh.pts[k].first, P.ty - L.scale * sh.pts[k].second, P.tx + L.scale * sh.pts[k + 1].first,
-                           P.ty - L.scale * sh.pts[k + 1].second});
-      if (sh.kind == Figure::Shape::Polygon && sh.pts.size() > 2)
-        strokes.push_back({P.tx + L.scale * sh.pts.back().first, P.ty - L.scale * sh.pts.back().second, P.tx + L.scale * sh.pts[0].first,
-                           P.ty - L.scale * sh.pts[0].second});
-    }
     for (auto& l : panels[i].first->labels()) {
-      // (every size in units u of the words' size: 1 for SVG's 13 px)
-      const double u = text, bw = kCharWidth * u * static_cast<double>(l.text.size()) + 2, bh = 15 * u;
+      const double u = text, m = 2;  // (room round the ink: a stroke's half width and a pixel)
+      const Extent e = measured(L, l);
+      const double w = e.width + 2 * m, h = e.above + e.below + 2 * m;
       const double ax = P.tx + L.scale * l.x, ay = P.ty - L.scale * l.y;
-      const std::pair<double, double> tries[] = {{8 * u, -6 * u},       {8 * u, 16 * u},       {-8 * u - bw, -6 * u},  {-8 * u - bw, 16 * u},
-                                                 {-bw / 2, -12 * u},    {-bw / 2, 24 * u},     {14 * u, -20 * u},      {-14 * u - bw, 30 * u},
-                                                 {14 * u, 30 * u},      {-14 * u - bw, -20 * u}, {20 * u, 6 * u},      {-20 * u - bw, 6 * u}};
-      Layout::Box best{ax + 8 * u, ay - 6 * u - bh, ax + 8 * u + bw, ay - 6 * u};
-      bool found = false, any = false;
-      for (int ring = 0; ring < 6 && !found && !(any && ring > 0); ++ring) {
-        // ring k: the places of ring 0 pushed out by k label heights (x by k times 12 px)
-        const double push = 15.0 * u * ring;
-        for (auto& [dx0, dy0] : tries) {
-          const double dx = dx0 + (dx0 < -bw / 2 - 1 ? -0.8 * push : dx0 > -bw / 2 + 1 ? 0.8 * push : 0);
-          const double dy = dy0 + (dy0 <= 6 * u ? -push : push);
-          Layout::Box b{ax + dx, ay + dy - bh + 3 * u, ax + dx + bw, ay + dy + 3 * u};
-          bool clash = b.x0 < 0 || b.x1 > L.width || b.y0 < 0 || b.y1 > L.height;
-          for (auto& t : taken) clash = clash || (b.x0 < t.x1 && t.x0 < b.x1 && b.y0 < t.y1 && t.y0 < b.y1);
-          if (clash) continue;
-          if (!any) best = b, any = true;
-          bool crossed = false;
-          for (auto& st : strokes) crossed = crossed || crosses(st, b);
-          if (!crossed) {
-            best = b;
-            found = true;
-            break;
-          }
-        }
+      const auto places = places_round(ax, ay, w, h, u);
+      // only the strokes that come near the places tried
+      Layout::Box reach{ax - 112 * u - w, ay - 112 * u - h, ax + 112 * u + w, ay + 112 * u + h};
+      std::vector<Segment> near;
+      for (auto& sg : strokes)
+        if (crosses(sg, reach)) near.push_back(sg);
+      // a leader from the anchor to the box's nearest point, stopped short of both, where the box
+      // stands further out than a glyph
+      auto leader_to = [&](const Layout::Box& b) -> std::optional<Segment> {
+        const double qx = std::clamp(ax, b.x0, b.x1), qy = std::clamp(ay, b.y0, b.y1), d = std::hypot(qx - ax, qy - ay);
+        if (!(d > 16 * u)) return std::nullopt;
+        const double ux = (qx - ax) / d, uy = (qy - ay) / d;
+        return Segment{ax + 5 * ux, ay + 5 * uy, qx - 2 * ux, qy - 2 * uy};
+      };
+      std::size_t best = places.size(), fewest = std::numeric_limits<std::size_t>::max();
+      for (std::size_t k = 0; k < places.size() && fewest > 0; ++k) {
+        const auto& b = places[k];
+        const auto leader = leader_to(b);
+        bool clash = b.x0 < 0 || b.x1 > L.width || b.y0 < 0 || b.y1 > L.height;
+        for (auto& t : taken) clash = clash || overlaps(b, t) || (leader && crosses(*leader, t));
+        if (clash) continue;
+        std::size_t crossed = 0;
+        for (auto& sg : near) crossed += crosses(sg, b) ? 1 : 0;
+        if (crossed < fewest) best = k, fewest = crossed;
       }
-      if (!any) {
+      Layout::Box box = best < places.size() ? places[best] : places[0];
+      if (best == places.size()) {
         // no place free of the others on the page: at least on the page
-        const double w = best.x1 - best.x0, h = best.y1 - best.y0;
-        best.x0 = std::clamp(best.x0, 0.0, std::max(0.0, L.width - w));
-        best.y0 = std::clamp(best.y0, 0.0, std::max(0.0, L.height - h));
-        best.x1 = best.x0 + w;
-        best.y1 = best.y0 + h;
+        box.x0 = std::clamp(box.x0, 0.0, std::max(0.0, L.width - w)), box.x1 = box.x0 + w;
+        box.y0 = std::clamp(box.y0, 0.0, std::max(0.0, L.height - h)), box.y1 = box.y0 + h;
       }
-      taken.push_back(best);
-      L.labels.push_back({best, &l});
+      taken.push_back(box);
+      L.labels.push_back({box, &l, box.x0 + m, box.y1 - m - e.below});
+      if (const auto leader = leader_to(box)) {
+        L.leaders.push_back(*leader);
+        strokes.push_back(*leader);
+      }
     }
   }
 }
 
 Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height, const Figure::Bounds* fixed,
-               const std::vector<std::size_t>& after, double text) {
+               const std::vector<std::size_t>& after, double text, double tex_pt) {
   Layout L;
   L.text = text;
+  L.tex_pt = tex_pt;
   const double pad = kPad * text;  // (a margin for the labels at the edge, as large as they are)
   const std::size_t n = panels.size();
   width = page_width(width, n);
@@ -502,28 +562,16 @@ void svg_world(std::ostringstream& o, const Figure& f, const Layout::Place& P, d
   o << "</g>\n";
 }
 
-/// A label's text in parts, each plain or a subscript: what follows a '_' (up to the next space
-/// or '_') is a subscript, as a textbook sets "m_cart v̄_cart" or "W_A".
-std::vector<std::pair<std::string, bool>> label_parts(const std::string& text) {
-  std::vector<std::pair<std::string, bool>> out;
-  for (std::size_t i = 0; i < text.size();) {
-    const bool sub = text[i] == '_' && i + 1 < text.size() && text[i + 1] != ' ';
-    std::size_t j = i + 1;
-    if (sub)
-      while (j < text.size() && text[j] != ' ' && text[j] != '_') ++j;
-    else
-      j = std::min(text.find('_', i + 1), text.size());
-    out.push_back({sub ? text.substr(i + 1, j - i - 1) : text.substr(i, j - i), sub});
-    i = j;
-  }
-  return out;
-}
-
-/// The label's text for SVG: a subscript lowered and smaller.
+/// The label's text for SVG: a subscript kSubFont px, its baseline kSubDrop px lower (as
+/// svg_extent measures it), the words after it back on the line.
 std::string svg_label_text(const std::string& text) {
   std::string out;
-  for (auto& [part, sub] : label_parts(text))
-    out += sub ? "<tspan baseline-shift=\"sub\" font-size=\"10\">" + escape(part) + "</tspan>" : escape(part);
+  bool down = false;
+  for (auto& [part, sub] : label_parts(text)) {
+    if (sub) out += "<tspan dy=\"" + n(down ? 0 : kSubDrop) + "\" font-size=\"" + n(kSubFont) + "\">" + escape(part) + "</tspan>";
+    else out += down ? "<tspan dy=\"" + n(-kSubDrop) + "\">" + escape(part) + "</tspan>" : escape(part);
+    down = sub;
+  }
   return out;
 }
 
@@ -535,8 +583,10 @@ std::string tex_label_text(const std::string& text) {
 }
 
 void svg_labels(std::ostringstream& o, const Layout& L) {
-  for (auto& pl : L.labels)
-    o << "<text x=\"" << n(pl.box.x0 + 1) << "\" y=\"" << n(pl.box.y1 - 3) << "\">" << svg_label_text(pl.label->text) << "</text>\n";
+  for (auto& ld : L.leaders)
+    o << "<line x1=\"" << n(ld[0]) << "\" y1=\"" << n(ld[1]) << "\" x2=\"" << n(ld[2]) << "\" y2=\"" << n(ld[3]) << "\" stroke=\"" << pen(Ink::Thin).colour
+      << "\" stroke-width=\"0.8\" data-leader=\"1\"/>\n";
+  for (auto& pl : L.labels) o << "<text x=\"" << n(pl.x) << "\" y=\"" << n(pl.y) << "\">" << svg_label_text(pl.label->text) << "</text>\n";
 }
 
 extern const char* const kLabelFont = "font-family=\"DejaVu Sans, sans-serif\" font-size=\"13\" fill=\"#222222\"";
@@ -550,14 +600,17 @@ detail::Layout Sheet::layout(int width, int max_height, double width_cm) const {
     ps.push_back({&p.figure, p.title.size()});
     after.push_back(p.after.size());
   }
-  return lay_out(ps, width, max_height, nullptr, after, width_cm > 0 ? tikz_text(width_cm, width).second : 1);
+  if (width_cm <= 0) return lay_out(ps, width, max_height, nullptr, after, 1, 0);
+  const auto [pt, text] = tikz_text(width_cm, width);
+  return lay_out(ps, width, max_height, nullptr, after, text, pt);
 }
 
 std::pair<double, double> Sheet::tikz_text(double width_cm, int width) const {
-  // SVG's 13 px labels at the picture's scale would be font_pt; a document sets them at 8 pt
-  // (9 pt where the picture is large enough), and the layout makes room for that size
+  // SVG's 13 px labels at the picture's scale would be font_pt; the 11 pt document sets them at
+  // 9 pt (\footnotesize; 10 pt, \small, where the picture is large enough), and the layout makes
+  // room for that size
   const double k = width_cm / page_width(width, panels_.size()), font_pt = kFont * k * 28.4527;
-  const double set = font_pt < 9 ? 8 : 9;
+  const double set = font_pt < 10 ? 9 : 10;
   return {set, set / font_pt};
 }
 
@@ -611,9 +664,9 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
     if (p.dashed) s += ",dash pattern=on " + c(6 * k) + "cm off " + c(4 * k) + "cm";
     return s;
   };
-  // labels and titles at 8 pt (\footnotesize of a 10 pt document), or 9 pt (\small), whatever
+  // labels and titles at 9 pt (\footnotesize of the 11 pt document), or 10 pt (\small), whatever
   // the picture's scale (the layout made room for them)
-  const std::string font = tikz_text(width_cm, width).first < 9 ? "\\footnotesize" : "\\small";
+  const std::string font = tikz_text(width_cm, width).first < 10 ? "\\footnotesize" : "\\small";
   std::ostringstream o;
   o << "\\begin{tikzpicture}\n"
     ;
@@ -670,9 +723,11 @@ std::string Sheet::tikz(double width_cm, int width, int max_height) const {
       }
     }
   }
+  for (auto& ld : L.leaders)
+    o << "\\draw[draw=" << colour(Ink::Thin) << ",line width=" << c(k * 0.8) << "cm] " << pt(ld[0], ld[1]) << " -- " << pt(ld[2], ld[3]) << ";\n";
   for (auto& pl : L.labels) {
     const std::string body = pl.label->tex.empty() ? tex_label_text(pl.label->text) : "$" + pl.label->tex + "$";
-    o << "\\node[anchor=base west,inner sep=0pt,font=" << font << "] at " << pt(pl.box.x0 + 1, pl.box.y1 - 3 * L.text) << " {" << body << "};\n";
+    o << "\\node[anchor=base west,inner sep=0pt,font=" << font << "] at " << pt(pl.x, pl.y) << " {" << body << "};\n";
   }
   for (std::size_t pi = 0; pi < panels_.size(); ++pi) {
     const auto& p = panels_[pi];

@@ -17,7 +17,7 @@ struct Greek {
 };
 
 // longest first where one name begins another (theta before eta, epsilon before ... )
-constexpr std::array<Greek, 27> kGreek{{{"epsilon", "\u03b5", "\\varepsilon"},
+constexpr std::array<Greek, 28> kGreek{{{"epsilon", "\u03b5", "\\varepsilon"},
                                         {"lambda", "\u03bb", "\\lambda"},
                                         {"Lambda", "\u039b", "\\Lambda"},
                                         {"alpha", "\u03b1", "\\alpha"},
@@ -38,7 +38,8 @@ constexpr std::array<Greek, 27> kGreek{{{"epsilon", "\u03b5", "\\varepsilon"},
                                         {"eta", "\u03b7", "\\eta"},
                                         {"rho", "\u03c1", "\\rho"},
                                         {"tau", "\u03c4", "\\tau"},
-                                        {"phi", "\u03c6", "\\varphi"},
+                                        {"varphi", "\u03c6", "\\varphi"},
+                                        {"phi", "\u03d5", "\\phi"},  // (as the equations set it)
                                         {"Phi", "\u03a6", "\\Phi"},
                                         {"chi", "\u03c7", "\\chi"},
                                         {"psi", "\u03c8", "\\psi"},
@@ -106,7 +107,6 @@ Name from_tex(const std::string& tex) {
       std::size_t j = i + 1;
       while (j < tex.size() && std::isalpha(static_cast<unsigned char>(tex[j]))) ++j;
       std::string cmd = tex.substr(i + 1, j - i - 1);
-      if (cmd == "phi") cmd = "varphi";
       if (cmd == "epsilon") cmd = "varepsilon";
       for (const Greek& g : kGreek)
         if (std::string(g.tex) == "\\" + cmd) text += g.text;

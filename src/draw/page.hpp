@@ -1,12 +1,14 @@
 // The page a drawing is laid out on, shared by the figures (figure.cpp) and the animations
 // (animation.cpp): the layout, the SVG writer of one figure's world, the scene's drawing.
 #pragma once
+#include <array>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "kinergy/draw/figure.hpp"
+#include "glyphs.hpp"
 
 namespace kinergy::draw::detail {
 
@@ -41,10 +43,13 @@ struct Layout {
     double x0, y0, x1, y1;
   };
   struct Placed {
-    Box box;
+    Box box;  // the words' ink and a pixel round it
     const Figure::Label* label;
+    double x, y;  // where the words start, on their baseline
   };
   std::vector<Placed> labels;
+  /// Thin lines from an anchor to its label, where the label stands further out than a glyph.
+  std::vector<std::array<double, 4>> leaders;
   double mid = 0, title_y = 0;
   std::vector<double> between_x;  // where the words after panel i go
   /// The boxes no label may take: each panel's title, and the words between panels ("+", "=").
@@ -52,6 +57,8 @@ struct Layout {
   /// The size of the words on the page against the drawing's: 1 for SVG (13 px labels); larger
   /// where a document sets them at a size of its own (TikZ: 8 pt however small the drawing).
   double text = 1;
+  /// TikZ: the size (pt) the document sets the words at, by which they are measured; 0 for SVG.
+  double tex_pt = 0;
 };
 
 constexpr double kPad = 48, kGap = 120, kTitle = 26;
@@ -62,7 +69,7 @@ constexpr double kFont = 13, kCharWidth = 7.2;  // label font size and the width
 /// of an animation share the box round the whole motion). `after[i]`: the length of the words
 /// after panel i (0: none), whose place no label takes.
 Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels, int width, int max_height,
-               const Figure::Bounds* fixed = nullptr, const std::vector<std::size_t>& after = {}, double text = 1);
+               const Figure::Bounds* fixed = nullptr, const std::vector<std::size_t>& after = {}, double text = 1, double tex_pt = 0);
 
 /// The page width lay_out takes for `width` (0: its default for n panels).
 int page_width(int width, std::size_t n);

@@ -347,7 +347,7 @@ TEST_CASE("kinergy draw --figure N: a figure of the worked solution, as the LaTe
   CHECK(st == 0);
   CHECK(out.find("data-panel=\"2\"") != std::string::npos);
   CHECK(out.find(">momenta at before</text>") != std::string::npos);
-  CHECK(out.find(">J<tspan baseline-shift=\"sub\" font-size=\"10\">hit</tspan></text>") != std::string::npos);
+  CHECK(out.find(">J<tspan dy=\"4\" font-size=\"10\">hit</tspan></text>") != std::string::npos);
   out = kt::run_cli("draw " + scene + " --figure 4", st);
   CHECK(st != 0);
   CHECK(out.find("has 3 figures, not 4 \u2014 give --figure from 1 to 3") != std::string::npos);
@@ -553,8 +553,8 @@ TEST_CASE("names as a textbook writes them: Greek letters, subscripts, words lef
   auto tex = [](const std::string& id) { return textbook(id) ? textbook(id)->tex : std::string("-"); };
   CHECK(text("theta") == "\u03b8");
   CHECK(tex("theta") == "\\theta");
-  CHECK(text("phiA") == "\u03c6_A");
-  CHECK(tex("phiA") == "\\varphi_{A}");
+  CHECK(text("phiA") == "\u03d5_A");
+  CHECK(tex("phiA") == "\\phi_{A}");
   CHECK(text("beta") == "\u03b2");  // (not eta with a b)
   CHECK(text("mus") == "\u03bc_s");
   CHECK(text("omega0") == "\u03c9_0");
