@@ -55,6 +55,7 @@ Pen pen(Ink i) {
     case Ink::Dimension: return {"#777777", 0.8, false};
     case Ink::Sense: return {"#0b7a75", 1.4, false};
     case Ink::Cord: return {"#4a3b2a", 1.6, false};
+    case Ink::Velocity: return {"#1565c0", 1.8, false};
   }
   return {"#000000", 1.0, false};
 }
@@ -325,7 +326,7 @@ namespace {
 bool overlaps(const Layout::Box& a, const Layout::Box& b) { return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1; }
 
 // The places tried for a box w × h round the anchor (ax, ay), nearest first: the twelve of a
-// textbook's habit (right and above first), then rings further out in sixteen directions.
+// textbook's habit (right and above first), then rings further out (to 200 px) in 16 or 32 directions.
 std::vector<Layout::Box> places_round(double ax, double ay, double w, double h, double u) {
   std::vector<Layout::Box> out;
   const std::pair<double, double> habit[] = {{6, -4}, {6, 4}, {-6, -4}, {-6, 4}, {0, -6}, {0, 6}, {12, -14}, {-12, 14}, {12, 14}, {-12, -14}, {12, 0}, {-12, 0}};
@@ -335,7 +336,7 @@ std::vector<Layout::Box> places_round(double ax, double ay, double w, double h, 
     const double y0 = dy > 0 ? ay + dy * u : dy < 0 ? ay + dy * u - h : ay - h / 2;
     out.push_back({x0, y0, x0 + w, y0 + h});
   }
-  for (double d : {3.0, 8.0, 14.0, 20.0, 28.0, 36.0, 46.0, 58.0, 72.0, 90.0, 110.0}) {
+  for (double d : {3.0, 8.0, 14.0, 20.0, 28.0, 36.0, 46.0, 58.0, 72.0, 90.0, 110.0, 135.0, 165.0, 200.0}) {
     const int K = d < 20 ? 16 : 32;
     for (int k = 0; k < K; ++k) {
       // from the upper right round through above, left, below
@@ -374,7 +375,7 @@ void place_labels(Layout& L, const std::vector<std::pair<const Figure*, std::siz
       const double ax = P.tx + L.scale * l.x, ay = P.ty - L.scale * l.y;
       const auto places = places_round(ax, ay, w, h, u);
       // only the strokes that come near the places tried
-      Layout::Box reach{ax - 112 * u - w, ay - 112 * u - h, ax + 112 * u + w, ay + 112 * u + h};
+      Layout::Box reach{ax - 202 * u - w, ay - 202 * u - h, ax + 202 * u + w, ay + 202 * u + h};
       std::vector<Segment> near;
       for (auto& sg : strokes)
         if (crosses(sg, reach)) near.push_back(sg);
@@ -437,10 +438,13 @@ Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels,
     bs.push_back({cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2});
     sum_w += w;
   }
-  // one vertical place for every panel: the same height in the world at the same height on the page
-  double gy0 = bs.empty() ? 0 : bs[0].y0, gy1 = bs.empty() ? 0 : bs[0].y1;
-  for (auto& b : bs) gy0 = std::min(gy0, b.y0), gy1 = std::max(gy1, b.y1);
-  max_h = gy1 - gy0;
+  // one vertical place for every panel: the same height in the world at the same height on the
+  // page — unless that would make the page half as tall again as the tallest panel needs (a block
+  // far up an incline at one state): then each panel centred on its own
+  double gy0 = bs.empty() ? 0 : bs[0].y0, gy1 = bs.empty() ? 0 : bs[0].y1, own_h = 0;
+  for (auto& b : bs) gy0 = std::min(gy0, b.y0), gy1 = std::max(gy1, b.y1), own_h = std::max(own_h, b.y1 - b.y0);
+  const bool aligned = fixed || gy1 - gy0 <= 1.5 * own_h;
+  max_h = aligned ? gy1 - gy0 : own_h;
   const double gaps = kGap * static_cast<double>(n > 0 ? n - 1 : 0);
   const double title_h = titles ? kTitle * text : 0;
   // each panel as wide as its drawing, or its title when that is wider: the scale s solves
@@ -469,11 +473,10 @@ Layout lay_out(const std::vector<std::pair<const Figure*, std::size_t>>& panels,
   L.height = static_cast<int>(std::ceil(max_h * L.scale + 2 * pad + title_h - 1e-6));
   L.mid = pad + max_h * L.scale / 2;
   L.title_y = pad + max_h * L.scale + pad / 2 + 8 * text;
-  const double cy = (gy0 + gy1) / 2;
   double left = pad;
   for (std::size_t i = 0; i < n; ++i) {
     const auto& b = bs[i];
-    const double w = slot[i], cx = (b.x0 + b.x1) / 2;
+    const double w = slot[i], cx = (b.x0 + b.x1) / 2, cy = aligned ? (gy0 + gy1) / 2 : (b.y0 + b.y1) / 2;
     // X = left + w/2 + s (x − cx), Y = mid − s (y − cy)
     L.places.push_back({left + w / 2 - L.scale * cx, L.mid + L.scale * cy, left + w / 2});
     L.between_x.push_back(left + w + kGap / 2);
@@ -565,11 +568,26 @@ void svg_world(std::ostringstream& o, const Figure& f, const Layout::Place& P, d
 /// The label's text for SVG: a subscript kSubFont px, its baseline kSubDrop px lower (as
 /// svg_extent measures it), the words after it back on the line.
 std::string svg_label_text(const std::string& text) {
+  // (each space as a no-break space: SVG drops a space that begins or ends a tspan)
+  auto escape = [](const std::string& t) {
+    std::string o = detail::escape(t);
+    for (std::size_t at; (at = o.find(' ')) != std::string::npos;) o.replace(at, 1, "&#160;");
+    return o;
+  };
   std::string out;
   bool down = false;
   for (auto& [part, sub] : label_parts(text)) {
-    if (sub) out += "<tspan dy=\"" + n(down ? 0 : kSubDrop) + "\" font-size=\"" + n(kSubFont) + "\">" + escape(part) + "</tspan>";
-    else out += down ? "<tspan dy=\"" + n(-kSubDrop) + "\">" + escape(part) + "</tspan>" : escape(part);
+    if (sub) {
+      out += "<tspan dy=\"" + n(down ? 0 : kSubDrop) + "\" font-size=\"" + n(kSubFont) + "\">" + escape(part) + "</tspan>";
+    } else if (down) {
+      // back on the line; the spaces that begin the words as a shift (rsvg drops a space at the
+      // start of a tspan, even a no-break one), as wide as svg_extent measures them
+      const std::size_t lead = std::min(part.find_first_not_of(' '), part.size());
+      const std::string dx = lead > 0 ? " dx=\"" + n(svg_extent(part.substr(0, lead)).width) + "\"" : "";
+      out += "<tspan" + dx + " dy=\"" + n(-kSubDrop) + "\">" + escape(part.substr(lead)) + "</tspan>";
+    } else {
+      out += escape(part);
+    }
     down = sub;
   }
   return out;
@@ -1023,7 +1041,9 @@ double glyph_for(const model::Model& m, const At& at) {
 
 Figure scene_at(const model::Model& m, const exmap& solved, const exmap& params, int state) {
   const At at = state_values(m, solved, params, state);
-  return drawing(m, at, glyph_for(m, at));
+  Figure f = drawing(m, at, glyph_for(m, at));
+  given_data(m, state, at, f);
+  return f;
 }
 
 Figure first_drawable(const model::Model& m, const exmap& solved, const exmap& params, std::vector<std::string>& left_out) {
@@ -1055,7 +1075,11 @@ Sheet states_at(const model::Model& m, const exmap& solved, const exmap& params,
     g = std::max(g, glyph_for(m, ats.back().second));
   }
   Sheet sheet;
-  for (auto& [st, at] : ats) sheet.add(drawing(m, at, g), "state " + m.states.at(static_cast<std::size_t>(st)).name);
+  for (auto& [st, at] : ats) {
+    Figure f = drawing(m, at, g);
+    given_data(m, st, at, f);
+    sheet.add(std::move(f), "state " + m.states.at(static_cast<std::size_t>(st)).name);
+  }
   return sheet;
 }
 
@@ -1071,8 +1095,11 @@ Sheet positions_with(const model::Model& m, const exmap& solved, const exmap& pa
   if (!a1) a1 = state_values(m, solved, params, from, &*a2);
   const double g = std::max(glyph_for(m, *a1), glyph_for(m, *a2));
   Sheet sheet;
-  sheet.add(drawing(m, *a1, g, &bodies, &effects), "state " + m.states.at(static_cast<std::size_t>(from)).name);
-  sheet.add(drawing(m, *a2, g, &bodies, &effects), "state " + m.states.at(static_cast<std::size_t>(to)).name);
+  for (auto [st, at] : {std::pair<int, const At*>{from, &*a1}, {to, &*a2}}) {
+    Figure f = drawing(m, *at, g, &bodies, &effects);
+    given_data(m, st, *at, f, &bodies);
+    sheet.add(std::move(f), "state " + m.states.at(static_cast<std::size_t>(st)).name);
+  }
   return sheet;
 }
 

@@ -145,8 +145,8 @@ private:
     const TexChar& c = f.c[code & 127u];
     Item it{type, {pt * c.wd, pt * c.ht, pt * c.dp}, pt * c.ic, true, &f, code & 127u, pt};
     if (type == Atom::Op) {
-      // a large operator centred on the axis (cmsy's axis height, 0.25 em)
-      const double axis = 0.25 * size(script), half = (it.e.above + it.e.below) / 2;
+      // a large operator centred on the axis (cmsy's axis height)
+      const double axis = tex_font("cmsy", size(script)).axis * size(script), half = (it.e.above + it.e.below) / 2;
       it.e.above = half + axis;
       it.e.below = half - axis;
     }
@@ -210,19 +210,27 @@ private:
     return Item{Atom::Ord, hlist(one, script)};
   }
 
-  // The scripts on `nucleus` (rules 17, 18): a subscript after its width without its italic
-  // correction, a superscript after it with; each followed by \scriptspace (0.5 pt).
+  // The scripts on `nucleus` (rules 17, 18; text and script styles, not cramped): a subscript
+  // after its width without its italic correction, a superscript after it with; each followed by
+  // \scriptspace (0.5 pt). The shifts from the symbol font's σ parameters at the nucleus's size
+  // (drops at the scripts').
   void attach(Item& nucleus, const Item* sub, const Item* sup, bool script) {
-    const double xh = 0.430555 * size(script), drop = 0.05 * size(true);
+    const TexFont& sy = tex_font("cmsy", size(script));
+    const TexFont& ss = tex_font("cmsy", size(true));
+    const double at = size(script), xh = sy.xheight * at;
     const double base = nucleus.e.width;
     double width = base + nucleus.ic;
+    // (a character's box: no drop, rule 18a)
+    const double up0 = nucleus.is_char ? 0 : nucleus.e.above - ss.sup_drop * size(true);
+    const double down0 = nucleus.is_char ? 0 : nucleus.e.below + ss.sub_drop * size(true);
+    double up = 0, down = 0;
     if (sup) {
-      const double up = std::max({0.412892 * size(script), sup->e.below + xh / 4, nucleus.is_char ? 0.0 : nucleus.e.above - 0.386108 * size(true)});
+      up = std::max({up0, sy.sup2 * at, sup->e.below + xh / 4});
       nucleus.e.above = std::max(nucleus.e.above, up + sup->e.above);
       width = base + nucleus.ic + sup->e.width + (sup->is_char ? sup->ic : 0) + 0.5;
     }
     if (sub) {
-      const double down = std::max({0.15 * size(script), sub->e.above - 0.8 * xh, nucleus.is_char ? 0.0 : nucleus.e.below + drop});
+      down = sup ? std::max(down0, sy.sub2 * at) : std::max({down0, sy.sub1 * at, sub->e.above - 0.8 * xh});
       nucleus.e.below = std::max(nucleus.e.below, down + sub->e.below);
       nucleus.e.above = std::max(nucleus.e.above, sub->e.above - down);
       width = std::max(width, base + sub->e.width + (sub->is_char ? sub->ic : 0) + 0.5);
@@ -242,7 +250,7 @@ private:
                                                              {"Sigma", 6}, {"Upsilon", 7}, {"Phi", 010}, {"Psi", 011}, {"Omega", 012}};
     static const std::map<std::string, std::pair<unsigned, Atom>> symbols = {
         {"cdot", {1, Atom::Bin}}, {"times", {2, Atom::Bin}}, {"pm", {6, Atom::Bin}}, {"infty", {061, Atom::Ord}}, {"leq", {024, Atom::Rel}},
-        {"geq", {025, Atom::Rel}}, {"approx", {031, Atom::Rel}}, {"neq", {075, Atom::Rel}}, {"to", {041, Atom::Rel}}};
+        {"geq", {025, Atom::Rel}}, {"approx", {031, Atom::Rel}}, {"neq", {075, Atom::Rel}}, {"to", {041, Atom::Rel}}, {"circ", {016, Atom::Ord}}};
     static const std::map<std::string, int> spaces = {{",", 3}, {":", 4}, {">", 4}, {";", 5}, {"!", -3}};
     if (auto g = greek.find(name); g != greek.end()) return character("cmmi", g->second, Atom::Ord, script);
     if (auto c = capitals.find(name); c != capitals.end()) return character(family == "cmbx" ? "cmbx" : "cmr", c->second, Atom::Ord, script);
@@ -280,8 +288,8 @@ private:
       case ')': case ']': return character("cmr", static_cast<unsigned>(ch), Atom::Close, script);
       case ',': return character("cmmi", 073, Atom::Punct, script);
       case ';': return character("cmr", ';', Atom::Punct, script);
-      case '.': return character("cmmi", 072, Atom::Ord, script);
-      case '/': return character("cmmi", 075, Atom::Ord, script);
+      case '.': return roman ? character(family, '.', Atom::Ord, script) : character("cmmi", 072, Atom::Ord, script);
+      case '/': return roman ? character(family, '/', Atom::Ord, script) : character("cmmi", 075, Atom::Ord, script);
       case '|': return character("cmsy", 0152, Atom::Ord, script);
       default: return character("cmmi", 'x', Atom::Ord, script);
     }

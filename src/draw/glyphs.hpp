@@ -19,6 +19,9 @@ struct TexFont {
   const char* name;
   double size;         // design size, pt
   double quad, space;  // ems: the quad (18 mu, in cmsy) and the interword space
+  /// The symbol font's (cmsy) placing of scripts, in ems: x-height, sup2, sub1, sub2, sup_drop,
+  /// sub_drop, axis height (The TeXbook's σ5, σ14, σ16, σ17, σ18, σ19, σ22); zero elsewhere.
+  double xheight, sup2, sub1, sub2, sup_drop, sub_drop, axis;
   TexChar c[128];
 };
 struct TexKern {

@@ -110,7 +110,13 @@ def tfm_metrics(name):
             return float(k.group(1)) if k else 0.0
 
         chars[code] = (get("CHARWD"), get("CHARHT"), get("CHARDP"), get("CHARIC"))
-    quad = float(re.search(r"\(QUAD R (-?[0-9.]+)\)", pl).group(1))
+    def fontdimen(key):
+        k = re.search(r"\(" + key + r" R (-?[0-9.]+)\)", pl)
+        return float(k.group(1)) if k else 0.0
+
+    quad = fontdimen("QUAD")
+    # the symbol font's placing of scripts (0 in the other fonts)
+    script_dimens = tuple(fontdimen(k) for k in ("XHEIGHT", "SUP2", "SUB1", "SUB2", "SUPDROP", "SUBDROP", "AXISHEIGHT"))
     space = float(re.search(r"\(SPACE R (-?[0-9.]+)\)", pl).group(1))
     # the kerns of the lig/kern program: each label's entries up to its STOP
     kerns = {}
@@ -130,7 +136,7 @@ def tfm_metrics(name):
             continue
         if row.startswith("(STOP)"):
             labels = []
-    return size, quad, space, chars, kerns
+    return size, quad, space, script_dimens, chars, kerns
 
 
 def main():
@@ -147,9 +153,9 @@ def main():
     out.append("const TexFont kTexFonts[] = {")
     all_kerns = []
     for index, name in enumerate(TEX_FONTS):
-        size, quad, space, chars, kerns = tfm_metrics(name)
+        size, quad, space, dimens, chars, kerns = tfm_metrics(name)
         all_kerns += [(index, l, r, k) for (l, r), k in sorted(kerns.items()) if l < 127 and r < 127]  # (127: the skew char, for accents)
-        out.append('    {"%s", %.1f, %.6f, %.6f, {' % (name, size, quad, space))
+        out.append('    {"%s", %.1f, %.6f, %.6f, %s, {' % (name, size, quad, space, ", ".join("%.6f" % d for d in dimens)))
         cells = ["{%.4f, %.4f, %.4f, %.4f}" % chars.get(c, (0, 0, 0, 0)) for c in range(128)]
         for i in range(0, 128, 8):
             out.append("        " + ", ".join(cells[i: i + 8]) + ",")

@@ -27,7 +27,7 @@ struct Pen {
 Pen pen(Ink i);
 /// Every ink, for writers that go through them all (TikZ's colours, gnuplot's series).
 constexpr Ink kInks[] = {Ink::Body, Ink::Thin, Ink::Support, Ink::Force, Ink::Spring,
-                         Ink::Track, Ink::Hidden, Ink::Momentum, Ink::Dimension, Ink::Sense, Ink::Cord};
+                         Ink::Track, Ink::Hidden, Ink::Momentum, Ink::Dimension, Ink::Sense, Ink::Cord, Ink::Velocity};
 
 // A sheet laid out on the page (pixels, y down): one scale for every panel, each panel's world
 // mapped by X = tx + s x, Y = ty − s y; labels placed off each other.
@@ -90,5 +90,10 @@ extern const char* const kLabelFont;
 /// senses. With `bodies` / `effects`, only those bodies (by index) and effects (by name).
 Figure drawing(const model::Model& m, const At& at, double g, const std::vector<int>* bodies = nullptr,
                const std::vector<std::string>* effects = nullptr);
+
+/// The data state `state` gives, drawn into its figure f (given.cpp): each given rate as an
+/// arrow, or a curved arrow, with its value; each given coordinate that places the state as an
+/// angle arc or a dimension line from where it is zero. Only on `bodies` when given.
+void given_data(const model::Model& m, int state, const At& at, Figure& f, const std::vector<int>* bodies = nullptr);
 
 }  // namespace kinergy::draw::detail

@@ -507,11 +507,14 @@ std::string outside_subscripts(const std::string& s, bool tex) {
 }
 
 /// The first raw name in a label's words: a '+' before a name, or a run of two or more letters
-/// outside a subscript other than "dt" ("" when none).
+/// outside a subscript other than "dt" and a unit after a number (6 m/s, 20 rad/s, as
+/// "6\,\mathrm{rad/s}" in TeX) ("" when none).
 std::string raw_name(const std::string& words) {
   if (!words.empty() && words[0] == '+') return words;
+  // (commands are dropped before: "6\,\mathrm{m/s}" reads "6 , {m/s}")
+  static const std::regex unit("[0-9][ ,{]+[A-Za-z/]+");
+  std::string rest = std::regex_replace(words, unit, "0");
   std::smatch m;
-  std::string rest = words;
   static const std::regex run("[A-Za-z]{2,}");
   while (std::regex_search(rest, m, run)) {
     if (m.str() != "dt") return m.str();
@@ -529,6 +532,9 @@ TEST_CASE("every figure of every derivation names things as a textbook does: no 
   CHECK(raw_name(outside_subscripts("R_{x,\\mathrm{axle}}", true)).empty());
   CHECK(raw_name(outside_subscripts("\\int W_{\\mathrm{rod}}\\,dt", true)).empty());
   CHECK(raw_name(outside_subscripts("+phiA", false)) == "+phiA");
+  CHECK(raw_name(outside_subscripts("v_1 = 6 m/s", false)).empty());
+  CHECK(raw_name(outside_subscripts("\\omega_{1} = 30\\,\\mathrm{rad/s}", true)).empty());
+  CHECK(raw_name(outside_subscripts("v = ms", false)) == "ms");
   CHECK(raw_name(outside_subscripts("\\mathrm{drive}\\,\\Delta t", true)) == "drive");
   int labels = 0;
   std::vector<std::string> faults;

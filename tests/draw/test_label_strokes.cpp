@@ -97,10 +97,12 @@ void read_svg(const std::string& svg, std::vector<Seg>& strokes, std::vector<Box
     strokes.push_back({std::stod(attr(tag, "x1")), std::stod(attr(tag, "y1")), std::stod(attr(tag, "x2")), std::stod(attr(tag, "y2"))});
   }
   static const std::regex text("<text x=\"([^\"]+)\" y=\"([^\"]+)\">(.*?)</text>");
-  static const std::regex sub("<tspan dy=\"[^\"]*\" font-size=\"10\">([^<]*)</tspan>"), back("<tspan dy=\"[^\"]*\">([^<]*)</tspan>");
+  static const std::regex sub("<tspan dy=\"[^\"]*\" font-size=\"10\">([^<]*)</tspan>"), back("<tspan dy=\"[^\"]*\">([^<]*)</tspan>"),
+      shifted("<tspan dx=\"[^\"]*\" dy=\"[^\"]*\">([^<]*)</tspan>");
   for (auto t = std::sregex_iterator(svg.begin(), svg.end(), text); t != std::sregex_iterator(); ++t) {
-    std::string words = std::regex_replace(std::regex_replace(std::string((*t)[3]), sub, "_$1"), back, "$1");
-    for (auto [from, to] : {std::pair<std::string, std::string>{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&amp;", "&"}})
+    // (a shift dx back on the line stands for a space, as svg_label_text writes it)
+    std::string words = std::regex_replace(std::regex_replace(std::regex_replace(std::string((*t)[3]), sub, "_$1"), back, "$1"), shifted, " $1");
+    for (auto [from, to] : {std::pair<std::string, std::string>{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&#160;", " "}, {"&amp;", "&"}})
       for (std::size_t at; (at = words.find(from)) != std::string::npos;) words.replace(at, from.size(), to);
     const double x = std::stod((*t)[1]), y = std::stod((*t)[2]);
     const auto e = kinergy::draw::detail::svg_extent(words);

@@ -32,7 +32,7 @@ struct At {
 };
 
 /// What a stroke is for: its colour and weight follow.
-enum class Ink { Body, Thin, Support, Force, Spring, Track, Hidden, Momentum, Dimension, Sense, Cord };
+enum class Ink { Body, Thin, Support, Force, Spring, Track, Hidden, Momentum, Dimension, Sense, Cord, Velocity };
 
 class Figure {
 public:
