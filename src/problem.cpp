@@ -11,6 +11,7 @@
 #include <cln/rational.h>
 
 #include "kinergy/common/error.hpp"
+#include "kinergy/model/poses.hpp"
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/numeric/evaluate.hpp"
 #include "kinergy/numeric/roots.hpp"
@@ -1044,6 +1045,12 @@ private:
     const numerics::TraceForms traced(forms);
     for (auto& e : m.effects)
       for (std::size_t s = 0; s < m.states.size(); ++s) e.check(m, static_cast<int>(s), values);
+    // no two bodies in one place at a state (model/poses.hpp)
+    for (std::size_t s = 0; s < m.states.size(); ++s)
+      if (const auto o = model::overlapping_at(m, static_cast<int>(s), values); !o.empty())
+        throw SceneError(m.states[s].pos, "at state '" + m.states[s].name + "' " + o.front() + ": two bodies cannot be in one place",
+                         "give state '" + m.states[s].name + "' positions that keep them apart, or join the two (a pin, a contact) where "
+                         "one is meant to stand over the other");
     // what the equations took for granted (a switching force passed, a declared direction of
     // sliding): e ≥ 0
     for (auto& bal : sol_.balances)

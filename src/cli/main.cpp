@@ -25,6 +25,7 @@
 #include "kinergy/draw/figure.hpp"
 #include "kinergy/emit/derive.hpp"
 #include "kinergy/emit/emit.hpp"
+#include "kinergy/model/poses.hpp"
 #include "kinergy/problem.hpp"
 #include "kinergy/confirm/check.hpp"
 #include "kinergy/confirm/confirm.hpp"
@@ -100,7 +101,9 @@ struct Loaded {
   std::optional<kinergy::Solution> sol;
   std::optional<kinergy::model::Model> bare;
   /// The scene, with `sets` ("NAME=VALUE", as a scene writes a value) put in.
-  explicit Loaded(const std::string& file, const std::vector<std::string>& sets = {}) {
+  /// Why the scene was not solved, where `draw_anyway` let it be drawn from the bare model.
+  std::string unsolved;
+  explicit Loaded(const std::string& file, const std::vector<std::string>& sets = {}, bool draw_anyway = false) {
     kinergy::scene::SceneDef def = kinergy::scene::load_file(file);
     for (const std::string& t : sets) {
       const std::size_t eq = t.find('=');
@@ -108,8 +111,18 @@ struct Loaded {
         throw kinergy::InputError("'" + t + "' does not set a parameter", "write NAME=VALUE as the scene writes a value, e.g. --set L=0.9 m");
       kinergy::app::set_parameter(def, t.substr(0, eq), t.substr(eq + 1));
     }
-    if (def.analyses.empty()) bare = kinergy::model::Model::build(def);
-    else sol = kinergy::solve_scene(def);
+    if (def.analyses.empty()) {
+      bare = kinergy::model::Model::build(def);
+      return;
+    }
+    try {
+      sol = kinergy::solve_scene(def);
+    } catch (const kinergy::SceneError& e) {
+      // (a drawing of a scene that cannot be, as it is given: the reason said beside it)
+      if (!draw_anyway) throw;
+      unsolved = e.what();
+      bare = kinergy::model::Model::build(def);
+    }
   }
   const kinergy::model::Model& model() const { return sol ? sol->model : *bare; }
 };
@@ -265,9 +278,10 @@ struct DrawCommand {
 
   int run() const {
     return guarded(scene, [&]() -> int {
-      Loaded in(scene, sets);
+      Loaded in(scene, sets, draw_figure == 0);
       const kinergy::model::Model& m = in.model();
       const auto& sol = in.sol;
+      if (!in.unsolved.empty()) std::cerr << scene << ": warning: not solved, so drawn as the scene gives it: " << in.unsolved << "\n";
       if (m.states.empty()) throw kinergy::SceneError({scene, 1, 1}, "the scene has no states to draw", "add a state with every coordinate");
       // a parameter without a value: drawn at a sample value, said
       std::string samples;
@@ -310,6 +324,20 @@ struct DrawCommand {
         throw kinergy::SceneError({scene, 1, 1}, "no state of the scene fixes every coordinate, so none can be drawn",
                                   "give every coordinate at one state at least");
       for (auto& why : left_out) std::cerr << scene << ": left out of the drawing: " << why << "\n";
+      // a pose that cannot be is drawn as the scene gives it, and said (a scene that was solved has
+      // none; one that was not said why)
+      for (std::size_t st = 0; st < m.states.size() && in.unsolved.empty(); ++st) {
+        if (!draw_state.empty() && draw_state != "all" && static_cast<int>(st) != states[0]) continue;
+        kinergy::draw::At at;
+        try {
+          at = kinergy::draw::state_values(m, solved, values, static_cast<int>(st));
+        } catch (const kinergy::SceneError&) {
+          continue;
+        }
+        for (auto& o : kinergy::model::overlapping(m, [&](const GiNaC::ex& e) { return at(e); }))
+          std::cerr << scene << ": warning: at state '" << m.states[st].name << "' " << o << ": two bodies cannot be in one place (drawn as given)\n";
+        if (draw_state.empty()) break;
+      }
       if (draw_out.empty()) std::cout << sheet.svg();
       else kinergy::draw::write(sheet, draw_out);
       return 0;
