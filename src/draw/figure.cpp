@@ -940,6 +940,14 @@ std::optional<Name> body_label(const model::Body& b) {
   return short_name(b.name);
 }
 
+Name point_label(const model::Model& m, const std::string& point) {
+  if (const auto l = m.point_labels.find(point); l != m.point_labels.end()) return from_tex(l->second);
+  const auto dot = point.rfind('.');
+  return identifier_label(dot == std::string::npos ? point : point.substr(dot + 1));
+}
+
+Name coordinate_label(const model::Coordinate& c) { return c.label.empty() ? identifier_label(c.name) : from_tex(c.label); }
+
 void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, double rim) {
   const model::Body& b = m.bodies.at(static_cast<std::size_t>(bi));
   f.owned_by("body " + b.name);
@@ -970,7 +978,7 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, d
   for (auto& [pn, lp] : b.points) {
     auto [px, py] = world(at(lp.first), at(lp.second));
     f.mark(px, py, b.name + "." + pn);
-    const Name n = identifier_label(pn);
+    const Name n = point_label(m, b.name + "." + pn);
     f.label(px, py, n.text, n.tex);
   }
   f.owned_by("");
@@ -991,7 +999,7 @@ Figure drawing(const model::Model& m, const At& at, double g, const std::vector<
   }
   for (auto& [pn, p] : m.fixed_points) {
     f.mark(at(p.first), at(p.second), pn, true);
-    const Name n = identifier_label(pn);
+    const Name n = point_label(m, pn);
     f.label(at(p.first), at(p.second), n.text, n.tex);
   }
   for (auto& e : m.effects) {
@@ -1005,7 +1013,7 @@ Figure drawing(const model::Model& m, const At& at, double g, const std::vector<
   // centre along ∂r̄/∂q, or a curved arrow round it when q only turns the body (∂φ/∂q), named
   // as a textbook names it (θ, φ_A, x)
   for (auto& c : m.coords) {
-    const Name q = identifier_label(c.name);
+    const Name q = coordinate_label(c);
     for (auto& b : m.bodies) {
       const double dx = at(b.x.diff(c.q)), dy = at(b.y.diff(c.q)), dphi = at(b.angle.diff(c.q));
       const double gx = at(b.x), gy = at(b.y);

@@ -199,8 +199,8 @@ struct Diagram {
     auto [x, y] = at.point(m.position(*a.about()));
     if (std::isfinite(x) && std::isfinite(y)) {
       f.mark(x, y, a.about()->text, a.about()->body < 0);
-      const auto n = draw::textbook(a.about()->text);
-      f.label(x, y, n ? n->text : a.about()->text, n ? n->tex : "");
+      const draw::Name n = draw::point_label(m, a.about()->text);
+      f.label(x, y, n.text, n.tex);
     }
   }
 

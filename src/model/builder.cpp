@@ -262,7 +262,7 @@ private:
         throw SceneError(c.unit.pos, "coordinate '" + c.name + "' has unit '" + c.unit.s +
                                          "'; a coordinate is a length or an angle",
                          "write 'm' (or ft, in …) or 'rad'");
-      Coordinate co{c.name, c.pos, realsymbol(c.name), realsymbol(c.name + "_dot"), u.dim, realsymbol(c.name + "_ddot")};
+      Coordinate co{c.name, c.pos, realsymbol(c.name), realsymbol(c.name + "_dot"), u.dim, realsymbol(c.name + "_ddot"), c.label};
       m_.add_symbol(co.q, co.dim);
       m_.add_symbol(co.qd, co.dim / Dimension::time());
       m_.names_[c.name] = co.q;
@@ -283,6 +283,7 @@ private:
       if (m_.fixed_points.count(p.name))
         throw SceneError(p.pos, "point '" + p.name + "' is defined twice", "rename one of them");
       m_.fixed_points[p.name] = {x, y};
+      if (!p.label.empty()) m_.point_labels[p.name] = p.label;
     }
   }
 
@@ -320,6 +321,7 @@ private:
         ex py = checked(p.y, SceneContext::ParamsOnly, L, p.name + "[1]",
                         "body points are lengths in body axes (parameters only)");
         b.points[p.name] = {px + b.ref_x, py + b.ref_y};  // (through G)
+        if (!p.label.empty()) m_.point_labels[bd.name + "." + p.name] = p.label;
       }
       if (m_.body_index(bd.name) >= 0)
         throw SceneError(bd.pos, "body '" + bd.name + "' is defined twice", "rename one");

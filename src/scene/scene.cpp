@@ -232,6 +232,21 @@ struct Loader {
     return {text(n.items[0], key + "[0]", example), text(n.items[1], key + "[1]", example)};
   }
 
+  /// A point: `[x, y]`, or `{at: [x, y], label: "P_1"}` with its name for figures.
+  PointDef point(const Node& k, const Node& v, const std::string& example) const {
+    if (!v.is_map()) {
+      auto [x, y] = pair(v, k.scalar, k.scalar + ": " + example);
+      return {k.scalar, k.pos, x, y};
+    }
+    only_keys(v, "point '" + k.scalar + "'", {"at", "label"});
+    const Node* at = v.get("at");
+    if (!at) throw SceneError(v.pos, "point '" + k.scalar + "' has no 'at'", "write '" + k.scalar + ": {at: " + example + ", label: \"P_1\"}'");
+    auto [x, y] = pair(*at, k.scalar, k.scalar + ": {at: " + example + "}");
+    PointDef p{k.scalar, k.pos, x, y};
+    if (const Node* l = v.get("label")) p.label = read_label(*l, "point '" + k.scalar + "'");
+    return p;
+  }
+
   /// A section name met inside another section: its line is indented under the section above.
   void not_a_section(const Node& k, const Node& root, const std::string& inside) const {
     static const std::vector<std::string> sections = {"parameters", "points", "coordinates", "bodies", "constraints",
@@ -424,8 +439,7 @@ struct Loader {
           need_map(*pts, "points", "points: {A: [l/2, 0]}");
           for (auto& [pk, pv] : pts->entries) {
             check_name(pk, "point");
-            auto [px, py] = pair(pv, pk.scalar, pk.scalar + ": [l/2, 0]");
-            b.points.push_back({pk.scalar, pk.pos, px, py});
+            b.points.push_back(point(pk, pv, "[l/2, 0]"));
           }
         }
         s.bodies.push_back(std::move(b));
@@ -627,8 +641,7 @@ struct Loader {
       for (auto& [k, v] : p->entries) {
         not_a_section(k, r, "points");
         check_name(k, "point");
-        auto [x, y] = pair(v, k.scalar, k.scalar + ": [0, 0]");
-        s.points.push_back({k.scalar, k.pos, x, y});
+        s.points.push_back(point(k, v, "[0, 0]"));
       }
     }
     if (auto* p = r.get("coordinates")) {
@@ -636,7 +649,17 @@ struct Loader {
       for (auto& [k, v] : p->entries) {
         not_a_section(k, r, "coordinates");
         check_name(k, "coordinate");
-        s.coordinates.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": rad")});
+        if (!v.is_map()) {
+          s.coordinates.push_back({k.scalar, k.pos, text(v, k.scalar, k.scalar + ": rad")});
+          continue;
+        }
+        // {unit: rad, label: "\\theta_1"}
+        only_keys(v, "coordinate '" + k.scalar + "'", {"unit", "label"});
+        const Node* unit = v.get("unit");
+        if (!unit) throw SceneError(v.pos, "coordinate '" + k.scalar + "' has no 'unit'", "write '" + k.scalar + ": {unit: rad, label: \"\\\\theta_1\"}'");
+        CoordinateDef c{k.scalar, k.pos, text(*unit, "unit", k.scalar + ": {unit: rad}")};
+        if (const Node* l = v.get("label")) c.label = read_label(*l, "coordinate '" + k.scalar + "'");
+        s.coordinates.push_back(c);
       }
     }
     read_bodies(r, s);

@@ -605,3 +605,36 @@ TEST_CASE("label: a body's and an effect's own names in the figures, and what a 
   CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "label: \"D\"", "label: \"D_{1\"")), Catch::Contains("has braces that do not close"));
   CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "label: \"F_k\"", "label: [F, k]")), Catch::Contains("the label of effect 'table' is a name in TeX"));
 }
+
+TEST_CASE("label: a point's and a coordinate's own names in the figures, and the forms refused (issue 47)", "[draw][labels]") {
+  // compound_pendulum: the pin O labelled O_1, the bar's end B labelled P, θ labelled β
+  std::string scene = kt::derivation("energy/compound_pendulum.yaml");
+  scene = kt::edit(scene, "  O: [0, 0]\ncoordinates:\n  theta: rad", "  O: {at: [0, 0], label: \"O_1\"}\ncoordinates:\n  theta: {unit: rad, label: \"\\\\beta\"}");
+  scene = kt::edit(scene, "points: {O: [-L/2, 0], B: [L/2, 0]}", "points: {O: [-L/2, 0], B: {at: [L/2, 0], label: \"P\"}}");
+  const auto s = kt::solve_text(scene);
+  CHECK(kt::result(s, "omega2").si->to_double() > 0);  // (the same problem: labels change no number)
+  const auto d = kinergy::emit::derive(s);
+  std::set<std::string> texts, tex;
+  for (const auto& b : d.blocks)
+    if (b.sheet)
+      for (std::size_t i = 0; i < b.sheet->size(); ++i)
+        for (const auto& l : b.sheet->panel(i).labels()) texts.insert(l.text), tex.insert(l.tex);
+  CHECK(texts.count("O_1"));
+  CHECK(texts.count("P"));
+  CHECK(texts.count("\u03b2"));
+  CHECK(tex.count("\\beta"));
+  CHECK_FALSE(texts.count("B"));
+  CHECK_FALSE(texts.count("\u03b8"));
+  // (the bar's own O, pinned at the ground's O, keeps its name)
+  CHECK(texts.count("O"));
+  // the forms refused, each at its line
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "{at: [0, 0], label: \"O_1\"}", "{label: \"O_1\"}")), Catch::Contains("point 'O' has no 'at'"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "{at: [0, 0], label: \"O_1\"}", "{at: [0, 0], name: \"O_1\"}")), Catch::Contains("unknown key 'name' in point 'O' — use one of: at, label"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "label: \"P\"", "label: \"P%\"")),
+                    Catch::Contains("the label of point 'B' holds '%'"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "{unit: rad, label: \"\\\\beta\"}", "{label: \"\\\\beta\"}")),
+                    Catch::Contains("coordinate 'theta' has no 'unit'"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "{unit: rad, label: \"\\\\beta\"}", "{unit: kg, label: \"\\\\beta\"}")),
+                    Catch::Contains("a coordinate is a length or an angle"));
+  CHECK_THROWS_WITH(kt::solve_text(kt::edit(scene, "label: \"\\\\beta\"", "label: [b]")), Catch::Contains("the label of coordinate 'theta' is a name in TeX"));
+}

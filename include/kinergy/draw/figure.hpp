@@ -16,6 +16,7 @@
 namespace kinergy::model {
 class Model;
 struct Body;
+struct Coordinate;
 }
 
 namespace kinergy::draw {
@@ -185,6 +186,10 @@ At state_values(const model::Model& m, const GiNaC::exmap& solved, const GiNaC::
 
 /// How figures name a body: its `label:`, else its short name (gearA: A); none for a word alone.
 std::optional<Name> body_label(const model::Body& b);
+/// How figures name a point ("O", "bar.A": the name after the dot) and a coordinate: its
+/// `label:`, else its name as a textbook writes it (OA: O_A, theta: θ).
+Name point_label(const model::Model& m, const std::string& point);
+Name coordinate_label(const model::Coordinate& c);
 
 /// Body b by its inertia shape at `at`: a bar, a disk with its reference line, a plate, a
 /// block; its mass centre and (with `points`) its named points marked and labelled. A wheel known

@@ -43,6 +43,7 @@ struct Coordinate {
   GiNaC::realsymbol q, qd;  ///< q and q_dot (generic, not bound to a state)
   Dimension dim;
   GiNaC::realsymbol qdd;    ///< q_ddot (generic): kinetics at an instant
+  std::string label = {};   ///< `label:`: how figures name it (TeX), "" for a name derived from its own
 };
 
 struct Body {
@@ -211,6 +212,9 @@ public:
   std::vector<Parameter> params;
   std::vector<Coordinate> coords;
   std::map<std::string, std::pair<ex, ex>> fixed_points;
+  /// `label:` of a point (TeX): a fixed point's by its name, a body's point by "body.point".
+  /// Drawing only.
+  std::map<std::string, std::string> point_labels;
   std::vector<Body> bodies;
   std::vector<std::pair<ex, SourcePos>> constraints;  ///< generic, == 0
   EffectList effects;

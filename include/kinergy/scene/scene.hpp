@@ -48,8 +48,10 @@ struct ParameterDef {
   std::optional<std::pair<Text, Text>> in;  ///< [lo, hi] it lies in (checked on a value, sampled in without one)
   SourcePos in_pos;
 };
-struct PointDef { std::string name; SourcePos pos; Text x, y; };
-struct CoordinateDef { std::string name; SourcePos pos; Text unit; };
+/// A point (fixed, or of a body) and a coordinate; `label`: how figures name it (TeX's math mode),
+/// "" for the name derived from its own.
+struct PointDef { std::string name; SourcePos pos; Text x, y; std::string label = {}; };
+struct CoordinateDef { std::string name; SourcePos pos; Text unit; std::string label = {}; };
 
 struct InertiaDef {
   std::string kind;  ///< slender_rod, disk, cylinder, ring, hoop, plate, sphere, spherical_shell, gyration, centroidal, particle
