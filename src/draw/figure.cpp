@@ -326,7 +326,7 @@ namespace {
 bool overlaps(const Layout::Box& a, const Layout::Box& b) { return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1; }
 
 // The places tried for a box w × h round the anchor (ax, ay), nearest first: the twelve of a
-// textbook's habit (right and above first), then rings further out (to 200 px) in 16 or 32 directions.
+// textbook's habit (right and above first), then rings further out (to 290 px) in 16 or 32 directions.
 std::vector<Layout::Box> places_round(double ax, double ay, double w, double h, double u) {
   std::vector<Layout::Box> out;
   const std::pair<double, double> habit[] = {{6, -4}, {6, 4}, {-6, -4}, {-6, 4}, {0, -6}, {0, 6}, {12, -14}, {-12, 14}, {12, 14}, {-12, -14}, {12, 0}, {-12, 0}};
@@ -336,7 +336,7 @@ std::vector<Layout::Box> places_round(double ax, double ay, double w, double h, 
     const double y0 = dy > 0 ? ay + dy * u : dy < 0 ? ay + dy * u - h : ay - h / 2;
     out.push_back({x0, y0, x0 + w, y0 + h});
   }
-  for (double d : {3.0, 8.0, 14.0, 20.0, 28.0, 36.0, 46.0, 58.0, 72.0, 90.0, 110.0, 135.0, 165.0, 200.0}) {
+  for (double d : {3.0, 8.0, 14.0, 20.0, 28.0, 36.0, 46.0, 58.0, 72.0, 90.0, 110.0, 135.0, 165.0, 200.0, 240.0, 290.0}) {
     const int K = d < 20 ? 16 : 32;
     for (int k = 0; k < K; ++k) {
       // from the upper right round through above, left, below
@@ -375,7 +375,7 @@ void place_labels(Layout& L, const std::vector<std::pair<const Figure*, std::siz
       const double ax = P.tx + L.scale * l.x, ay = P.ty - L.scale * l.y;
       const auto places = places_round(ax, ay, w, h, u);
       // only the strokes that come near the places tried
-      Layout::Box reach{ax - 202 * u - w, ay - 202 * u - h, ax + 202 * u + w, ay + 202 * u + h};
+      Layout::Box reach{ax - 292 * u - w, ay - 292 * u - h, ax + 292 * u + w, ay + 292 * u + h};
       std::vector<Segment> near;
       for (auto& sg : strokes)
         if (crosses(sg, reach)) near.push_back(sg);
@@ -952,7 +952,20 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, d
   const model::Body& b = m.bodies.at(static_cast<std::size_t>(bi));
   f.owned_by("body " + b.name);
   // the body by its shape, or each part of a composite body by its own: r = G + R(φ) (lx, ly)
-  const double gx = at(b.x), gy = at(b.y), phi = at(b.angle);
+  const double gx = at(b.x), gy = at(b.y);
+  double phi = at(b.angle);
+  // a particle drawn as a block whose turn is no coordinate's: its base along the way it moves (a
+  // block on an incline lies on the slope), the first coordinate that moves it giving the way
+  if (b.parts.empty() && b.drawn_shape.empty() && model::inertia_shape(b.shape).outline == model::Outline::Dot && b.angle.is_zero())
+    for (auto& c : m.coords) {
+      const double dx = at(b.x.diff(c.q)), dy = at(b.y.diff(c.q));
+      if (!std::isfinite(dx) || !std::isfinite(dy) || std::hypot(dx, dy) <= 1e-12) continue;
+      phi = std::atan2(dy, dx);
+      // (upright where it may be: a turn in (−90°, 90°])
+      if (phi > M_PI / 2 + 1e-9) phi -= M_PI;
+      if (phi <= -M_PI / 2 + 1e-9) phi += M_PI;
+      break;
+    }
   const Placed world{gx, gy, phi};
   // each shape's frame: the body's own, or each part's at its centre and turn
   std::vector<std::tuple<const std::string*, const std::vector<ex>*, Placed>> shapes;
@@ -986,6 +999,29 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, d
 
 namespace detail {
 
+/// Angle coordinate c's positive sense as a curved arrow round the first body it turns (φ' ≠ 0):
+/// about the point its turn leaves at rest, P = (x̄ − ∂ȳ/φ', ȳ + ∂x̄/φ') per unit of c, where P
+/// is a fixed point of the scene (a pendulum's pin), else about the mass centre. False when c
+/// turns no body.
+bool turn_sense(const model::Model& m, const model::Coordinate& c, const At& at, const Name& q, Figure& f) {
+  const double g = f.glyph();
+  for (auto& b : m.bodies) {
+    const double dx = at(b.x.diff(c.q)), dy = at(b.y.diff(c.q)), dphi = at(b.angle.diff(c.q)), gx = at(b.x), gy = at(b.y);
+    if (!std::isfinite(gx) || !std::isfinite(gy) || !std::isfinite(dphi) || std::fabs(dphi) <= 1e-12) continue;
+    double cx = gx, cy = gy;
+    if (std::isfinite(dx) && std::isfinite(dy)) {
+      const double px = gx - dy / dphi, py = gy + dx / dphi;
+      for (auto& [pn, p] : m.fixed_points)
+        if (std::hypot(at(p.first) - px, at(p.second) - py) <= 1e-6 * std::max(1.0, std::hypot(gx - px, gy - py))) cx = px, cy = py;
+    }
+    const double a0 = dphi > 0 ? 0.6 : 2.6, a1 = dphi > 0 ? 2.6 : 0.6, r = f.ring(cx, cy, 1.8 * g);
+    f.arc_arrow(cx, cy, r, a0, a1, Ink::Sense);
+    f.label(cx + r * std::cos(a1), cy + r * std::sin(a1), q.text, q.tex);
+    return true;
+  }
+  return false;
+}
+
 // the scene drawn with glyphs of size g: bodies, fixed points, effects
 Figure drawing(const model::Model& m, const At& at, double g, const std::vector<int>* bodies, const std::vector<std::string>* effects) {
   Figure f;
@@ -1009,28 +1045,21 @@ Figure drawing(const model::Model& m, const At& at, double g, const std::vector<
   }
   f.owned_by("");
   draw_implied(m, at, imp, f, bodies);
-  // the positive sense of each coordinate, on the first body it moves: an arrow at the mass
-  // centre along ∂r̄/∂q, or a curved arrow round it when q only turns the body (∂φ/∂q), named
-  // as a textbook names it (θ, φ_A, x)
+  // the positive sense of each coordinate, named as a textbook names it (θ, φ_A, x): an angle's as
+  // a curved arrow round the first body it turns — about the fixed point the turn leaves at rest
+  // (a pendulum's pin), else about the mass centre; a length's, or an angle's that turns no body,
+  // as an arrow at the centre of the first body it moves, along ∂r̄/∂q
   for (auto& c : m.coords) {
     const Name q = coordinate_label(c);
+    if (c.dim.dimensionless() && turn_sense(m, c, at, q, f)) continue;
     for (auto& b : m.bodies) {
-      const double dx = at(b.x.diff(c.q)), dy = at(b.y.diff(c.q)), dphi = at(b.angle.diff(c.q));
-      const double gx = at(b.x), gy = at(b.y);
-      if (!std::isfinite(gx) || !std::isfinite(gy)) continue;
+      const double dx = at(b.x.diff(c.q)), dy = at(b.y.diff(c.q)), gx = at(b.x), gy = at(b.y);
       const double d = std::hypot(dx, dy);
-      if (std::isfinite(d) && d > 1e-12) {
-        const double ex = gx + 3 * g * dx / d, ey = gy + 3 * g * dy / d;
-        f.arrow(gx, gy, ex, ey, Ink::Sense);
-        f.label(ex, ey, q.text, q.tex);
-        break;
-      }
-      if (std::isfinite(dphi) && std::fabs(dphi) > 1e-12) {
-        const double a0 = dphi > 0 ? 0.6 : 2.6, a1 = dphi > 0 ? 2.6 : 0.6, r = f.ring(gx, gy, 1.8 * g);
-        f.arc_arrow(gx, gy, r, a0, a1, Ink::Sense);
-        f.label(gx + r * std::cos(a1), gy + r * std::sin(a1), q.text, q.tex);
-        break;
-      }
+      if (!std::isfinite(gx) || !std::isfinite(gy) || !std::isfinite(d) || d <= 1e-12) continue;
+      const double ex = gx + 3 * g * dx / d, ey = gy + 3 * g * dy / d;
+      f.arrow(gx, gy, ex, ey, Ink::Sense);
+      f.label(ex, ey, q.text, q.tex);
+      break;
     }
   }
   return f;

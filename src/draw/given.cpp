@@ -39,20 +39,24 @@ Moved moved_by(const model::Model& m, const model::Coordinate& c, const At& at, 
   return first;
 }
 
-/// A given value as a textbook labels it beside a drawing that shows its sense: the size with its
-/// unit ("2 m/s", an angle in degrees "30°"), after its parameter's name where it is one
-/// (v_1 = 6 m/s); the name alone where the parameter has no number (a closed form drawn at sample
-/// values) or a negative one (the drawing shows which way).
-Name value_label(const model::Model& m, const ex& given, double value, const std::string& unit, bool angle) {
+/// A given value as a textbook labels it beside a drawing that shows its sense: `symbol` (v, ω,
+/// θ) = its size with its unit ("v = 2 m/s", an angle in degrees "θ = 30°"), or its parameter's
+/// name where it is one (v_1 = 6 m/s); the name alone where the parameter has no number (a
+/// closed form drawn at sample values) or a negative one (the drawing shows which way).
+Name value_label(const model::Model& m, const Name& symbol, const ex& given, double value, const std::string& unit, bool angle) {
   const double size = std::fabs(value);
   const std::string digits = numerics::g_text(angle ? size * 180 / M_PI : size, 4);
-  Name number = angle ? Name{digits + "\u00b0", digits + "^\\circ"} : Name{digits + " " + unit, digits + "\\,\\mathrm{" + unit + "}"};
-  if (!GiNaC::is_a<GiNaC::symbol>(given)) return number;
-  const auto name = textbook(GiNaC::ex_to<GiNaC::symbol>(given).get_name());
-  if (!name) return number;
-  for (const auto& p : m.params)
-    if (p.sym.is_equal(given) && p.value && value > 0) return {name->text + " = " + number.text, name->tex + " = " + number.tex};
-  return *name;
+  const Name number = angle ? Name{digits + "\u00b0", digits + "^\\circ"} : Name{digits + " " + unit, digits + "\\,\\mathrm{" + unit + "}"};
+  Name name = symbol;
+  if (GiNaC::is_a<GiNaC::symbol>(given))
+    if (const auto n = textbook(GiNaC::ex_to<GiNaC::symbol>(given).get_name())) {
+      name = *n;
+      bool known = false;
+      for (const auto& p : m.params) known = known || (p.sym.is_equal(given) && p.value);
+      if (!known || value < 0) return name;
+    }
+  const std::string tex = name.tex.empty() ? name.text : name.tex;
+  return {name.text + " = " + number.text, tex + " = " + number.tex};
 }
 
 /// A given rate q̇ = v: an arrow beside the body's centre along its motion (the side away from
@@ -102,6 +106,18 @@ void given_angle(const Moved& mo, double turned, const Name& label, const At& at
   f.label(px + r * std::cos(am), py + r * std::sin(am), label.text, label.tex);
 }
 
+/// Is a given value plain data, as a problem states it — a number, or a parameter (its negative):
+/// not a value that follows from others (φ̇ = −v_1/r of a wheel rolling, x = −√(h(2r − h)) at a
+/// step's edge), which the drawing leaves to the words.
+bool plain(const ex& given) {
+  if (GiNaC::is_a<GiNaC::numeric>(given) || GiNaC::is_a<GiNaC::symbol>(given)) return true;
+  if (GiNaC::is_a<GiNaC::mul>(given) && given.nops() == 2)
+    return (GiNaC::is_a<GiNaC::numeric>(given.op(0)) && GiNaC::is_a<GiNaC::symbol>(given.op(1))) ||
+           (GiNaC::is_a<GiNaC::numeric>(given.op(1)) && GiNaC::is_a<GiNaC::symbol>(given.op(0)));
+  // a number however written (an angle in degrees: a multiple of π)
+  return GiNaC::is_a<GiNaC::numeric>(given.evalf());
+}
+
 }  // namespace
 
 void given_data(const model::Model& m, int state, const At& at, Figure& f, const std::vector<int>* bodies) {
@@ -111,26 +127,30 @@ void given_data(const model::Model& m, int state, const At& at, Figure& f, const
     if (sym == S.sym.end()) continue;
     const bool angle = c.dim.dimensionless();
     // the rate, where the state gives one and it is not zero
-    if (const auto r = S.given.find(sym->second.second); r != S.given.end()) {
+    if (const auto r = S.given.find(sym->second.second); r != S.given.end() && plain(r->second)) {
       const double v = at(r->second);
       const Moved mo = moved_by(m, c, at, angle, bodies);
       const Moved moving = mo.body ? mo : moved_by(m, c, at, false, bodies);
       const std::string unit = angle ? "rad/s" : units::si_name(c.dim) + "/s";
-      if (moving.body && std::isfinite(v) && std::fabs(v) > 1e-12) given_rate(c, moving, v, value_label(m, r->second, v, unit, false), at, f);
+      // (ω for a turn, v for a move)
+      const bool turns = moving.body && std::fabs(moving.dphi) > 1e-12 && angle;
+      const Name symbol = turns ? Name{"\u03c9", "\\omega"} : Name{"v", "v"};
+      if (moving.body && std::isfinite(v) && std::fabs(v) > 1e-12) given_rate(c, moving, v, value_label(m, symbol, r->second, v, unit, false), at, f);
     }
     // the coordinate, where the state gives it and it is not zero
     const auto q = S.given.find(sym->second.first);
-    if (q == S.given.end()) continue;
+    if (q == S.given.end() || !plain(q->second)) continue;
     const double value = at(q->second);
     if (!std::isfinite(value) || std::fabs(value) < 1e-12) continue;
     At zero = at;
     zero.values[c.q] = 0;
     const Moved mo = moved_by(m, c, at, angle, bodies);
     if (!mo.body) continue;
-    const Name label = value_label(m, q->second, value, units::si_name(c.dim), angle);
+    const Name label = value_label(m, coordinate_label(c), q->second, value, units::si_name(c.dim), angle);
     if (angle && std::fabs(mo.dphi) > 1e-12) {
       const double turned = at(mo.body->angle) - zero(mo.body->angle);
-      if (std::isfinite(turned) && std::fabs(turned) > 1e-9) given_angle(mo, turned, label, at, f);
+      // (a turn of a revolution or more — a flywheel after n turns — has no arc to show it)
+      if (std::isfinite(turned) && std::fabs(turned) > 1e-9 && std::fabs(turned) < 2 * M_PI - 1e-9) given_angle(mo, turned, label, at, f);
       continue;
     }
     // a length: from the mass centre where q is zero to where it is now
