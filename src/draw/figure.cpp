@@ -935,6 +935,20 @@ void dimensions(const At& at, const std::string& shape_name, const std::vector<e
 
 }  // namespace
 
+namespace {
+
+/// Is body bi a particle (no outline of its own) that is a party of a contact: an impact's
+/// ball, bullet or puck?
+bool strikes_as_point(const model::Model& m, int bi) {
+  const model::Body& b = m.bodies.at(static_cast<std::size_t>(bi));
+  if (!b.drawn_shape.empty() || model::inertia_shape(b.shape).outline != model::Outline::Dot) return false;
+  for (auto& e : m.effects)
+    if (const auto r = e.reaction(m); r && r->kind == model::Reaction::Kind::Contact && (r->a.body == bi || r->b.body == bi)) return true;
+  return false;
+}
+
+}  // namespace
+
 std::optional<Name> body_label(const model::Body& b) {
   if (!b.label.empty()) return from_tex(b.label);
   return short_name(b.name);
@@ -974,6 +988,10 @@ void body(const model::Model& m, const At& at, int bi, Figure& f, bool points, d
   if (b.parts.empty() && !b.drawn_shape.empty()) {
     shapes.push_back({&b.drawn_shape, &b.drawn_sizes, Placed{gx, gy, phi}});
     if (b.shape == "gyration") f.circle(gx, gy, at(b.sizes[0]), Ink::Hidden);
+  } else if (b.parts.empty() && strikes_as_point(m, bi)) {
+    // a particle that strikes or is struck: a dot, as a textbook draws a point mass (a block of
+    // its own would stand over what it meets at its centre)
+    f.circle(gx, gy, 0.4 * f.glyph(), Ink::Body, true);
   } else if (b.parts.empty()) {
     shapes.push_back({&b.shape, &b.sizes, Placed{gx, gy, phi}});
   }
