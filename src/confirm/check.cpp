@@ -261,6 +261,7 @@ void limit_state(const Solution& s, const Leg& leg, Simulator& sim, const State&
            numerics::g_text(below.end.q[pick], 8);
   c.worst = 0;
   c.worst_what.clear();
+  c.outcome = LegCheck::Outcome::Compared;
 }
 
 }  // namespace
@@ -363,17 +364,22 @@ LegCheck check_leg(const Solution& s, const Leg& leg, const Options& o, double t
   }
   if (!std::isnan(leg.expect.t) && std::fabs(e.t - leg.expect.t) > 1e-12 * std::max(1.0, std::fabs(leg.expect.t))) {
     c.worst = std::numeric_limits<double>::infinity();
+    c.outcome = LegCheck::Outcome::WrongTime;
     c.worst_what = "the run ended at t = " + numerics::g_text(e.t, 8) + " s, not at " + numerics::g_text(leg.expect.t, 8);
   }
   bool any = false;
   for (std::size_t i = 0; i < m.coords.size(); ++i) any = any || !std::isnan(leg.expect.q[i]) || !std::isnan(leg.expect.qd[i]);
   if (leg.stop.when && !c.run.stopped) {
     c.worst = std::numeric_limits<double>::infinity();
+    c.outcome = LegCheck::Outcome::NotReached;
     c.worst_what = "the simulation does not reach state '" + m.states[static_cast<std::size_t>(leg.to)].name + "' (" + leg.target +
                    ") by t = " + numerics::g_text(c.run.end.t, 8) + " s";
   }
   c.ok = any && c.worst <= tolerance;
-  if (!any) c.worst_what = "no solved value at state '" + m.states[leg.to].name + "' to compare";
+  if (!any) {
+    c.outcome = LegCheck::Outcome::NothingToCompare;
+    c.worst_what = "no solved value at state '" + m.states[leg.to].name + "' to compare";
+  }
   if (!c.ok && any && leg.stop.when) limit_state(s, leg, sim, end, c);
   return c;
 }

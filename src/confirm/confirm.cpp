@@ -55,7 +55,7 @@ std::optional<double> residuals(const Solution& s, std::string& which) {
 }  // namespace
 
 bool no_second_opinion(const model::Analysis& a, const simulate::LegCheck& c) {
-  return !c.ok && c.worst_what.rfind("the simulation does not reach", 0) == 0 && a.type->impulsive();
+  return !c.ok && c.outcome == simulate::LegCheck::Outcome::NotReached && a.type->impulsive();
 }
 
 std::string Confirmed::name(By b) {
@@ -173,7 +173,7 @@ std::optional<simulate::LegCheck> simulated(const Solution& s, const simulate::L
       } catch (const std::exception&) {
         // more steps than allowed at 1e-13: the first run stands
       }
-      if (!run->ok && run->worst <= kConfirmFloor && run->worst_what.rfind("the simulation does not reach", 0) != 0) {
+      if (!run->ok && run->worst <= kConfirmFloor && run->outcome != simulate::LegCheck::Outcome::NotReached) {
         run->ok = true;
         run->note = (run->note.empty() ? "" : run->note + "; ") + "integrated at 1e-13, the difference stays at the double's limit for this motion";
       }
@@ -241,7 +241,7 @@ void confirm_numeric(Solution& s) {
         c.difference = run->worst;
         c.tolerance = kConfirmSimulation;
         c.note = run->note;
-      } else if (run && run->worst_what.rfind("no solved value", 0) == 0) {
+      } else if (run && run->outcome == simulate::LegCheck::Outcome::NothingToCompare) {
         c.note = "not simulated: " + run->worst_what;
       } else if (run && no_second_opinion(a, *run)) {
         c.unreached = true;

@@ -16,7 +16,6 @@
 #include "kinergy/model/simplify.hpp"
 #include "kinergy/principles/momentum.hpp"
 #include "kinergy/principles/principles.hpp"
-#include "kinergy/simulate/equations.hpp"
 
 namespace kinergy::effects {
 

@@ -46,13 +46,9 @@ public:
     return {l};
   }
 
-  /// The slip: v_rel = v_A − v_B (B the other body's material point there; the ground: 0).
-  std::pair<ex, ex> slip(const Model& m) const {
-    auto [vx, vy] = m.velocity(a);
-    if (!b) return {vx, vy};
-    auto [ux, uy] = m.velocity(*b);
-    return {vx - ux, vy - uy};
-  }
+  /// The slip: v_rel = v_A − v_B (B the other body's material point there; the ground: 0), as
+  /// its load's relative velocity.
+  std::pair<ex, ex> slip(const Model& m) const { return model::relative_velocity(m, loads(m).front()); }
 
   // across an energy analysis of a set holding one of the two bodies: the work of the friction on
   // that body, −μN σ ê on A (σ the sign of the slip along its line ê), +μN σ ê on B's material

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "kinergy/confirm/check.hpp"
 #include "../support/helpers.hpp"
 #include "kinergy/confirm/confirm.hpp"
 
@@ -153,6 +154,14 @@ find:
   CHECK(kt::result_si(s, "w2") == Approx(-2.0 * 60 * 1.5 / ((100 + 120) * 2)).epsilon(1e-14));
   REQUIRE(s.confirmed.size() == 1);
   CHECK(s.confirmed[0].by == kinergy::Confirmed::By::Residuals);
+  {
+    // what the run came to is a type the decisions read, not words (issue 46): not reached
+    const auto legs = kinergy::simulate::legs(s);
+    REQUIRE(legs.size() == 1);
+    const auto c = kinergy::simulate::check_leg(s, legs[0], kinergy::simulate::Options{}, 1e-8);
+    CHECK_FALSE(c.ok);
+    CHECK(c.outcome == kinergy::simulate::LegCheck::Outcome::NotReached);
+  }
   int st = 0;
   const std::string path = written("turntable", scene);
   std::string out = kt::run_cli("solve " + path, st);

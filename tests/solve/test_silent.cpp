@@ -134,6 +134,7 @@ TEST_CASE("finding 7: simulate --check agrees with the right closed form, or say
     auto c = check_first("door_torsion_unstable.yaml");
     INFO(c.worst_what);
     CHECK(c.ok);
+    CHECK(c.outcome == kinergy::simulate::LegCheck::Outcome::Compared);
     CHECK_THAT(c.note, Catch::Contains("nudged: released at rest on an equilibrium"));
   }
   // (c) a swing of 1e-6 rad: the tolerance follows the motion's size (it was off by 4.8e-6)

@@ -36,7 +36,12 @@ struct LegCheck {
   Leg leg;
   Run run;
   double worst = 0;          ///< largest relative difference, simulated against closed form
-  std::string worst_what;    ///< which value
+  std::string worst_what;    ///< which value, in words (for people: decisions read `outcome`)
+  /// What the comparison came to: values compared (within tolerance or not: `ok`, `worst`); the
+  /// run ended at another time than the solution's; the run did not reach the leg's end; the
+  /// solution fixes no value at the end to compare.
+  enum class Outcome { Compared, WrongTime, NotReached, NothingToCompare };
+  Outcome outcome = Outcome::Compared;
   bool ok = false;
   /// How the run was made to stand for the analysis, when not as it is ("nudged: …": released
   /// at rest on an equilibrium, as a textbook means "given a slight nudge"; "run for … s").
