@@ -25,6 +25,14 @@ public:
     if (!(u > 0)) ux = 1, uy = 0, u = 1;
     ux /= u, uy /= u;
     const double g = f.glyph();
+    // rubbing at a body's mass centre (a block drawn round it): the stroke on the body's edge on the
+    // ground's side — the normal to the slip that points down (or left on an upright slip)
+    if (a.body >= 0 && !a.world_place && a.lx.is_zero() && a.ly.is_zero() && (!b || b->body < 0)) {
+      double nx = uy, ny = -ux;
+      if (ny > 1e-9 || (std::fabs(ny) <= 1e-9 && nx > 0)) nx = -nx, ny = -ny;
+      const double edge = f.reach("body " + m.bodies[static_cast<std::size_t>(a.body)].name, x, y, nx, ny);
+      x += nx * edge, y += ny * edge;
+    }
     f.line(x - 2 * g * ux, y - 2 * g * uy, x + 2 * g * ux, y + 2 * g * uy, Ink::Support);
     for (int i = 0; i < 5; ++i) {
       const double bx = x + (i - 2) * g * ux, by = y + (i - 2) * g * uy;
